@@ -1,0 +1,28 @@
+#include "lang/avunit/avunit.hpp"
+
+#include "lang/avunit/elaborator.hpp"
+#include "lang/avunit/lexer.hpp"
+#include "lang/avunit/parser.hpp"
+
+namespace scenfuzz::avunit {
+
+namespace {
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+ParseResult parse(const SourceFile& file) {
+  ParseResult result;
+  std::vector<Token> tokens = tokenize(file, result.diagnostics);
+  std::vector<Statement> statements = parse_statements(tokens, result.diagnostics);
+  SourceLanguage language =
+      ends_with(file.path(), ".scenest") ? SourceLanguage::scenest : SourceLanguage::avunit;
+  result.scenario = elaborate(statements, language, result.diagnostics);
+  return result;
+}
+
+}  // namespace scenfuzz::avunit

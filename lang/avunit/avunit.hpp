@@ -1,0 +1,32 @@
+// The AVUnit front end (also reads scenest, which shares AVUnit's scenario part): parse a file into
+// a ScenarioTemplate, and print a template back as AVUnit.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "lang/diagnostic.hpp"
+#include "lang/scenario.hpp"
+#include "lang/source_file.hpp"
+
+namespace scenfuzz::avunit {
+
+struct ParseResult {
+  ScenarioTemplate scenario;  // complete only when there are no errors
+  Diagnostics diagnostics;
+
+  bool ok() const { return !diagnostics.has_errors(); }
+};
+
+// Parses and resolves a whole file. Never throws on bad input: every problem is a diagnostic.
+ParseResult parse(const SourceFile& file);
+
+// Canonical AVUnit for a template: parse(print(t)) gives back a template equal to t.
+std::string print(const ScenarioTemplate& scenario);
+
+// The user's own file with every range replaced by the value chosen for its parameter
+// (`parameter_values[i]` for `scenario.parameters[i]`): a concrete, replayable scenario.
+std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
+                           std::span<const double> parameter_values);
+
+}  // namespace scenfuzz::avunit

@@ -1,0 +1,515 @@
+#include "lang/avunit/parser.hpp"
+
+#include <cmath>
+
+namespace scenfuzz::avunit {
+
+namespace {
+
+// Thrown after a syntax error has been reported; caught where the statement started.
+struct SyntaxError {};
+
+constexpr int kImplies = 1, kOr = 2, kAnd = 3, kUntil = 4, kCompare = 5, kAdd = 6, kMultiply = 7,
+              kPower = 8;
+// Deep enough for any real file, shallow enough that recursion can never exhaust the stack.
+constexpr int kMaxNesting = 200;
+
+bool is_comparison(TokenKind kind) {
+  switch (kind) {
+    case TokenKind::less:
+    case TokenKind::less_equal:
+    case TokenKind::greater:
+    case TokenKind::greater_equal:
+    case TokenKind::equal:
+    case TokenKind::not_equal: return true;
+    default: return false;
+  }
+}
+
+class Parser {
+ public:
+  Parser(const std::vector<Token>& tokens, Diagnostics& diagnostics)
+      : tokens_(tokens), diagnostics_(diagnostics) {}
+
+  std::vector<Statement> run() {
+    std::vector<Statement> statements;
+    while (!at(TokenKind::end_of_file) && !diagnostics_.too_many_errors()) {
+      if (at(TokenKind::semicolon)) {
+        ++pos_;  // an empty statement, e.g. the `;` LawBreaker files leave after a `}`
+        continue;
+      }
+      std::size_t start = pos_;
+      nesting_ = 0;
+      try {
+        statements.push_back(statement());
+      } catch (const SyntaxError&) {
+        recover(start);
+      }
+    }
+    return statements;
+  }
+
+ private:
+  const Token& peek(std::size_t ahead = 0) const {
+    std::size_t i = pos_ + ahead;
+    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+  }
+  bool at(TokenKind kind) const { return peek().kind == kind; }
+  bool at_word(const char* word, std::size_t ahead = 0) const {
+    return peek(ahead).kind == TokenKind::identifier && peek(ahead).text == word;
+  }
+  const Token& take() {
+    const Token& token = peek();
+    if (pos_ < tokens_.size() - 1) ++pos_;
+    return token;
+  }
+  const Token& previous() const { return tokens_[pos_ > 0 ? pos_ - 1 : 0]; }
+
+  [[noreturn]] void fail(SourceLocation where, const std::string& message) {
+    diagnostics_.error(where, message);
+    throw SyntaxError{};
+  }
+
+  // Just after the previous token: where a missing `;` or `)` belongs.
+  SourceLocation after_previous() const {
+    const Token& token = previous();
+    SourceLocation where = token.location;
+    std::uint32_t characters = 0;
+    for (char c : token.text)
+      if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) ++characters;
+    if (token.kind == TokenKind::string) characters += 2;  // the quotes
+    where.column += characters;
+    where.offset += where.length;
+    where.length = 1;
+    return where;
+  }
+
+  const Token& expect(TokenKind kind, const std::string& context) {
+    if (!at(kind)) {
+      bool closing = kind == TokenKind::semicolon || kind == TokenKind::right_paren ||
+                     kind == TokenKind::right_brace || kind == TokenKind::right_bracket;
+      SourceLocation where = closing && pos_ > 0 ? after_previous() : peek().location;
+      fail(where, "expected " + describe(kind) + " " + context + ", found " + describe(peek()));
+    }
+    return take();
+  }
+
+  // Skips to the `;` that ends the statement that started at `start`, counting brackets from
+  // there, so that a `;` inside `CreateScenario{...}` does not end it.
+  void recover(std::size_t start) {
+    std::size_t error_at = pos_;
+    int depth = 0;
+    for (std::size_t i = start; i < tokens_.size(); ++i) {
+      TokenKind kind = tokens_[i].kind;
+      if (kind == TokenKind::end_of_file) {
+        pos_ = i;
+        return;
+      }
+      if (kind == TokenKind::left_paren || kind == TokenKind::left_brace ||
+          kind == TokenKind::left_bracket)
+        ++depth;
+      if (kind == TokenKind::right_paren || kind == TokenKind::right_brace ||
+          kind == TokenKind::right_bracket)
+        depth = depth > 0 ? depth - 1 : 0;
+      if (kind == TokenKind::semicolon && depth == 0 && i >= error_at) {
+        pos_ = i + 1;
+        return;
+      }
+    }
+    pos_ = tokens_.size() - 1;
+  }
+
+  Statement statement() {
+    Statement result;
+    const Token& first = peek();
+    result.location = first.location;
+    if (first.kind != TokenKind::identifier)
+      fail(first.location, "expected a statement ('name = value;', 'Trace name = EXE(scenario);' "
+                           "or 'trace |= formula;'), found " +
+                               describe(first));
+    if (first.text == "Trace" && peek(1).kind == TokenKind::identifier) {
+      take();
+      result.kind = StatementKind::trace_declaration;
+      result.name = peek().text;
+      result.name_location = take().location;
+      expect(TokenKind::assign, "after the trace name");
+    } else {
+      result.name = first.text;
+      result.name_location = take().location;
+      if (at(TokenKind::assign)) {
+        result.kind = StatementKind::assignment;
+      } else if (at(TokenKind::satisfies)) {
+        result.kind = StatementKind::assertion;
+      } else {
+        fail(peek().location, "expected '=' or '|=' after '" + result.name + "', found " +
+                                  describe(peek()));
+      }
+      take();
+    }
+    result.value = expression(kImplies);
+    const char* context = result.kind == StatementKind::assertion ? "after the specification"
+                                                                   : "after the assignment";
+    expect(TokenKind::semicolon, context);
+    result.location = span(result.location, previous().location);
+    return result;
+  }
+
+  static int binary_level(const Token& token) {
+    switch (token.kind) {
+      case TokenKind::arrow: return kImplies;
+      case TokenKind::bar: return kOr;
+      case TokenKind::ampersand: return kAnd;
+      case TokenKind::plus:
+      case TokenKind::minus:
+      case TokenKind::dot_plus:
+      case TokenKind::dot_minus: return kAdd;
+      case TokenKind::star:
+      case TokenKind::slash:
+      case TokenKind::dot_star:
+      case TokenKind::dot_slash: return kMultiply;
+      case TokenKind::caret: return kPower;
+      case TokenKind::identifier: return token.text == "U" ? kUntil : 0;
+      default: return is_comparison(token.kind) ? kCompare : 0;
+    }
+  }
+
+  // Counts recursion depth; unwinds with the exceptions that end a statement.
+  struct Nesting {
+    explicit Nesting(Parser& parser) : owner(parser) {
+      if (++owner.nesting_ > kMaxNesting)
+        owner.fail(owner.peek().location, "expression nested too deeply");
+    }
+    ~Nesting() { --owner.nesting_; }
+    Parser& owner;
+  };
+
+  Syntax expression(int min_level) {
+    Nesting nesting(*this);
+    Syntax left = prefix();
+    bool left_is_comparison = false;
+    while (true) {
+      const Token& op = peek();
+      int level = binary_level(op);
+      if (level == 0 || level < min_level) break;
+      if (level == kCompare && left_is_comparison)
+        fail(op.location, "comparisons cannot be chained: write 'a < b & b < c'");
+      take();
+      Syntax node;
+      node.op = op.kind;
+      node.kind = SyntaxKind::binary;
+      if (level == kUntil) {
+        node.kind = SyntaxKind::until;
+        node.interval = optional_interval();
+      }
+      Syntax right = expression(level + 1);
+      node.location = span(left.location, right.location);
+      node.children.push_back(std::move(left));
+      node.children.push_back(std::move(right));
+      left = std::move(node);
+      left_is_comparison = level == kCompare;
+    }
+    return left;
+  }
+
+  Syntax prefix() {
+    Nesting nesting(*this);
+    const Token& token = peek();
+    if (token.kind == TokenKind::minus || token.kind == TokenKind::plus ||
+        token.kind == TokenKind::tilde) {
+      take();
+      Syntax node;
+      node.kind = SyntaxKind::unary;
+      node.op = token.kind;
+      // `~` negates a whole comparison; a sign belongs to the number right after it.
+      node.children.push_back(token.kind == TokenKind::tilde ? expression(kCompare) : prefix());
+      node.location = span(token.location, node.children[0].location);
+      return node;
+    }
+    if (token.kind == TokenKind::identifier &&
+        (token.text == "G" || token.text == "F" || token.text == "X")) {
+      take();
+      Syntax node;
+      node.kind = SyntaxKind::temporal;
+      node.text = token.text;
+      node.interval = optional_interval();
+      node.children.push_back(expression(kCompare));
+      node.location = span(token.location, node.children[0].location);
+      return node;
+    }
+    return postfix();
+  }
+
+  // `[a:b]` or `[a,b]` after G, F, X or U. `[0:10]` arrives as one time token (H:MM).
+  std::optional<IntervalSyntax> optional_interval() {
+    if (!at(TokenKind::left_bracket)) return std::nullopt;
+    IntervalSyntax interval;
+    interval.location = take().location;
+    if (at(TokenKind::time) && peek().text.size() <= 5 && peek(1).kind == TokenKind::right_bracket) {
+      const Token& time = take();
+      interval.lower = std::floor(time.number / 3600.0);
+      interval.upper = (time.number - interval.lower * 3600.0) / 60.0;
+    } else {
+      interval.lower = interval_bound();
+      if (!at(TokenKind::colon) && !at(TokenKind::comma))
+        fail(peek().location,
+             "expected ':' or ',' between the bounds of the interval, found " + describe(peek()));
+      take();
+      interval.upper = interval_bound();
+    }
+    expect(TokenKind::right_bracket, "to close the interval");
+    interval.location = span(interval.location, previous().location);
+    return interval;
+  }
+
+  double interval_bound() {
+    double sign = 1.0;
+    if (at(TokenKind::minus) || at(TokenKind::plus)) sign = take().kind == TokenKind::minus ? -1 : 1;
+    if (!at(TokenKind::number))
+      fail(peek().location, "expected a number of seconds as interval bound, found " +
+                                describe(peek()));
+    return sign * take().number;
+  }
+
+  Syntax postfix() {
+    Syntax node = primary();
+    while (true) {
+      const Token& token = peek();
+      if (token.kind == TokenKind::left_paren && node.kind == SyntaxKind::identifier) {
+        Syntax call;
+        call.kind = SyntaxKind::call;
+        call.text = node.text;
+        take();
+        call.children = elements(TokenKind::right_paren, "to close the argument list of '" +
+                                                             node.text + "'");
+        call.location = span(node.location, previous().location);
+        node = std::move(call);
+      } else if (token.kind == TokenKind::left_bracket) {
+        take();
+        Syntax index;
+        index.kind = SyntaxKind::index;
+        index.children.push_back(std::move(node));
+        index.children.push_back(expression(kImplies));
+        expect(TokenKind::right_bracket, "to close the index");
+        index.location = span(index.children[0].location, previous().location);
+        node = std::move(index);
+      } else if (token.kind == TokenKind::dot) {
+        take();
+        if (!at(TokenKind::identifier))
+          fail(peek().location, "expected a name after '.', found " + describe(peek()));
+        Syntax member;
+        member.kind = SyntaxKind::member;
+        member.text = take().text;
+        member.location = span(node.location, previous().location);
+        member.children.push_back(std::move(node));
+        node = std::move(member);
+      } else if (at_word("pi")) {
+        take();
+        node = wrap(SyntaxKind::pi, std::move(node), "pi");
+      } else if (at_word("deg") || at_word("rad")) {
+        node = wrap(SyntaxKind::angle, std::move(node), take().text);
+        if (at_word("related")) {
+          take();
+          if (!at_word("to"))
+            fail(peek().location, "expected 'to' after 'related', found " + describe(peek()));
+          take();
+          node.children.push_back(direction());
+          node.location = span(node.location, node.children.back().location);
+        }
+      } else if (at_word("range") && peek(1).kind == TokenKind::left_paren &&
+                 (node.kind == SyntaxKind::tuple || node.kind == SyntaxKind::call ||
+                  node.kind == SyntaxKind::identifier)) {
+        node = coordinate_range(std::move(node));
+      } else {
+        return node;
+      }
+    }
+  }
+
+  Syntax wrap(SyntaxKind kind, Syntax inner, std::string text) {
+    Syntax node;
+    node.kind = kind;
+    node.text = std::move(text);
+    node.location = span(inner.location, previous().location);
+    node.children.push_back(std::move(inner));
+    return node;
+  }
+
+  // After `related to`: a lane position "lane"->s, an actor, or EGO.
+  Syntax direction() {
+    Syntax target = postfix();
+    if (!at(TokenKind::arrow)) return target;
+    Syntax node;
+    node.kind = SyntaxKind::binary;
+    node.op = take().kind;
+    Syntax offset = expression(kAdd);
+    node.location = span(target.location, offset.location);
+    node.children.push_back(std::move(target));
+    node.children.push_back(std::move(offset));
+    return node;
+  }
+
+  // `(x, y) range(a, b) & (c, d)`: x varies by an offset in [a, b], y by one in [c, d].
+  Syntax coordinate_range(Syntax base) {
+    SourceLocation keyword = take().location;
+    Syntax node;
+    node.kind = SyntaxKind::coordinate_range;
+    Syntax x_range = primary();
+    // The x range's span starts at `range`, so `range(a, b) & (c, d)` is one replaceable span.
+    x_range.location = span(keyword, x_range.location);
+    if (!at(TokenKind::ampersand))
+      fail(peek().location, "expected '&' and the y range after the x range of a coordinate, found " +
+                                describe(peek()));
+    take();
+    if (!at(TokenKind::left_paren))
+      fail(peek().location, "expected the y range '(lower, upper)' after '&', found " +
+                                describe(peek()));
+    Syntax y_range = primary();
+    node.location = span(base.location, y_range.location);
+    node.children.push_back(std::move(base));
+    node.children.push_back(std::move(x_range));
+    node.children.push_back(std::move(y_range));
+    return node;
+  }
+
+  // Comma-separated elements up to `close`; an element may be left out (`a, , b`).
+  std::vector<Syntax> elements(TokenKind close, const std::string& context) {
+    std::vector<Syntax> result;
+    if (at(close)) {
+      take();
+      return result;
+    }
+    while (true) {
+      if (at(TokenKind::comma) || at(close)) {
+        Syntax empty;
+        empty.kind = SyntaxKind::empty;
+        empty.location = peek().location;
+        result.push_back(empty);
+      } else {
+        result.push_back(element());
+      }
+      if (at(TokenKind::comma)) {
+        take();
+        continue;
+      }
+      expect(close, context);
+      return result;
+    }
+  }
+
+  // An element of a list; inside a set it may be keyed (`rain: 0.5`, `'rain': 0.5`).
+  Syntax element() {
+    bool key_ahead = (at(TokenKind::identifier) || at(TokenKind::string)) &&
+                     peek(1).kind == TokenKind::colon;
+    bool quoted_key = at(TokenKind::string) && !peek().text.empty() && peek().text.back() == ':';
+    if (key_ahead || quoted_key) {
+      Syntax node;
+      node.kind = SyntaxKind::keyed;
+      node.text = peek().text;
+      if (quoted_key) node.text.pop_back();
+      SourceLocation start = take().location;
+      if (key_ahead) take();
+      node.children.push_back(expression(kImplies));
+      node.location = span(start, node.children[0].location);
+      return node;
+    }
+    if (at(TokenKind::star)) {
+      Syntax star;
+      star.kind = SyntaxKind::star;
+      star.location = take().location;
+      return star;
+    }
+    return expression(kImplies);
+  }
+
+  Syntax primary() {
+    const Token& token = peek();
+    Syntax node;
+    node.location = token.location;
+    switch (token.kind) {
+      case TokenKind::number:
+        node.kind = SyntaxKind::number;
+        node.number = token.number;
+        node.text = token.text;
+        take();
+        return node;
+      case TokenKind::string:
+        node.kind = SyntaxKind::string;
+        node.text = token.text;
+        take();
+        return node;
+      case TokenKind::time:
+        node.kind = SyntaxKind::time;
+        node.number = token.number;
+        node.text = token.text;
+        take();
+        return node;
+      case TokenKind::identifier:
+        if (token.text == "U")
+          fail(token.location, "'U' is the until operator ('a U b'); uniform motion is written "
+                               "'uniform(state)'");
+        if (token.text == "CreateScenario" && peek(1).kind == TokenKind::left_brace)
+          return scenario();
+        node.kind = SyntaxKind::identifier;
+        node.text = token.text;
+        take();
+        return node;
+      case TokenKind::left_paren: {
+        take();
+        node.kind = SyntaxKind::tuple;
+        bool single = !at(TokenKind::right_paren);
+        node.children = elements(TokenKind::right_paren, "to close the parenthesis");
+        // `(x)` groups; `(x,)` and `(x, y)` are tuples.
+        node.parenthesised = single && node.children.size() == 1 &&
+                             previous().kind == TokenKind::right_paren &&
+                             tokens_[pos_ - 2].kind != TokenKind::comma;
+        node.location = span(token.location, previous().location);
+        return node;
+      }
+      case TokenKind::left_brace:
+        take();
+        node.kind = SyntaxKind::set;
+        node.children = elements(TokenKind::right_brace, "to close the set");
+        node.location = span(token.location, previous().location);
+        return node;
+      default:
+        fail(token.location, "expected a value, found " + describe(token));
+    }
+  }
+
+  // CreateScenario{load(map); ego; npcs; pedestrians; obstacles; [environment;] [traffic;]}
+  Syntax scenario() {
+    Syntax node;
+    node.kind = SyntaxKind::scenario;
+    node.location = take().location;
+    take();  // {
+    while (!at(TokenKind::right_brace)) {
+      if (at(TokenKind::end_of_file))
+        fail(after_previous(), "expected '}' to close CreateScenario{...}, found end of file");
+      node.children.push_back(expression(kImplies));
+      // The `;` after the last slot may be left out.
+      if (at(TokenKind::semicolon)) {
+        take();
+      } else if (!at(TokenKind::right_brace)) {
+        fail(after_previous(), "expected ';' after this slot of CreateScenario{...}, found " +
+                                   describe(peek()));
+      }
+    }
+    take();  // }
+    node.location = span(node.location, previous().location);
+    return node;
+  }
+
+  const std::vector<Token>& tokens_;
+  Diagnostics& diagnostics_;
+  std::size_t pos_ = 0;
+  int nesting_ = 0;
+};
+
+}  // namespace
+
+std::vector<Statement> parse_statements(const std::vector<Token>& tokens,
+                                        Diagnostics& diagnostics) {
+  return Parser(tokens, diagnostics).run();
+}
+
+}  // namespace scenfuzz::avunit

@@ -1,0 +1,31 @@
+// One dimension of a logical scenario's search space, as the user wrote it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lang/source_location.hpp"
+
+namespace scenfuzz {
+
+enum class ParameterKind {
+  continuous,  // a real interval [lower, upper]
+  angle,       // a real interval in `unit` (deg or rad)
+  discrete,    // one of `choices`; its value is the index of the choice
+};
+
+struct Parameter {
+  std::string name;  // where it sits, e.g. "npc1.init.speed", "ego.init.position.x"
+  ParameterKind kind = ParameterKind::continuous;
+  double lower = 0.0;  // continuous, angle; discrete: 0
+  double upper = 0.0;  // continuous, angle; discrete: choices.size() - 1
+  std::string unit;    // "m", "m/s", "deg", "rad", "time of day", "" for fractions
+  std::vector<std::string> choices;  // discrete only
+  // The whole range construct in the source (`range(1, 10)`, or `range(a, b) & (c, d)` for a
+  // coordinate offset, whose x and y parameters share it): what a concrete scenario replaces.
+  SourceLocation location;
+
+  bool operator==(const Parameter&) const = default;
+};
+
+}  // namespace scenfuzz
