@@ -204,7 +204,7 @@ class Printer {
     while (arguments.size() > 1 && arguments.back().empty()) arguments.pop_back();
     std::string text = actor.name + " = " + constructor + "(";
     for (std::size_t i = 0; i < arguments.size(); ++i)
-      text += (i ? (arguments[i].empty() ? "," : ", ") : "") + arguments[i];
+      text += (i ? ", " : "") + arguments[i];
     return text + ");\n";
   }
 
