@@ -17,9 +17,9 @@ enum class ParameterKind {
 struct Parameter {
   std::string name;  // where it sits, e.g. "npc1.init.speed", "ego.init.position.x"
   ParameterKind kind = ParameterKind::continuous;
-  double lower = 0.0;  // continuous, angle; discrete: 0
-  double upper = 0.0;  // continuous, angle; discrete: choices.size() - 1
-  std::string unit;    // "m", "m/s", "deg", "rad", "time of day", "" for fractions
+  double lower = 0.0;                // continuous, angle; discrete: 0
+  double upper = 0.0;                // continuous, angle; discrete: choices.size() - 1
+  std::string unit;                  // "m", "m/s", "deg", "rad", "time of day", "" for fractions
   std::vector<std::string> choices;  // discrete only
   // The whole range construct in the source (`range(1, 10)`, or `range(a, b) & (c, d)` for a
   // coordinate offset, whose x and y parameters share it): what a concrete scenario replaces.

@@ -22,13 +22,13 @@ enum class PositionKind {
 
 struct Position {
   PositionKind kind = PositionKind::coordinate;
-  Frame frame = Frame::enu;      // coordinate
-  Value x, y;                    // coordinate: metres (ENU, IMU) or degrees (WGS84 x=lon, y=lat)
-  std::optional<Value> z;        // coordinate
-  std::string lane;              // lane; relative: the lane the actor is in, if given
-  Value s;                       // lane: arc length (m); relative: longitudinal offset (m)
-  std::optional<Value> lateral;  // lane, relative: lateral offset (m, left positive)
-  std::string reference;         // relative: the actor this position is taken from
+  Frame frame = Frame::enu;       // coordinate
+  Value x, y;                     // coordinate: metres (ENU, IMU) or degrees (WGS84 x=lon, y=lat)
+  std::optional<Value> z;         // coordinate
+  std::string lane;               // lane; relative: the lane the actor is in, if given
+  Value s;                        // lane: arc length (m); relative: longitudinal offset (m)
+  std::optional<Value> lateral;   // lane, relative: lateral offset (m, left positive)
+  std::string reference;          // relative: the actor this position is taken from
   std::string relative_location;  // relative: WMG sector F, FSR, SR, RSR, R, RSL, SL, FSL
   SourceLocation location;
 

@@ -63,17 +63,17 @@ struct MapReference {
 };
 
 struct Color {
-  std::string name;                     // red, green, blue, black, white; empty for RGB
+  std::string name;                       // red, green, blue, black, white; empty for RGB
   std::optional<std::array<int, 3>> rgb;  // 0..255 each
 
   bool operator==(const Color&) const = default;
 };
 
 struct ActorType {
-  std::string model;             // "Lincoln2017MKZ", or a general kind such as car, truck
-  bool general = false;          // model is a general kind, not a specific model
-  std::optional<Color> color;    // vehicle paint or pedestrian clothing
-  std::optional<Value> height;   // pedestrians, metres
+  std::string model;            // "Lincoln2017MKZ", or a general kind such as car, truck
+  bool general = false;         // model is a general kind, not a specific model
+  std::optional<Color> color;   // vehicle paint or pedestrian clothing
+  std::optional<Value> height;  // pedestrians, metres
   SourceLocation location;
 
   bool operator==(const ActorType&) const = default;

@@ -11,24 +11,51 @@ constexpr std::array kFunctions = {std::string_view("dis"), std::string_view("ve
                                    std::string_view("spd"), std::string_view("acc"),
                                    std::string_view("diff")};
 
-constexpr std::array<std::string_view, 17> kFlags = {
-    "highBeamOn",      "lowBeamOn",        "hornOn",
-    "fogLightOn",      "warningFlashOn",   "engineOn",
-    "manualIntervention", "isLaneChanging", "isOverTaking",
-    "isTurningAround", "honkingAllowed",   "streetLightOn",
-    "PriorityNPCAhead", "PriorityPedsAhead", "isTrafficJam",
-    "trafficLightAhead.isBlinking", "trafficLightAhead.direction.isBlinking"};
+constexpr std::array<std::string_view, 17> kFlags = {"highBeamOn",
+                                                     "lowBeamOn",
+                                                     "hornOn",
+                                                     "fogLightOn",
+                                                     "warningFlashOn",
+                                                     "engineOn",
+                                                     "manualIntervention",
+                                                     "isLaneChanging",
+                                                     "isOverTaking",
+                                                     "isTurningAround",
+                                                     "honkingAllowed",
+                                                     "streetLightOn",
+                                                     "PriorityNPCAhead",
+                                                     "PriorityPedsAhead",
+                                                     "isTrafficJam",
+                                                     "trafficLightAhead.isBlinking",
+                                                     "trafficLightAhead.direction.isBlinking"};
 
 constexpr std::array<std::string_view, 8> kDistancePredicates = {
-    "crosswalkAhead", "junctionAhead", "stopSignAhead", "stoplineAhead",
-    "specialLocationAhead", "NPCAhead", "NearestNPC", "NPCOpposite"};
+    "crosswalkAhead",       "junctionAhead", "stopSignAhead", "stoplineAhead",
+    "specialLocationAhead", "NPCAhead",      "NearestNPC",    "NPCOpposite"};
 
-constexpr std::array<std::string_view, 23> kValueSignals = {
-    "speed", "acc", "brake", "gear", "direction", "turnSignal", "currentLane.number",
-    "currentLane.direction", "speedLimit.upperLimit", "speedLimit.lowerLimit",
-    "trafficLightAhead.color", "trafficLightAhead.direction.color", "signalAhead",
-    "specialLocationAhead.type", "NPCAhead.speed", "NearestNPC.speed", "NPCOpposite.speed",
-    "Time", "rain", "fog", "snow", "visibility", "wetness"};
+constexpr std::array<std::string_view, 23> kValueSignals = {"speed",
+                                                            "acc",
+                                                            "brake",
+                                                            "gear",
+                                                            "direction",
+                                                            "turnSignal",
+                                                            "currentLane.number",
+                                                            "currentLane.direction",
+                                                            "speedLimit.upperLimit",
+                                                            "speedLimit.lowerLimit",
+                                                            "trafficLightAhead.color",
+                                                            "trafficLightAhead.direction.color",
+                                                            "signalAhead",
+                                                            "specialLocationAhead.type",
+                                                            "NPCAhead.speed",
+                                                            "NearestNPC.speed",
+                                                            "NPCOpposite.speed",
+                                                            "Time",
+                                                            "rain",
+                                                            "fog",
+                                                            "snow",
+                                                            "visibility",
+                                                            "wetness"};
 
 constexpr std::array<std::string_view, 5> kColors = {"red", "green", "blue", "black", "white"};
 constexpr std::array<std::string_view, 7> kVehicleKinds = {
@@ -77,9 +104,9 @@ double weather_level_intensity(std::string_view level) {
 
 std::vector<std::string_view> builtin_names() {
   std::vector<std::string_view> names = {
-      "AV",   "Vehicle", "Pedestrian", "Obstacle", "Environment", "load", "range", "EXE",
-      "IMU",  "ENU",     "WGS84",      "EGO",      "pi",          "uniform", "Waypoint",
-      "Random", "Intersection", "SpeedLimit"};
+      "AV",    "Vehicle", "Pedestrian", "Obstacle", "Environment",  "load",
+      "range", "EXE",     "IMU",        "ENU",      "WGS84",        "EGO",
+      "pi",    "uniform", "Waypoint",   "Random",   "Intersection", "SpeedLimit"};
   names.insert(names.end(), kFunctions.begin(), kFunctions.end());
   names.insert(names.end(), kFlags.begin(), kFlags.end());
   names.insert(names.end(), kDistancePredicates.begin(), kDistancePredicates.end());

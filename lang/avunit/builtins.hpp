@@ -19,13 +19,13 @@ enum class SignalClass {
 // `name` may be dotted: "trafficLightAhead.color".
 SignalClass signal_class(std::string_view name);
 
-bool is_color_word(std::string_view word);          // red green blue black white
-bool is_vehicle_kind_word(std::string_view word);   // car bus Van truck bicycle ...
-bool is_shape_word(std::string_view word);          // sphere box cone cylinder
-bool is_weather_kind(std::string_view word);        // sunny rain snow fog wetness cloudiness
-bool is_weather_level(std::string_view word);       // light middle heavy
-bool is_enumeration_word(std::string_view word);    // red yellow green off forward left right
-bool is_motion_function(std::string_view name);     // uniform, Waypoint, W, ..., Random
+bool is_color_word(std::string_view word);         // red green blue black white
+bool is_vehicle_kind_word(std::string_view word);  // car bus Van truck bicycle ...
+bool is_shape_word(std::string_view word);         // sphere box cone cylinder
+bool is_weather_kind(std::string_view word);       // sunny rain snow fog wetness cloudiness
+bool is_weather_level(std::string_view word);      // light middle heavy
+bool is_enumeration_word(std::string_view word);   // red yellow green off forward left right
+bool is_motion_function(std::string_view name);    // uniform, Waypoint, W, ..., Random
 bool is_waypoint_function(std::string_view name);
 bool is_uniform_function(std::string_view name);
 

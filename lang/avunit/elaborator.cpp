@@ -198,8 +198,8 @@ class Elaborator {
 
   void assign(const Statement& statement) {
     if (reserved(statement.name)) {
-      fail(statement.name_location, "'" + statement.name +
-                                        "' is a temporal operator and cannot name a variable");
+      fail(statement.name_location,
+           "'" + statement.name + "' is a temporal operator and cannot name a variable");
       return;
     }
     Item item = evaluate(statement.value);
@@ -227,8 +227,10 @@ class Elaborator {
       } else {
         auto parts = std::get<std::shared_ptr<const ScenarioParts>>(scenario.payload);
         if (traced_ && traced_ != parts) {
-          fail(value.location, "a file describes one scenario, but this trace executes a "
-                               "different one than trace '" + trace_name_ + "'");
+          fail(value.location,
+               "a file describes one scenario, but this trace executes a "
+               "different one than trace '" +
+                   trace_name_ + "'");
         } else if (!traced_) {
           traced_ = parts;
           trace_name_ = statement.name;
@@ -343,8 +345,8 @@ class Elaborator {
       case SignalClass::distance_predicate:
         return fail(syntax.location, "'" + name + "' needs a distance: write '" + name + "(2)'");
       case SignalClass::function:
-        return fail(syntax.location, "'" + name + "' is a function of two arguments: write '" +
-                                         name + "(a, b)'");
+        return fail(syntax.location,
+                    "'" + name + "' is a function of two arguments: write '" + name + "(a, b)'");
       case SignalClass::none: break;
     }
     return fail(syntax.location, "'" + name + "' is not defined" + suggestion(name));
@@ -369,8 +371,9 @@ class Elaborator {
       base = &base->children[0];
     }
     if (base->kind != SyntaxKind::identifier || variables_.count(base->text))
-      return fail(syntax.location, "'." + syntax.text + "' can only follow a signal name such as "
-                                   "'trafficLightAhead'");
+      return fail(syntax.location, "'." + syntax.text +
+                                       "' can only follow a signal name such as "
+                                       "'trafficLightAhead'");
     dotted = base->text + "." + dotted;
     SignalClass kind = signal_class(dotted);
     if (kind != SignalClass::flag && kind != SignalClass::value)
@@ -386,9 +389,9 @@ class Elaborator {
     if (left.kind == ItemKind::error || right.kind == ItemKind::error)
       return make_item(ItemKind::error, syntax.location);
     if (op == TokenKind::ampersand || op == TokenKind::bar) {
-      return logical(op == TokenKind::ampersand ? FormulaKind::conjunction
-                                                : FormulaKind::disjunction,
-                     left, right, syntax.location);
+      return logical(
+          op == TokenKind::ampersand ? FormulaKind::conjunction : FormulaKind::disjunction, left,
+          right, syntax.location);
     }
     if (is_comparison(op)) {
       std::optional<SpecTerm> a = need_term(left), b = need_term(right);
@@ -417,8 +420,8 @@ class Elaborator {
   Item arrow(const Syntax& syntax) {
     const Syntax& lhs = syntax.children[0];
     Item left = evaluate(lhs);
-    if (left.kind == ItemKind::string || (left.kind == ItemKind::number && lhs.kind ==
-                                                                             SyntaxKind::number)) {
+    if (left.kind == ItemKind::string ||
+        (left.kind == ItemKind::number && lhs.kind == SyntaxKind::number)) {
       Item offset = evaluate(syntax.children[1]);
       std::optional<Value> s = need_value(offset, "an arc length along the lane");
       if (!s) return make_item(ItemKind::error, syntax.location);
@@ -427,8 +430,7 @@ class Elaborator {
       position.lane = left.kind == ItemKind::string ? left.word : lhs.text;
       position.s = std::move(*s);
       position.location = syntax.location;
-      if (position.lane.empty())
-        return fail(lhs.location, "a lane id cannot be empty");
+      if (position.lane.empty()) return fail(lhs.location, "a lane id cannot be empty");
       if (!check_not_negative(position.s, offset.location, "an arc length along a lane"))
         return make_item(ItemKind::error, syntax.location);
       return make_item(ItemKind::position, syntax.location, std::move(position));
@@ -511,8 +513,8 @@ class Elaborator {
     result.x = binary_value(op, a->x, b->x, location);
     result.y = binary_value(op, a->y, b->y, location);
     if (a->z || b->z)
-      result.z = binary_value(op, a->z.value_or(constant_value(0)), b->z.value_or(constant_value(0)),
-                              location);
+      result.z = binary_value(op, a->z.value_or(constant_value(0)),
+                              b->z.value_or(constant_value(0)), location);
     result.location = location;
     return make_item(ItemKind::position, location, std::move(result));
   }
@@ -550,6 +552,7 @@ class Elaborator {
     }
     if (is_term_like(operand)) {
       std::optional<SpecTerm> inner = need_term(operand);
+      if (!inner) return make_item(ItemKind::error, syntax.location);
       SpecTerm term;
       term.kind = TermKind::negate;
       term.operands.push_back(std::move(*inner));
@@ -562,10 +565,9 @@ class Elaborator {
   std::optional<TimeInterval> interval(const std::optional<IntervalSyntax>& written) {
     if (!written) return std::nullopt;
     if (written->lower > written->upper) {
-      diagnostics_.error(written->location, "inverted interval: the lower bound " +
-                                                format_number(written->lower) +
-                                                " is above the upper bound " +
-                                                format_number(written->upper));
+      diagnostics_.error(written->location,
+                         "inverted interval: the lower bound " + format_number(written->lower) +
+                             " is above the upper bound " + format_number(written->upper));
     }
     return TimeInterval{written->lower, written->upper};
   }
@@ -629,8 +631,8 @@ class Elaborator {
         projection.agent = std::get<Obstacle>(agent.payload).name;
       } else {
         if (agent.kind != ItemKind::error)
-          fail(key.location, "expected a vehicle, pedestrian or obstacle inside [...], found " +
-                                 describe(agent));
+          fail(key.location,
+               "expected a vehicle, pedestrian or obstacle inside [...], found " + describe(agent));
         return make_item(ItemKind::error, syntax.location);
       }
       projection.complete = true;
@@ -665,8 +667,7 @@ class Elaborator {
   std::optional<Direction> direction(const Syntax& syntax) {
     Direction direction;
     direction.location = syntax.location;
-    if (syntax.kind == SyntaxKind::identifier && syntax.text == "EGO" &&
-        !variables_.count("EGO")) {
+    if (syntax.kind == SyntaxKind::identifier && syntax.text == "EGO" && !variables_.count("EGO")) {
       direction.kind = Direction::Kind::ego;
       return direction;
     }
@@ -694,8 +695,9 @@ class Elaborator {
     std::optional<Position> position = need_position(base);
     if (!position) return make_item(ItemKind::error, syntax.location);
     if (position->kind != PositionKind::coordinate)
-      return fail(base.location, "'range(...) & (...)' offsets a coordinate, not a lane position: "
-                                 "write \"lane\"->range(a, b)");
+      return fail(base.location,
+                  "'range(...) & (...)' offsets a coordinate, not a lane position: "
+                  "write \"lane\"->range(a, b)");
     SourceLocation range_location = span(syntax.children[1].location, syntax.children[2].location);
     std::optional<Value> dx = offset_parameter(syntax.children[1], range_location, "x");
     std::optional<Value> dy = offset_parameter(syntax.children[2], range_location, "y");
@@ -838,8 +840,9 @@ class Elaborator {
   }
 
   Item ego(const Syntax& syntax, const std::vector<Item>& arguments) {
-    const char* form = "an initial state, a target state and an optional vehicle type: "
-                       "AV(init, target, type)";
+    const char* form =
+        "an initial state, a target state and an optional vehicle type: "
+        "AV(init, target, type)";
     if (!check_arity(syntax, arguments, 2, 3, form) || !given(arguments, 1)) {
       if (arguments.size() >= 2 && !given(arguments, 1))
         diagnostics_.error(arguments[1].location, "the ego vehicle needs a target state");
@@ -896,8 +899,9 @@ class Elaborator {
   }
 
   Item obstacle(const Syntax& syntax, const std::vector<Item>& arguments) {
-    if (!check_arity(syntax, arguments, 1, 2, "a position and an optional shape: "
-                                              "Obstacle(position, (box, 4.5, 1.9, 1.5))"))
+    if (!check_arity(syntax, arguments, 1, 2,
+                     "a position and an optional shape: "
+                     "Obstacle(position, (box, 4.5, 1.9, 1.5))"))
       return make_item(ItemKind::error, syntax.location);
     Obstacle obstacle;
     obstacle.location = syntax.location;
@@ -946,7 +950,7 @@ class Elaborator {
 
   // IMU (x, y), ENU((1, 2) + offset), WGS84 (lon, lat)
   Item framed(const Syntax& syntax, const std::vector<Item>& arguments) {
-    Frame frame = syntax.text == "IMU" ? Frame::imu
+    Frame frame = syntax.text == "IMU"   ? Frame::imu
                   : syntax.text == "ENU" ? Frame::enu
                                          : Frame::wgs84;
     Item coordinates = make_item(ItemKind::tuple, syntax.location);
@@ -967,8 +971,9 @@ class Elaborator {
     Environment environment;
     environment.location = syntax.location;
     if (arguments.size() > 2)
-      return fail(syntax.location, "Environment(...) expects a time and a weather set: "
-                                   "Environment(12:00, {rain: 0.5})");
+      return fail(syntax.location,
+                  "Environment(...) expects a time and a weather set: "
+                  "Environment(12:00, {rain: 0.5})");
     if (given(arguments, 0)) {
       if (arguments[0].kind != ItemKind::time) {
         mismatch(arguments[0], "a time of day such as 12:00");
@@ -1052,8 +1057,8 @@ class Elaborator {
       return make_item(ItemKind::error, syntax.location);
     IntersectionControl control;
     control.location = syntax.location;
-    control.id = arguments[0].kind == ItemKind::string ? arguments[0].word
-                                                       : syntax.children[0].text;
+    control.id =
+        arguments[0].kind == ItemKind::string ? arguments[0].word : syntax.children[0].text;
     bool* flags[] = {&control.traffic_light, &control.stop_sign, &control.crosswalk};
     for (std::size_t i = 1; i < 4; ++i) {
       const Item& flag = arguments[i];
@@ -1102,8 +1107,9 @@ class Elaborator {
       if (terms[0].kind != TermKind::object || terms[0].source != ObjectSource::perception ||
           terms[1].kind != TermKind::object || terms[1].source != ObjectSource::truth ||
           terms[0].name != terms[1].name)
-        return fail(syntax.location, "diff(...) compares an agent's perceived and true states: "
-                                     "diff(trace[perception][a], trace[truth][a])");
+        return fail(syntax.location,
+                    "diff(...) compares an agent's perceived and true states: "
+                    "diff(trace[perception][a], trace[truth][a])");
     }
     return signal_item(name, std::move(terms), syntax.location);
   }
@@ -1128,11 +1134,10 @@ class Elaborator {
       return term;
     }
     if (function == "spd" && argument.kind == ItemKind::number) return need_term(argument);
-    std::string expected = function == "dis"   ? "a trace projection or a position"
-                           : function == "spd" ? "a trace projection or a speed"
-                           : function == "diff"
-                               ? "a trace projection"
-                               : "a trace projection or a vector (x, y)";
+    std::string expected = function == "dis"    ? "a trace projection or a position"
+                           : function == "spd"  ? "a trace projection or a speed"
+                           : function == "diff" ? "a trace projection"
+                                                : "a trace projection or a vector (x, y)";
     mismatch(argument, expected + " as argument of " + function + "(...)");
     return std::nullopt;
   }
@@ -1141,9 +1146,8 @@ class Elaborator {
   Item distance_predicate(const Syntax& syntax, const std::vector<Item>& arguments) {
     if (arguments.size() != 1 || arguments[0].kind != ItemKind::number ||
         !is_constant(arguments[0].value))
-      return fail(syntax.location,
-                  syntax.text + "(...) takes one constant distance in metres: " + syntax.text +
-                      "(2)");
+      return fail(syntax.location, syntax.text + "(...) takes one constant distance in metres: " +
+                                       syntax.text + "(2)");
     return signal_item(syntax.text, {*need_term(arguments[0])}, syntax.location);
   }
 
@@ -1175,10 +1179,10 @@ class Elaborator {
     parts->ego = std::get<Actor>(items[1].payload);
     if (parts->ego.name.empty()) parts->ego.name = "ego";
     std::set<std::string> names = {parts->ego.name};
-    bool ok = collect_actors(items[2], ActorKind::vehicle, "vehicle", parts->vehicles, names) &&
-              collect_actors(items[3], ActorKind::pedestrian, "pedestrian", parts->pedestrians,
-                             names) &&
-              collect_obstacles(items[4], parts->obstacles, names);
+    bool ok =
+        collect_actors(items[2], ActorKind::vehicle, "vehicle", parts->vehicles, names) &&
+        collect_actors(items[3], ActorKind::pedestrian, "pedestrian", parts->pedestrians, names) &&
+        collect_obstacles(items[4], parts->obstacles, names);
     if (!ok) return make_item(ItemKind::error, syntax.location);
     if (slots >= 6 && !(items[5].kind == ItemKind::set && items[5].elements.empty())) {
       if (items[5].kind != ItemKind::environment) {
@@ -1189,8 +1193,8 @@ class Elaborator {
     }
     if (slots == 7 && !traffic(items[6], parts->traffic))
       return make_item(ItemKind::error, syntax.location);
-    Item item = make_item(ItemKind::scenario, syntax.location,
-                          std::shared_ptr<const ScenarioParts>(parts));
+    Item item =
+        make_item(ItemKind::scenario, syntax.location, std::shared_ptr<const ScenarioParts>(parts));
     scenarios_.push_back(std::get<std::shared_ptr<const ScenarioParts>>(item.payload));
     return item;
   }
@@ -1223,9 +1227,9 @@ class Elaborator {
     flatten(slot, elements);
     for (const Item* element : elements) {
       if (element->kind != ItemKind::actor || std::get<Actor>(element->payload).kind != kind) {
-        mismatch(*element, std::string(kind == ActorKind::vehicle ? "a Vehicle(...)"
-                                                                  : "a Pedestrian(...)") +
-                               " in the " + stem + " slot of CreateScenario");
+        mismatch(*element,
+                 std::string(kind == ActorKind::vehicle ? "a Vehicle(...)" : "a Pedestrian(...)") +
+                     " in the " + stem + " slot of CreateScenario");
         return false;
       }
       Actor actor = std::get<Actor>(element->payload);
@@ -1433,8 +1437,7 @@ class Elaborator {
     if (item.elements.size() != expected + 1) {
       diagnostics_.error(item.location, "a " + word + " has " + std::to_string(expected) +
                                             (expected == 1 ? " dimension" : " dimensions") +
-                                            ", found " +
-                                            std::to_string(item.elements.size() - 1));
+                                            ", found " + std::to_string(item.elements.size() - 1));
       return std::nullopt;
     }
     for (std::size_t i = 1; i < item.elements.size(); ++i) {
@@ -1505,8 +1508,8 @@ class Elaborator {
     if (item.kind == ItemKind::formula) return std::get<Formula>(item.payload);
     if (item.kind == ItemKind::term) {
       const SpecTerm& term = std::get<SpecTerm>(item.payload);
-      SignalClass kind = term.kind == TermKind::signal ? signal_class(term.name)
-                                                       : SignalClass::none;
+      SignalClass kind =
+          term.kind == TermKind::signal ? signal_class(term.name) : SignalClass::none;
       if (kind == SignalClass::flag || kind == SignalClass::distance_predicate) {
         Formula formula;
         formula.kind = FormulaKind::predicate;

@@ -106,9 +106,7 @@ class Lexer {
     return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
   }
 
-  SourceLocation here() const {
-    return {line_, column_, static_cast<std::uint32_t>(pos_), 0};
-  }
+  SourceLocation here() const { return {line_, column_, static_cast<std::uint32_t>(pos_), 0}; }
 
   void advance() {
     if (text_[pos_] == '\n') {
@@ -246,8 +244,9 @@ class Lexer {
       advance();
     }
     start.length = static_cast<std::uint32_t>(width);
-    diagnostics_.error(start, "unterminated string: expected a closing quote before the end of "
-                              "the line");
+    diagnostics_.error(start,
+                       "unterminated string: expected a closing quote before the end of "
+                       "the line");
     return std::nullopt;
   }
 

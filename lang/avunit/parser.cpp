@@ -124,9 +124,10 @@ class Parser {
     const Token& first = peek();
     result.location = first.location;
     if (first.kind != TokenKind::identifier)
-      fail(first.location, "expected a statement ('name = value;', 'Trace name = EXE(scenario);' "
-                           "or 'trace |= formula;'), found " +
-                               describe(first));
+      fail(first.location,
+           "expected a statement ('name = value;', 'Trace name = EXE(scenario);' "
+           "or 'trace |= formula;'), found " +
+               describe(first));
     if (first.text == "Trace" && peek(1).kind == TokenKind::identifier) {
       take();
       result.kind = StatementKind::trace_declaration;
@@ -141,14 +142,14 @@ class Parser {
       } else if (at(TokenKind::satisfies)) {
         result.kind = StatementKind::assertion;
       } else {
-        fail(peek().location, "expected '=' or '|=' after '" + result.name + "', found " +
-                                  describe(peek()));
+        fail(peek().location,
+             "expected '=' or '|=' after '" + result.name + "', found " + describe(peek()));
       }
       take();
     }
     result.value = expression(kImplies);
     const char* context = result.kind == StatementKind::assertion ? "after the specification"
-                                                                   : "after the assignment";
+                                                                  : "after the assignment";
     expect(TokenKind::semicolon, context);
     result.location = span(result.location, previous().location);
     return result;
@@ -244,7 +245,8 @@ class Parser {
     if (!at(TokenKind::left_bracket)) return std::nullopt;
     IntervalSyntax interval;
     interval.location = take().location;
-    if (at(TokenKind::time) && peek().text.size() <= 5 && peek(1).kind == TokenKind::right_bracket) {
+    if (at(TokenKind::time) && peek().text.size() <= 5 &&
+        peek(1).kind == TokenKind::right_bracket) {
       const Token& time = take();
       interval.lower = std::floor(time.number / 3600.0);
       interval.upper = (time.number - interval.lower * 3600.0) / 60.0;
@@ -263,10 +265,11 @@ class Parser {
 
   double interval_bound() {
     double sign = 1.0;
-    if (at(TokenKind::minus) || at(TokenKind::plus)) sign = take().kind == TokenKind::minus ? -1 : 1;
+    if (at(TokenKind::minus) || at(TokenKind::plus))
+      sign = take().kind == TokenKind::minus ? -1 : 1;
     if (!at(TokenKind::number))
-      fail(peek().location, "expected a number of seconds as interval bound, found " +
-                                describe(peek()));
+      fail(peek().location,
+           "expected a number of seconds as interval bound, found " + describe(peek()));
     return sign * take().number;
   }
 
@@ -279,8 +282,8 @@ class Parser {
         call.kind = SyntaxKind::call;
         call.text = node.text;
         take();
-        call.children = elements(TokenKind::right_paren, "to close the argument list of '" +
-                                                             node.text + "'");
+        call.children =
+            elements(TokenKind::right_paren, "to close the argument list of '" + node.text + "'");
         call.location = span(node.location, previous().location);
         node = std::move(call);
       } else if (token.kind == TokenKind::left_bracket) {
@@ -357,12 +360,13 @@ class Parser {
     // The x range's span starts at `range`, so `range(a, b) & (c, d)` is one replaceable span.
     x_range.location = span(keyword, x_range.location);
     if (!at(TokenKind::ampersand))
-      fail(peek().location, "expected '&' and the y range after the x range of a coordinate, found " +
-                                describe(peek()));
+      fail(peek().location,
+           "expected '&' and the y range after the x range of a coordinate, found " +
+               describe(peek()));
     take();
     if (!at(TokenKind::left_paren))
-      fail(peek().location, "expected the y range '(lower, upper)' after '&', found " +
-                                describe(peek()));
+      fail(peek().location,
+           "expected the y range '(lower, upper)' after '&', found " + describe(peek()));
     Syntax y_range = primary();
     node.location = span(base.location, y_range.location);
     node.children.push_back(std::move(base));
@@ -398,8 +402,8 @@ class Parser {
 
   // An element of a list; inside a set it may be keyed (`rain: 0.5`, `'rain': 0.5`).
   Syntax element() {
-    bool key_ahead = (at(TokenKind::identifier) || at(TokenKind::string)) &&
-                     peek(1).kind == TokenKind::colon;
+    bool key_ahead =
+        (at(TokenKind::identifier) || at(TokenKind::string)) && peek(1).kind == TokenKind::colon;
     bool quoted_key = at(TokenKind::string) && !peek().text.empty() && peek().text.back() == ':';
     if (key_ahead || quoted_key) {
       Syntax node;
@@ -445,8 +449,9 @@ class Parser {
         return node;
       case TokenKind::identifier:
         if (token.text == "U")
-          fail(token.location, "'U' is the until operator ('a U b'); uniform motion is written "
-                               "'uniform(state)'");
+          fail(token.location,
+               "'U' is the until operator ('a U b'); uniform motion is written "
+               "'uniform(state)'");
         if (token.text == "CreateScenario" && peek(1).kind == TokenKind::left_brace)
           return scenario();
         node.kind = SyntaxKind::identifier;
@@ -471,8 +476,7 @@ class Parser {
         node.children = elements(TokenKind::right_brace, "to close the set");
         node.location = span(token.location, previous().location);
         return node;
-      default:
-        fail(token.location, "expected a value, found " + describe(token));
+      default: fail(token.location, "expected a value, found " + describe(token));
     }
   }
 
@@ -490,8 +494,8 @@ class Parser {
       if (at(TokenKind::semicolon)) {
         take();
       } else if (!at(TokenKind::right_brace)) {
-        fail(after_previous(), "expected ';' after this slot of CreateScenario{...}, found " +
-                                   describe(peek()));
+        fail(after_previous(),
+             "expected ';' after this slot of CreateScenario{...}, found " + describe(peek()));
       }
     }
     take();  // }

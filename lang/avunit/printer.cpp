@@ -1,6 +1,8 @@
 // Prints a template as AVUnit: canonically (every actor and spec written out, ranges inline), or
 // concretely in the user's own layout (only the ranges of the original file replaced).
 #include <algorithm>
+#include <cassert>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -12,6 +14,22 @@ namespace scenfuzz::avunit {
 
 namespace {
 
+// A string reads back only with quotes of a family it does not contain: a string opened with
+// `"` ends at any of " “ ”, one opened with ' at any of ' ‘ ’.
+std::string quoted(const std::string& text) {
+  bool has_double = text.find('"') != std::string::npos ||
+                    text.find("\u201C") != std::string::npos ||
+                    text.find("\u201D") != std::string::npos;
+  return has_double ? "'" + text + "'" : "\"" + text + "\"";
+}
+
+// Whole seconds within a day print as H:MM[:SS]; anything else as an offset from midnight.
+std::string time_constant_text(double seconds) {
+  if (seconds >= 0 && seconds <= 86400 && seconds == std::floor(seconds))
+    return format_time_of_day(seconds);
+  return "0:00 + " + format_number(seconds);
+}
+
 class Printer {
  public:
   explicit Printer(const ScenarioTemplate& scenario) : scenario_(scenario) {}
@@ -21,27 +39,31 @@ class Printer {
     name_shared_parameters();
     const std::string scenario_name =
         scenario_.scenario_name.empty() ? "scenario" : scenario_.scenario_name;
-    out_ += actor_statement(scenario_.ego, "AV");
-    for (const Actor& actor : scenario_.vehicles) out_ += actor_statement(actor, "Vehicle");
-    for (const Actor& actor : scenario_.pedestrians) out_ += actor_statement(actor, "Pedestrian");
+    out_ += actor_statements();
     for (const Obstacle& obstacle : scenario_.obstacles)
       out_ += obstacle.name + " = " + obstacle_text(obstacle) + ";\n";
-    out_ += scenario_name + " = CreateScenario{load(\"" + scenario_.map.name + "\");\n";
+    out_ += scenario_name + " = CreateScenario{load(" + quoted(scenario_.map.name) + ");\n";
     out_ += "    " + scenario_.ego.name + ";\n";
     out_ += "    " + name_set(scenario_.vehicles) + ";\n";
     out_ += "    " + name_set(scenario_.pedestrians) + ";\n";
     std::vector<std::string> obstacle_names;
     for (const Obstacle& obstacle : scenario_.obstacles) obstacle_names.push_back(obstacle.name);
     out_ += "    " + set_text(obstacle_names) + ";\n";
-    bool has_traffic = !scenario_.traffic.intersections.empty() ||
-                       !scenario_.traffic.speed_limits.empty();
+    bool has_traffic =
+        !scenario_.traffic.intersections.empty() || !scenario_.traffic.speed_limits.empty();
     if (scenario_.environment || has_traffic)
-      out_ += "    " +
-              (scenario_.environment ? environment_text(*scenario_.environment) : "{}") + ";\n";
+      out_ += "    " + (scenario_.environment ? environment_text(*scenario_.environment) : "{}") +
+              ";\n";
     if (has_traffic) out_ += "    " + traffic_text(scenario_.traffic) + ";\n";
     out_ += "};\n";
-    if (!scenario_.trace_name.empty())
-      out_ += "Trace " + scenario_.trace_name + " = EXE(" + scenario_name + ");\n";
+    // The first trace is the template's; specs may be asserted on other traces of it too.
+    std::vector<std::string> traces;
+    if (!scenario_.trace_name.empty()) traces.push_back(scenario_.trace_name);
+    for (const Spec& spec : scenario_.specs)
+      if (std::find(traces.begin(), traces.end(), spec.trace) == traces.end())
+        traces.push_back(spec.trace);
+    for (const std::string& trace : traces)
+      out_ += "Trace " + trace + " = EXE(" + scenario_name + ");\n";
     for (std::size_t i = 0; i < scenario_.specs.size(); ++i) {
       const Spec& spec = scenario_.specs[i];
       trace_ = spec.trace;
@@ -71,7 +93,9 @@ class Printer {
     for (const Actor& actor : scenario_.vehicles) taken.insert(actor.name);
     for (const Actor& actor : scenario_.pedestrians) taken.insert(actor.name);
     for (const Obstacle& obstacle : scenario_.obstacles) taken.insert(obstacle.name);
-    for (const Spec& spec : scenario_.specs) taken.insert(spec.name);
+    for (const Spec& spec : scenario_.specs) taken.insert({spec.name, spec.trace});
+    taken.insert(scenario_.scenario_name.empty() ? "scenario" : scenario_.scenario_name);
+    taken.insert(scenario_.trace_name);
     header_ = "// AVUnit printed by scenfuzz\n";
     for (const auto& [parameter, count] : uses) {
       if (count < 2) continue;
@@ -86,7 +110,7 @@ class Printer {
     const Parameter& parameter = scenario_.parameters[static_cast<std::size_t>(index)];
     bool time = parameter.unit == "time of day";
     auto bound = [&](double value) {
-      return time ? format_time_of_day(value) : format_number(value);
+      return time ? time_constant_text(value) : format_number(value);
     };
     return "range(" + bound(parameter.lower) + ", " + bound(parameter.upper) + ")";
   }
@@ -103,7 +127,8 @@ class Printer {
         auto shared = shared_.find(value.parameter);
         return shared != shared_.end() ? shared->second : range_text(value.parameter);
       }
-      case ValueOp::negate: return "-" + operand_text(value.operands[0], precedence(ValueOp::negate));
+      case ValueOp::negate:
+        return "-" + operand_text(value.operands[0], precedence(ValueOp::negate));
       default: break;
     }
     static const std::map<ValueOp, std::string> symbols = {{ValueOp::add, " + "},
@@ -123,12 +148,12 @@ class Printer {
   }
 
   std::string time_text(const Value& value) const {
-    return is_constant(value) ? format_time_of_day(value.constant) : value_text(value);
+    return is_constant(value) ? time_constant_text(value.constant) : value_text(value);
   }
 
   std::string position_text(const Position& position) const {
     if (position.kind == PositionKind::lane)
-      return "\"" + position.lane + "\"->" + value_text(position.s);
+      return quoted(position.lane) + "->" + value_text(position.s);
     std::string text = "(" + value_text(position.x) + ", " + value_text(position.y);
     if (position.z) text += ", " + value_text(*position.z);
     text += ")";
@@ -148,7 +173,7 @@ class Printer {
       case Direction::Kind::ego: return text + " related to EGO";
       case Direction::Kind::actor: return text + " related to " + direction.actor;
       case Direction::Kind::lane:
-        return text + " related to \"" + direction.lane + "\"->" + value_text(direction.s);
+        return text + " related to " + quoted(direction.lane) + "->" + value_text(direction.s);
     }
     return text;
   }
@@ -169,9 +194,9 @@ class Printer {
   }
 
   std::string type_text(const ActorType& type) const {
-    std::string first = type.height   ? value_text(*type.height)
+    std::string first = type.height    ? value_text(*type.height)
                         : type.general ? type.model
-                                       : "\"" + type.model + "\"";
+                                       : quoted(type.model);
     if (type.color) return "(" + first + ", " + color_text(*type.color) + ")";
     return "(" + first + ")";
   }
@@ -192,6 +217,40 @@ class Printer {
     return "";
   }
 
+  // An actor whose heading is related to another must come after it, as in the source.
+  std::string actor_statements() const {
+    std::vector<std::pair<const Actor*, const char*>> pending = {{&scenario_.ego, "AV"}};
+    for (const Actor& actor : scenario_.vehicles) pending.push_back({&actor, "Vehicle"});
+    for (const Actor& actor : scenario_.pedestrians) pending.push_back({&actor, "Pedestrian"});
+    std::set<std::string> printed;
+    std::string text;
+    while (!pending.empty()) {
+      auto ready = std::find_if(pending.begin(), pending.end(), [&](const auto& entry) {
+        for (const std::string& name : related_actors(*entry.first))
+          if (name != entry.first->name && !printed.count(name)) return false;
+        return true;
+      });
+      if (ready == pending.end()) ready = pending.begin();  // a cycle cannot be written anyway
+      text += actor_statement(*ready->first, ready->second);
+      printed.insert(ready->first->name);
+      pending.erase(ready);
+    }
+    return text;
+  }
+
+  static std::vector<std::string> related_actors(const Actor& actor) {
+    std::vector<std::string> names;
+    auto add = [&](const State& state) {
+      if (state.heading && state.heading->relative_to &&
+          state.heading->relative_to->kind == Direction::Kind::actor)
+        names.push_back(state.heading->relative_to->actor);
+    };
+    add(actor.initial);
+    for (const State& state : actor.motion.states) add(state);
+    if (actor.target) add(*actor.target);
+    return names;
+  }
+
   std::string actor_statement(const Actor& actor, const std::string& constructor) const {
     std::vector<std::string> arguments = {state_text(actor.initial)};
     if (actor.kind == ActorKind::ego) {
@@ -203,8 +262,7 @@ class Printer {
     arguments.push_back(actor.type ? type_text(*actor.type) : "");
     while (arguments.size() > 1 && arguments.back().empty()) arguments.pop_back();
     std::string text = actor.name + " = " + constructor + "(";
-    for (std::size_t i = 0; i < arguments.size(); ++i)
-      text += (i ? ", " : "") + arguments[i];
+    for (std::size_t i = 0; i < arguments.size(); ++i) text += (i ? ", " : "") + arguments[i];
     return text + ");\n";
   }
 
@@ -250,14 +308,14 @@ class Printer {
   std::string traffic_text(const Traffic& traffic) const {
     std::vector<std::string> items;
     for (const IntersectionControl& control : traffic.intersections) {
-      bool numeric = !control.id.empty() &&
-                     control.id.find_first_not_of("0123456789.") == std::string::npos;
-      items.push_back("Intersection(" + (numeric ? control.id : "\"" + control.id + "\"") + ", " +
+      bool numeric =
+          !control.id.empty() && control.id.find_first_not_of("0123456789.") == std::string::npos;
+      items.push_back("Intersection(" + (numeric ? control.id : quoted(control.id)) + ", " +
                       (control.traffic_light ? "1" : "0") + ", " + (control.stop_sign ? "1" : "0") +
                       ", " + (control.crosswalk ? "1" : "0") + ")");
     }
     for (const SpeedLimit& limit : traffic.speed_limits)
-      items.push_back("SpeedLimit(\"" + limit.lane + "\", (" + value_text(limit.lower) + ", " +
+      items.push_back("SpeedLimit(" + quoted(limit.lane) + ", (" + value_text(limit.lower) + ", " +
                       value_text(limit.upper) + "))");
     return set_text(items);
   }
@@ -274,8 +332,8 @@ class Printer {
       case TermKind::negate: return 4;
       case TermKind::number:
         return term.value.op == ValueOp::constant && term.value.constant >= 0 ? 5
-               : term.value.op == ValueOp::parameter                         ? 5
-                                                                             : 0;
+               : term.value.op == ValueOp::parameter                          ? 5
+                                                                              : 0;
       default: return 5;
     }
   }
@@ -308,11 +366,14 @@ class Printer {
       default: break;
     }
     static const std::map<TermKind, std::pair<std::string, int>> symbols = {
-        {TermKind::add, {" + ", 1}},      {TermKind::subtract, {" - ", 1}},
-        {TermKind::multiply, {" * ", 2}}, {TermKind::divide, {" / ", 2}},
+        {TermKind::add, {" + ", 1}},
+        {TermKind::subtract, {" - ", 1}},
+        {TermKind::multiply, {" * ", 2}},
+        {TermKind::divide, {" / ", 2}},
         {TermKind::power, {" ^ ", 3}}};
     const auto& [symbol, level] = symbols.at(term.kind);
-    return term_operand(term.operands[0], level) + symbol + term_operand(term.operands[1], level + 1);
+    return term_operand(term.operands[0], level) + symbol +
+           term_operand(term.operands[1], level + 1);
   }
 
   static int formula_level(const Formula& formula) {
@@ -338,9 +399,9 @@ class Printer {
 
   std::string formula_text(const Formula& formula) const {
     static const std::map<CompareOp, std::string> compare = {
-        {CompareOp::less, " < "},          {CompareOp::less_equal, " <= "},
-        {CompareOp::greater, " > "},       {CompareOp::greater_equal, " >= "},
-        {CompareOp::equal, " == "},        {CompareOp::not_equal, " != "}};
+        {CompareOp::less, " < "},    {CompareOp::less_equal, " <= "},
+        {CompareOp::greater, " > "}, {CompareOp::greater_equal, " >= "},
+        {CompareOp::equal, " == "},  {CompareOp::not_equal, " != "}};
     switch (formula.kind) {
       case FormulaKind::comparison:
         return term_text(formula.terms[0]) + compare.at(formula.compare) +
@@ -353,16 +414,16 @@ class Printer {
         const char* op = formula.kind == FormulaKind::always       ? "G"
                          : formula.kind == FormulaKind::eventually ? "F"
                                                                    : "X";
-        return op + interval_text(formula.interval) + " " +
-               formula_operand(formula.operands[0], 6);
+        return op + interval_text(formula.interval) + " " + formula_operand(formula.operands[0], 6);
       }
       default: break;
     }
     int level = formula_level(formula);
     std::string op = formula.kind == FormulaKind::implication   ? " -> "
                      : formula.kind == FormulaKind::disjunction ? " | "
-                     : formula.kind == FormulaKind::conjunction ? " & "
-                                                                : " U" + interval_text(formula.interval) + " ";
+                     : formula.kind == FormulaKind::conjunction
+                         ? " & "
+                         : " U" + interval_text(formula.interval) + " ";
     return formula_operand(formula.operands[0], level) + op +
            formula_operand(formula.operands[1], level + 1);
   }
@@ -381,6 +442,7 @@ std::string print(const ScenarioTemplate& scenario) { return Printer(scenario).r
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
                            std::span<const double> parameter_values) {
   // Parameters sharing one span are a coordinate offset `range(a, b) & (c, d)`: x then y.
+  assert(parameter_values.size() == scenario.parameters.size());
   std::map<std::uint32_t, std::vector<std::size_t>> by_offset;
   for (std::size_t i = 0; i < scenario.parameters.size(); ++i)
     by_offset[scenario.parameters[i].location.offset].push_back(i);
@@ -397,19 +459,20 @@ std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scena
         return "\"" + parameter.choices.at(static_cast<std::size_t>(value)) + "\"";
       return format_number(value);
     };
-    std::string replacement =
-        group.size() == 2 ? "+ (" + value_text(group[0]) + ", " + value_text(group[1]) + ")"
-                          : value_text(group[0]);
+    std::string replacement = group.size() == 2
+                                  ? "+ (" + value_text(group[0]) + ", " + value_text(group[1]) + ")"
+                                  : value_text(group[0]);
     if (first.location.end_offset() <= text.size())
       text.replace(first.location.offset, first.location.length, replacement);
   }
   for (std::size_t i = 0; i < scenario.parameters.size(); ++i) {
     const Parameter& parameter = scenario.parameters[i];
-    header += "//   " + parameter.name + " = " +
-              (parameter.unit == "time of day" ? format_time_of_day(parameter_values[i])
-                                               : format_number(parameter_values[i])) +
-              (parameter.unit.empty() || parameter.unit == "time of day" ? "" : " " + parameter.unit) +
-              "\n";
+    header +=
+        "//   " + parameter.name + " = " +
+        (parameter.unit == "time of day" ? format_time_of_day(parameter_values[i])
+                                         : format_number(parameter_values[i])) +
+        (parameter.unit.empty() || parameter.unit == "time of day" ? "" : " " + parameter.unit) +
+        "\n";
   }
   return header + text;
 }

@@ -31,7 +31,8 @@ std::string golden_text(const ScenarioTemplate& scenario) {
             format_number(parameter.lower) + ", " + format_number(parameter.upper) + "] " +
             parameter.unit + " at " + std::to_string(parameter.location.line) + ":" +
             std::to_string(parameter.location.column) + "\n";
-  for (const Spec& spec : scenario.specs) text += "// spec " + spec.name + " on " + spec.trace + "\n";
+  for (const Spec& spec : scenario.specs)
+    text += "// spec " + spec.name + " on " + spec.trace + "\n";
   return text;
 }
 

@@ -45,10 +45,10 @@ TEST(Lexer, OperatorsIncludingDottedAndArrows) {
   std::vector<TokenKind> kinds;
   for (const Token& token : tokens) kinds.push_back(token.kind);
   std::vector<TokenKind> expected = {
-      TokenKind::arrow,      TokenKind::satisfies, TokenKind::less_equal, TokenKind::greater_equal,
-      TokenKind::equal,      TokenKind::not_equal, TokenKind::dot_plus,   TokenKind::dot_minus,
-      TokenKind::dot_star,   TokenKind::dot_slash, TokenKind::identifier, TokenKind::dot,
-      TokenKind::identifier, TokenKind::tilde,     TokenKind::ampersand,  TokenKind::bar,
+      TokenKind::arrow,      TokenKind::satisfies,  TokenKind::less_equal, TokenKind::greater_equal,
+      TokenKind::equal,      TokenKind::not_equal,  TokenKind::dot_plus,   TokenKind::dot_minus,
+      TokenKind::dot_star,   TokenKind::dot_slash,  TokenKind::identifier, TokenKind::dot,
+      TokenKind::identifier, TokenKind::tilde,      TokenKind::ampersand,  TokenKind::bar,
       TokenKind::caret,      TokenKind::end_of_file};
   EXPECT_EQ(kinds, expected);
 }

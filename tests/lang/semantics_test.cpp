@@ -89,12 +89,12 @@ TEST(Semantics, UnusedRangeIsAWarningAndNotADimension) {
 }
 
 TEST(Semantics, AndBindsTighterThanOrAndTemporalOperatorsTakeAComparison) {
-  auto result = parse_ok(
-      "ego = AV((\"l\"->0), (\"l\"->100));\nnpc1 = Vehicle((\"l\"->30));\n" + kScenarioTail +
-      "d = dis(t[ego], t[truth][npc1]);\n"
-      "t |= d > 1 | d > 2 & d > 3;\n"
-      "t |= G d >= 1;\n"
-      "t |= d > 1 -> d > 2 -> d > 3;\n");
+  auto result = parse_ok("ego = AV((\"l\"->0), (\"l\"->100));\nnpc1 = Vehicle((\"l\"->30));\n" +
+                         kScenarioTail +
+                         "d = dis(t[ego], t[truth][npc1]);\n"
+                         "t |= d > 1 | d > 2 & d > 3;\n"
+                         "t |= G d >= 1;\n"
+                         "t |= d > 1 -> d > 2 -> d > 3;\n");
   const auto& specs = result.scenario.specs;
   ASSERT_EQ(specs.size(), 3u);
   EXPECT_EQ(specs[0].formula.kind, FormulaKind::disjunction);
@@ -112,10 +112,10 @@ TEST(Semantics, AndBindsTighterThanOrAndTemporalOperatorsTakeAComparison) {
 }
 
 TEST(Semantics, IntervalsInBothNotationsAndBracedOperands) {
-  auto result = parse_ok(
-      "ego = AV((\"l\"->0), (\"l\"->100));\nnpc1 = Vehicle((\"l\"->30));\n" + kScenarioTail +
-      "d = dis(t[ego], t[truth][npc1]);\n"
-      "t |= G[0:10] ({d} >= {1.0}) & F[-1, 2.5] (d < 3);\n");
+  auto result = parse_ok("ego = AV((\"l\"->0), (\"l\"->100));\nnpc1 = Vehicle((\"l\"->30));\n" +
+                         kScenarioTail +
+                         "d = dis(t[ego], t[truth][npc1]);\n"
+                         "t |= G[0:10] ({d} >= {1.0}) & F[-1, 2.5] (d < 3);\n");
   const Formula& formula = result.scenario.specs.at(0).formula;
   ASSERT_EQ(formula.kind, FormulaKind::conjunction);
   EXPECT_EQ(formula.operands[0].interval, (TimeInterval{0, 10}));
@@ -126,7 +126,8 @@ TEST(Semantics, IntervalsInBothNotationsAndBracedOperands) {
 TEST(Semantics, HeadingsKeepTheirUnitAndReference) {
   auto result = parse_ok(
       "ego = AV((\"l\"->0, -15 deg), (\"l\"->100, 0.5 pi rad related to EGO));\n"
-      "npc1 = Vehicle((\"l\"->30, 10 deg related to ego));\n" + kScenarioTail);
+      "npc1 = Vehicle((\"l\"->30, 10 deg related to ego));\n" +
+      kScenarioTail);
   const Heading& initial = *result.scenario.ego.initial.heading;
   EXPECT_EQ(initial.angle.constant, -15);
   EXPECT_EQ(initial.unit, AngleUnit::degree);
@@ -166,10 +167,10 @@ TEST(Semantics, ActorsAreNamedByTheirFirstVariableOrFreshly) {
 }
 
 TEST(Semantics, NamedSpecificationsKeepTheirName) {
-  auto result = parse_ok(
-      "ego = AV((\"l\"->0), (\"l\"->100));\nnpc1 = Vehicle((\"l\"->30));\n" + kScenarioTail +
-      "safe = G (dis(t[ego], t[truth][npc1]) > 1);\n"
-      "t |= safe;\nt |= safe & F (dis(t[ego], \"l\"->100) < 2);\n");
+  auto result = parse_ok("ego = AV((\"l\"->0), (\"l\"->100));\nnpc1 = Vehicle((\"l\"->30));\n" +
+                         kScenarioTail +
+                         "safe = G (dis(t[ego], t[truth][npc1]) > 1);\n"
+                         "t |= safe;\nt |= safe & F (dis(t[ego], \"l\"->100) < 2);\n");
   ASSERT_EQ(result.scenario.specs.size(), 2u);
   EXPECT_EQ(result.scenario.specs[0].name, "safe");
   EXPECT_EQ(result.scenario.specs[1].name, "spec2");
@@ -214,7 +215,8 @@ TEST(Semantics, ParsingIsDeterministic) {
   ASSERT_FALSE(files.empty());
   SourceFile file = test::load(files.front());
   EXPECT_EQ(avunit::parse(file).scenario, avunit::parse(file).scenario);
-  EXPECT_EQ(avunit::print(avunit::parse(file).scenario), avunit::print(avunit::parse(file).scenario));
+  EXPECT_EQ(avunit::print(avunit::parse(file).scenario),
+            avunit::print(avunit::parse(file).scenario));
 }
 
 }  // namespace

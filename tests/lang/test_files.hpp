@@ -50,8 +50,8 @@ namespace scenfuzz {
 inline void PrintTo(const ScenarioTemplate& scenario, std::ostream* out) {
   *out << "\n" << avunit::print(scenario);
   for (const Parameter& parameter : scenario.parameters)
-    *out << "// parameter " << parameter.name << " [" << parameter.lower << ", "
-         << parameter.upper << "] " << parameter.unit << "\n";
+    *out << "// parameter " << parameter.name << " [" << parameter.lower << ", " << parameter.upper
+         << "] " << parameter.unit << "\n";
 }
 
 }  // namespace scenfuzz
