@@ -1,7 +1,9 @@
 #include "lang/value.hpp"
 
 #include <cassert>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace scenfuzz {
 
@@ -79,6 +81,54 @@ double evaluate(const Value& value, std::span<const double> parameter_values) {
 void collect_parameters(const Value& value, std::vector<int>& parameters) {
   if (value.op == ValueOp::parameter) parameters.push_back(value.parameter);
   for (const Value& operand : value.operands) collect_parameters(operand, parameters);
+}
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+ValueRange hull(std::initializer_list<double> corners) {
+  ValueRange range{kInfinity, -kInfinity};
+  for (double corner : corners) {
+    if (std::isnan(corner)) return {-kInfinity, kInfinity};
+    range.lower = std::min(range.lower, corner);
+    range.upper = std::max(range.upper, corner);
+  }
+  return range;
+}
+
+}  // namespace
+
+ValueRange value_range(const Value& value, std::span<const Parameter> parameters) {
+  switch (value.op) {
+    case ValueOp::constant: return {value.constant, value.constant};
+    case ValueOp::parameter: {
+      const Parameter& parameter = parameters[static_cast<std::size_t>(value.parameter)];
+      return {parameter.lower, parameter.upper};
+    }
+    case ValueOp::negate: {
+      ValueRange a = value_range(value.operands[0], parameters);
+      return {-a.upper, -a.lower};
+    }
+    default: break;
+  }
+  ValueRange a = value_range(value.operands[0], parameters);
+  ValueRange b = value_range(value.operands[1], parameters);
+  switch (value.op) {
+    case ValueOp::add: return {a.lower + b.lower, a.upper + b.upper};
+    case ValueOp::subtract: return {a.lower - b.upper, a.upper - b.lower};
+    case ValueOp::multiply:
+      return hull({a.lower * b.lower, a.lower * b.upper, a.upper * b.lower, a.upper * b.upper});
+    case ValueOp::divide:
+      if (b.lower <= 0.0 && b.upper >= 0.0) return {-kInfinity, kInfinity};
+      return hull({a.lower / b.lower, a.lower / b.upper, a.upper / b.lower, a.upper / b.upper});
+    case ValueOp::power:
+      // x^y is monotonic in each argument for x >= 0, so its extremes lie on the corners.
+      if (a.lower < 0.0) return {-kInfinity, kInfinity};
+      return hull({std::pow(a.lower, b.lower), std::pow(a.lower, b.upper),
+                   std::pow(a.upper, b.lower), std::pow(a.upper, b.upper)});
+    default: return {-kInfinity, kInfinity};
+  }
 }
 
 int precedence(ValueOp op) {

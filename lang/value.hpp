@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "lang/parameter.hpp"
 #include "lang/source_location.hpp"
 
 namespace scenfuzz {
@@ -32,6 +33,14 @@ bool is_constant(const Value& value);
 double evaluate(const Value& value, std::span<const double> parameter_values);
 // Appends the parameters the value reads, in the order they appear.
 void collect_parameters(const Value& value, std::vector<int>& parameters);
+
+// The smallest and largest value a Value can take over its parameters' bounds (interval
+// arithmetic; unbounded where it cannot tell, e.g. dividing by a range that contains zero).
+struct ValueRange {
+  double lower = 0.0;
+  double upper = 0.0;
+};
+ValueRange value_range(const Value& value, std::span<const Parameter> parameters);
 
 // Binding strength of an operator when printed: higher binds tighter.
 int precedence(ValueOp op);

@@ -270,6 +270,7 @@ class Elaborator {
 
   Item evaluate(const Syntax& syntax) {
     switch (syntax.kind) {
+      case SyntaxKind::error: return make_item(ItemKind::error, syntax.location);
       case SyntaxKind::number:
         return number_item(constant_value(syntax.number, syntax.location), syntax.location);
       case SyntaxKind::time:
@@ -441,13 +442,14 @@ class Elaborator {
     return logical(FormulaKind::implication, left, right, syntax.location);
   }
 
+  static std::string reaches(const Value& value, double extreme) {
+    return (is_constant(value) ? "found " : "but it can reach ") + format_number(extreme);
+  }
+
   bool check_not_negative(const Value& value, SourceLocation where, const std::string& what) {
-    double lowest = value.op == ValueOp::constant ? value.constant
-                    : value.op == ValueOp::parameter
-                        ? parameters_[static_cast<std::size_t>(value.parameter)].lower
-                        : 0.0;
+    double lowest = value_range(value, parameters_).lower;
     if (lowest < 0.0) {
-      diagnostics_.error(where, what + " cannot be negative, found " + format_number(lowest));
+      diagnostics_.error(where, what + " cannot be negative, " + reaches(value, lowest));
       return false;
     }
     return true;
@@ -742,14 +744,19 @@ class Elaborator {
       diagnostics_.error(where, "a range cannot mix a time of day and a number");
       return std::nullopt;
     }
+    bool time = lower_item.kind == ItemKind::time;
+    auto bound = [&](double value) {
+      return time ? format_time_of_day(value) : format_number(value);
+    };
     if (*lower > *upper) {
-      diagnostics_.error(where, "inverted range: the lower bound " + format_number(*lower) +
-                                    " is above the upper bound " + format_number(*upper));
+      diagnostics_.error(where, "inverted range: the lower bound " + bound(*lower) +
+                                    " is above the upper bound " + bound(*upper));
       return std::nullopt;
     }
     if (*lower == *upper) {
-      diagnostics_.error(where, "empty range: both bounds are " + format_number(*lower) +
-                                    "; write the constant instead");
+      diagnostics_.error(where,
+                         "empty range: both bounds are " + bound(*lower) + "; write the constant "
+                                                                           "instead");
       return std::nullopt;
     }
     Parameter parameter;
@@ -1033,19 +1040,10 @@ class Elaborator {
   }
 
   bool check_fraction(const Value& value, SourceLocation where, const std::string& what) {
-    double lower = 0.0, upper = 0.0;
-    if (value.op == ValueOp::constant) {
-      lower = upper = value.constant;
-    } else if (value.op == ValueOp::parameter) {
-      const Parameter& parameter = parameters_[static_cast<std::size_t>(value.parameter)];
-      lower = parameter.lower;
-      upper = parameter.upper;
-    } else {
-      return true;
-    }
-    if (lower < 0.0 || upper > 1.0) {
-      diagnostics_.error(where, what + " must be between 0 and 1, found " +
-                                    format_number(lower < 0.0 ? lower : upper));
+    ValueRange range = value_range(value, parameters_);
+    if (range.lower < 0.0 || range.upper > 1.0) {
+      diagnostics_.error(where, what + " must be between 0 and 1, " +
+                                    reaches(value, range.lower < 0.0 ? range.lower : range.upper));
       return false;
     }
     return true;

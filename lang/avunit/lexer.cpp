@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <string>
 #include <string_view>
 
 namespace scenfuzz::avunit {
@@ -44,6 +45,7 @@ std::string describe(TokenKind kind) {
     case TokenKind::tilde: return "'~'";
     case TokenKind::ampersand: return "'&'";
     case TokenKind::bar: return "'|'";
+    case TokenKind::invalid: return "an invalid token";
   }
   return "a token";
 }
@@ -208,11 +210,12 @@ class Lexer {
         if (is_digit(peek(1))) {
           advance();
           while (is_digit(peek())) advance();
-          start.length = static_cast<std::uint32_t>(pos_ - start.offset);
-          diagnostics_.error(start, "a number needs a digit before its decimal point (write 0" +
-                                        std::string(text_.substr(start.offset, start.length)) +
-                                        ")");
-          return std::nullopt;
+          Token number = make(TokenKind::number, start);
+          number.number = std::stod("0" + number.text);
+          diagnostics_.error(number.location,
+                             "a number needs a digit before its decimal point (write 0" +
+                                 number.text + ")");
+          return number;
         }
         return single(TokenKind::dot);
       default: break;
@@ -220,10 +223,9 @@ class Lexer {
     // Report the whole (possibly multi-byte) character once.
     advance();
     while (!at_end() && is_continuation_byte(peek())) advance();
-    start.length = static_cast<std::uint32_t>(pos_ - start.offset);
-    diagnostics_.error(start, "unexpected character '" +
-                                  std::string(text_.substr(start.offset, start.length)) + "'");
-    return std::nullopt;
+    Token bad = make(TokenKind::invalid, start);
+    diagnostics_.error(bad.location, "unexpected character '" + bad.text + "'");
+    return bad;
   }
 
   std::optional<Token> string_literal() {
@@ -243,11 +245,11 @@ class Lexer {
       }
       advance();
     }
-    start.length = static_cast<std::uint32_t>(width);
-    diagnostics_.error(start,
-                       "unterminated string: expected a closing quote before the end of "
-                       "the line");
-    return std::nullopt;
+    Token bad = make(TokenKind::invalid, start);
+    bad.location.length = static_cast<std::uint32_t>(width);
+    diagnostics_.error(bad.location, "unterminated string: expected a closing quote before the "
+                                     "end of the line");
+    return bad;
   }
 
   std::size_t digits_at(std::size_t from) const {
@@ -278,9 +280,8 @@ class Lexer {
       advance(end - pos_);
       Token token = make(TokenKind::time, start);
       token.number = hour * 3600.0 + minute * 60.0 + second;
-      if (hour > 24 || minute > 59 || second > 59 || (hour == 24 && (minute || second)))
-        diagnostics_.error(token.location, "invalid time of day '" + token.text +
-                                               "': expected hours 0-24 and minutes 00-59");
+      token.invalid_time =
+          hour > 24 || minute > 59 || second > 59 || (hour == 24 && (minute || second));
       return token;
     }
     advance(hour_digits);
@@ -290,9 +291,10 @@ class Lexer {
     } else if (peek() == '.' && !is_letter(peek(1)) && peek(1) != '+' && peek(1) != '-' &&
                peek(1) != '*' && peek(1) != '/') {
       advance();
-      start.length = static_cast<std::uint32_t>(pos_ - start.offset);
-      diagnostics_.error(start, "expected digits after the decimal point");
-      return std::nullopt;
+      Token number = make(TokenKind::number, start);
+      number.number = std::stod(number.text.substr(0, number.text.size() - 1));
+      diagnostics_.error(number.location, "expected digits after the decimal point");
+      return number;
     }
     if ((peek() == 'e' || peek() == 'E') &&
         (is_digit(peek(1)) || ((peek(1) == '+' || peek(1) == '-') && is_digit(peek(2))))) {
@@ -302,7 +304,12 @@ class Lexer {
     Token token = make(TokenKind::number, start);
     auto [end, error] =
         std::from_chars(token.text.data(), token.text.data() + token.text.size(), token.number);
-    if (error != std::errc() || !std::isfinite(token.number)) {
+    bool underflow = error == std::errc::result_out_of_range &&
+                     (token.text.find("e-") != std::string::npos ||
+                      token.text.find("E-") != std::string::npos);
+    if (underflow) {
+      token.number = 0.0;  // too small to represent: as good as zero
+    } else if (error != std::errc() || !std::isfinite(token.number)) {
       diagnostics_.error(token.location, "number '" + token.text + "' is out of range");
       token.number = 0.0;
     }

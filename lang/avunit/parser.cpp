@@ -1,5 +1,6 @@
 #include "lang/avunit/parser.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace scenfuzz::avunit {
@@ -13,6 +14,9 @@ constexpr int kImplies = 1, kOr = 2, kAnd = 3, kUntil = 4, kCompare = 5, kAdd = 
               kPower = 8;
 // Deep enough for any real file, shallow enough that recursion can never exhaust the stack.
 constexpr int kMaxNesting = 200;
+// Loops build long chains (`1 + 1 + ... + 1`, `a[b][c]...`) without recursing; their height is
+// bounded too, because everything after the parser walks the tree recursively.
+constexpr int kMaxDepth = 256;
 
 bool is_comparison(TokenKind kind) {
   switch (kind) {
@@ -40,9 +44,15 @@ class Parser {
       }
       std::size_t start = pos_;
       nesting_ = 0;
+      partial_ = Statement{};
       try {
         statements.push_back(statement());
       } catch (const SyntaxError&) {
+        // The name is still bound, to an error, so that its uses stay silent.
+        if (!partial_.name.empty() && partial_.kind != StatementKind::assertion) {
+          partial_.value.kind = SyntaxKind::error;
+          statements.push_back(partial_);
+        }
         recover(start);
       }
     }
@@ -65,9 +75,22 @@ class Parser {
   }
   const Token& previous() const { return tokens_[pos_ > 0 ? pos_ - 1 : 0]; }
 
+  // A token the lexer could not read has been reported already: failing at it says nothing more.
   [[noreturn]] void fail(SourceLocation where, const std::string& message) {
-    diagnostics_.error(where, message);
+    if (peek().kind != TokenKind::invalid) diagnostics_.error(where, message);
     throw SyntaxError{};
+  }
+
+  // `name =`, `name |=` or `Trace name =` at token i: `=` and `|=` occur nowhere else, so this is
+  // certainly where a statement starts.
+  bool statement_starts_at(std::size_t i) const {
+    auto kind = [&](std::size_t k) {
+      return k < tokens_.size() ? tokens_[k].kind : TokenKind::end_of_file;
+    };
+    if (kind(i) != TokenKind::identifier) return false;
+    if (kind(i + 1) == TokenKind::assign || kind(i + 1) == TokenKind::satisfies) return true;
+    return tokens_[i].text == "Trace" && kind(i + 1) == TokenKind::identifier &&
+           kind(i + 2) == TokenKind::assign;
   }
 
   // Just after the previous token: where a missing `;` or `)` belongs.
@@ -84,6 +107,16 @@ class Parser {
     return where;
   }
 
+  // Records the height of a node whose children are complete.
+  Syntax& deepen(Syntax& node) {
+    int deepest = 0;
+    for (const Syntax& child : node.children) deepest = std::max(deepest, child.depth);
+    node.depth = deepest + 1;
+    if (node.depth > kMaxDepth)
+      fail(node.location, "expression too deeply nested or too long: split it into named parts");
+    return node;
+  }
+
   const Token& expect(TokenKind kind, const std::string& context) {
     if (!at(kind)) {
       bool closing = kind == TokenKind::semicolon || kind == TokenKind::right_paren ||
@@ -94,24 +127,25 @@ class Parser {
     return take();
   }
 
-  // Skips to the `;` that ends the statement that started at `start`, counting brackets from
-  // there, so that a `;` inside `CreateScenario{...}` does not end it.
+  // Skips the rest of the statement that started at `start`: up to its `;` — one inside the
+  // braces of CreateScenario{...} does not count, and no other bracket can hold a `;` — or up to
+  // the start of the next statement, whichever comes first after the error.
   void recover(std::size_t start) {
     std::size_t error_at = pos_;
-    int depth = 0;
+    std::vector<bool> braces;  // open braces; true for those of CreateScenario
     for (std::size_t i = start; i < tokens_.size(); ++i) {
       TokenKind kind = tokens_[i].kind;
-      if (kind == TokenKind::end_of_file) {
+      bool in_scenario = std::find(braces.begin(), braces.end(), true) != braces.end();
+      if (kind == TokenKind::end_of_file ||
+          (i > start && i >= error_at && statement_starts_at(i))) {
         pos_ = i;
         return;
       }
-      if (kind == TokenKind::left_paren || kind == TokenKind::left_brace ||
-          kind == TokenKind::left_bracket)
-        ++depth;
-      if (kind == TokenKind::right_paren || kind == TokenKind::right_brace ||
-          kind == TokenKind::right_bracket)
-        depth = depth > 0 ? depth - 1 : 0;
-      if (kind == TokenKind::semicolon && depth == 0 && i >= error_at) {
+      if (kind == TokenKind::left_brace)
+        braces.push_back(i > 0 && tokens_[i - 1].kind == TokenKind::identifier &&
+                         tokens_[i - 1].text == "CreateScenario");
+      if (kind == TokenKind::right_brace && !braces.empty()) braces.pop_back();
+      if (kind == TokenKind::semicolon && !in_scenario && i >= error_at) {
         pos_ = i + 1;
         return;
       }
@@ -134,6 +168,7 @@ class Parser {
       result.name = peek().text;
       result.name_location = take().location;
       expect(TokenKind::assign, "after the trace name");
+      partial_ = result;
     } else {
       result.name = first.text;
       result.name_location = take().location;
@@ -146,6 +181,7 @@ class Parser {
              "expected '=' or '|=' after '" + result.name + "', found " + describe(peek()));
       }
       take();
+      partial_ = result;
     }
     result.value = expression(kImplies);
     const char* context = result.kind == StatementKind::assertion ? "after the specification"
@@ -206,7 +242,7 @@ class Parser {
       node.location = span(left.location, right.location);
       node.children.push_back(std::move(left));
       node.children.push_back(std::move(right));
-      left = std::move(node);
+      left = std::move(deepen(node));
       left_is_comparison = level == kCompare;
     }
     return left;
@@ -224,7 +260,7 @@ class Parser {
       // `~` negates a whole comparison; a sign belongs to the number right after it.
       node.children.push_back(token.kind == TokenKind::tilde ? expression(kCompare) : prefix());
       node.location = span(token.location, node.children[0].location);
-      return node;
+      return deepen(node);
     }
     if (token.kind == TokenKind::identifier &&
         (token.text == "G" || token.text == "F" || token.text == "X")) {
@@ -235,7 +271,7 @@ class Parser {
       node.interval = optional_interval();
       node.children.push_back(expression(kCompare));
       node.location = span(token.location, node.children[0].location);
-      return node;
+      return deepen(node);
     }
     return postfix();
   }
@@ -245,11 +281,13 @@ class Parser {
     if (!at(TokenKind::left_bracket)) return std::nullopt;
     IntervalSyntax interval;
     interval.location = take().location;
+    // Whatever its digits, a time token here is two bounds: `[0:60]` is 0 to 60 seconds.
     if (at(TokenKind::time) && peek().text.size() <= 5 &&
         peek(1).kind == TokenKind::right_bracket) {
       const Token& time = take();
-      interval.lower = std::floor(time.number / 3600.0);
-      interval.upper = (time.number - interval.lower * 3600.0) / 60.0;
+      std::size_t colon = time.text.find(':');
+      interval.lower = std::stod(time.text.substr(0, colon));
+      interval.upper = std::stod(time.text.substr(colon + 1));
     } else {
       interval.lower = interval_bound();
       if (!at(TokenKind::colon) && !at(TokenKind::comma))
@@ -285,7 +323,7 @@ class Parser {
         call.children =
             elements(TokenKind::right_paren, "to close the argument list of '" + node.text + "'");
         call.location = span(node.location, previous().location);
-        node = std::move(call);
+        node = std::move(deepen(call));
       } else if (token.kind == TokenKind::left_bracket) {
         take();
         Syntax index;
@@ -294,7 +332,7 @@ class Parser {
         index.children.push_back(expression(kImplies));
         expect(TokenKind::right_bracket, "to close the index");
         index.location = span(index.children[0].location, previous().location);
-        node = std::move(index);
+        node = std::move(deepen(index));
       } else if (token.kind == TokenKind::dot) {
         take();
         if (!at(TokenKind::identifier))
@@ -304,7 +342,7 @@ class Parser {
         member.text = take().text;
         member.location = span(node.location, previous().location);
         member.children.push_back(std::move(node));
-        node = std::move(member);
+        node = std::move(deepen(member));
       } else if (at_word("pi")) {
         take();
         node = wrap(SyntaxKind::pi, std::move(node), "pi");
@@ -317,6 +355,7 @@ class Parser {
           take();
           node.children.push_back(direction());
           node.location = span(node.location, node.children.back().location);
+          deepen(node);
         }
       } else if (at_word("range") && peek(1).kind == TokenKind::left_paren &&
                  (node.kind == SyntaxKind::tuple || node.kind == SyntaxKind::call ||
@@ -334,7 +373,7 @@ class Parser {
     node.text = std::move(text);
     node.location = span(inner.location, previous().location);
     node.children.push_back(std::move(inner));
-    return node;
+    return deepen(node);
   }
 
   // After `related to`: a lane position "lane"->s, an actor, or EGO.
@@ -348,7 +387,7 @@ class Parser {
     node.location = span(target.location, offset.location);
     node.children.push_back(std::move(target));
     node.children.push_back(std::move(offset));
-    return node;
+    return deepen(node);
   }
 
   // `(x, y) range(a, b) & (c, d)`: x varies by an offset in [a, b], y by one in [c, d].
@@ -372,7 +411,7 @@ class Parser {
     node.children.push_back(std::move(base));
     node.children.push_back(std::move(x_range));
     node.children.push_back(std::move(y_range));
-    return node;
+    return deepen(node);
   }
 
   // Comma-separated elements up to `close`; an element may be left out (`a, , b`).
@@ -414,7 +453,7 @@ class Parser {
       if (key_ahead) take();
       node.children.push_back(expression(kImplies));
       node.location = span(start, node.children[0].location);
-      return node;
+      return deepen(node);
     }
     if (at(TokenKind::star)) {
       Syntax star;
@@ -442,6 +481,9 @@ class Parser {
         take();
         return node;
       case TokenKind::time:
+        if (token.invalid_time)
+          fail(token.location, "invalid time of day '" + token.text +
+                                   "': expected hours 0-24 and minutes 00-59");
         node.kind = SyntaxKind::time;
         node.number = token.number;
         node.text = token.text;
@@ -468,14 +510,14 @@ class Parser {
                              previous().kind == TokenKind::right_paren &&
                              tokens_[pos_ - 2].kind != TokenKind::comma;
         node.location = span(token.location, previous().location);
-        return node;
+        return deepen(node);
       }
       case TokenKind::left_brace:
         take();
         node.kind = SyntaxKind::set;
         node.children = elements(TokenKind::right_brace, "to close the set");
         node.location = span(token.location, previous().location);
-        return node;
+        return deepen(node);
       default: fail(token.location, "expected a value, found " + describe(token));
     }
   }
@@ -489,6 +531,9 @@ class Parser {
     while (!at(TokenKind::right_brace)) {
       if (at(TokenKind::end_of_file))
         fail(after_previous(), "expected '}' to close CreateScenario{...}, found end of file");
+      if (statement_starts_at(pos_))
+        fail(after_previous(),
+             "expected '}' to close CreateScenario{...} before the next statement");
       node.children.push_back(expression(kImplies));
       // The `;` after the last slot may be left out.
       if (at(TokenKind::semicolon)) {
@@ -500,13 +545,14 @@ class Parser {
     }
     take();  // }
     node.location = span(node.location, previous().location);
-    return node;
+    return deepen(node);
   }
 
   const std::vector<Token>& tokens_;
   Diagnostics& diagnostics_;
   std::size_t pos_ = 0;
   int nesting_ = 0;
+  Statement partial_;  // the statement being parsed, as far as its name
 };
 
 }  // namespace

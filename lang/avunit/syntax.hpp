@@ -12,6 +12,7 @@
 namespace scenfuzz::avunit {
 
 enum class SyntaxKind {
+  error,             // what a statement that did not parse is bound to: already reported
   number,            // `number`, `text` as written
   string,            // `text`
   time,              // `number` seconds since midnight
@@ -48,6 +49,7 @@ struct Syntax {
   bool parenthesised = false;  // tuple: `(x)` with one element and no comma
   std::vector<Syntax> children;
   std::optional<IntervalSyntax> interval;
+  int depth = 1;            // height of this subtree: the parser bounds it
   SourceLocation location;  // spans the whole construct
 };
 

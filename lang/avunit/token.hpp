@@ -44,12 +44,16 @@ enum class TokenKind {
   tilde,
   ampersand,
   bar,
+  invalid,  // something the lexer already reported; the parser skips its statement silently
 };
 
 struct Token {
   TokenKind kind = TokenKind::end_of_file;
   std::string text;     // as written (string: the contents)
   double number = 0.0;  // number, time
+  // time: not a valid time of day (25:00, 0:60). It is still one token, because in an interval
+  // `[0:60]` it is two bounds; used as a value it is an error.
+  bool invalid_time = false;
   SourceLocation location;
 };
 

@@ -72,12 +72,20 @@ TEST(Lexer, CommentsOfEveryKindAreSkipped) {
   EXPECT_EQ(tokens[1].location.column, 10u);
 }
 
-TEST(Lexer, BadCharactersAreReportedAndSkipped) {
+TEST(Lexer, BadCharactersAreReportedOnceAndKeptAsInvalidTokens) {
   Diagnostics diagnostics;
   auto tokens = lex("a @ b", diagnostics);
   ASSERT_EQ(diagnostics.error_count(), 1u);
   EXPECT_EQ(diagnostics.all()[0].location.column, 3u);
-  EXPECT_EQ(tokens.size(), 3u);
+  ASSERT_EQ(tokens.size(), 4u);
+  EXPECT_EQ(tokens[1].kind, TokenKind::invalid);
+}
+
+TEST(Lexer, TimesOutsideADayAreTokensMarkedInvalid) {
+  auto tokens = lex_ok("0:60 25:00 24:00");
+  EXPECT_TRUE(tokens[0].invalid_time);
+  EXPECT_TRUE(tokens[1].invalid_time);
+  EXPECT_FALSE(tokens[2].invalid_time);
 }
 
 }  // namespace

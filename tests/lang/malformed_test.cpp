@@ -6,7 +6,7 @@
 // Every parse first runs in a forked child (a death test), so a front end that crashes fails the
 // one case that crashed instead of taking the whole test binary down.
 //
-// Cases marked `// BUG:` fail today: they assert what the front end should do.
+// Cases marked `Regression:` pin front-end bugs these tests found and that were fixed.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -259,19 +259,19 @@ std::vector<MalformedCase> malformed_cases() {
       // (Elaborator::unary) and crash; kept as a regression case.
       {"negated_truth_without_agent", S + "t |= G(-t[truth] > 1);\n", 7, 9,
        "name the agent: t[truth][npc1]"},
-      // BUG: with the '}' of CreateScenario missing, the parser reads the next statements as
+      // Regression: with the '}' of CreateScenario missing, the parser reads the next statements as
       // more slots and reports "expected ';' after this slot of CreateScenario{...}, found 't'"
       // at 3:6, inside a correct line. The '}' belongs after the last slot (2:47).
       {"missing_close_brace_of_scenario_before_next_statement",
        kEgo + "s = CreateScenario{load(\"m\"); ego; {}; {}; {};\nTrace t = EXE(s);\n" +
            "t |= G(speed > 1);\n",
        2, 47, "expected '}' to close CreateScenario{...}"},
-      // BUG: check_not_negative only looks at constants and bare ranges, so an offset written as
+      // Regression: check_not_negative only looks at constants and bare ranges, so an offset written as
       // arithmetic that is negative everywhere ([-9, -8] here) is accepted.
       {"negative_lane_offset_through_arithmetic",
        "p = \"lane_1\"->(range(1, 2) - 10);\ne = AV((p), (\"lane_1\"->9));\n", 1, 16,
        "an arc length along a lane cannot be negative"},
-      // BUG: the message gives the bounds in seconds since midnight ("the lower bound 43200 is
+      // Regression: the message gives the bounds in seconds since midnight ("the lower bound 43200 is
       // above the upper bound 39600") although the user wrote times of day.
       {"inverted_time_of_day_range", "r = range(12:00, 11:00);\n", 1, 5,
        "the lower bound 12:00 is above the upper bound 11:00"},
@@ -334,7 +334,7 @@ TEST(MalformedRecovery, ThreeIndependentErrorsAreAllReportedInOrder) {
   EXPECT_EQ(lines, (std::vector<std::uint32_t>{2, 5, 8})) << all;
 }
 
-// BUG: after a syntax error the parser skips to the next ';' outside brackets, counting brackets
+// Regression: after a syntax error the parser skips to the next ';' outside brackets, counting brackets
 // from the start of the statement; an unclosed '(' (or '[', '{') therefore never closes and the
 // whole rest of the file is skipped: the errors on lines 8 and 9 are never reported. A ';' inside
 // '(' or '[' can only end the statement.
@@ -380,7 +380,7 @@ TEST(MalformedRecovery, EveryPhaseReportsAfterEarlierPhasesFailed) {
   EXPECT_EQ(lines, (std::set<std::uint32_t>{2, 5, 8})) << all;
 }
 
-// BUG: the parser drops a statement it cannot parse, so the elaborator then reports every use of
+// Regression: the parser drops a statement it cannot parse, so the elaborator then reports every use of
 // the name it defined as "'x' is not defined; did you mean 's'?" — an error the user did not
 // make. A name whose definition failed to parse should be known (as erroneous) and stay silent.
 TEST(MalformedRecovery, ErrorInsideCreateScenarioDoesNotCascade) {
@@ -401,7 +401,7 @@ TEST(MalformedRecovery, ErrorInsideCreateScenarioDoesNotCascade) {
               ::testing::HasSubstr("expected ';' after this slot of CreateScenario"));
 }
 
-// BUG: the same cascade for a plain assignment.
+// Regression: the same cascade for a plain assignment.
 TEST(MalformedRecovery, AssignmentThatFailedToParseDoesNotMakeItsNameUndefined) {
   const std::string text = "x = 1 2;\ny = x + 1;\n";
   if (!parse_survives(text, "failed assignment")) return;
@@ -414,7 +414,7 @@ TEST(MalformedRecovery, AssignmentThatFailedToParseDoesNotMakeItsNameUndefined) 
   EXPECT_EQ(errors[0]->location.column, 6u);
 }
 
-// BUG: when the lexer drops a bad token (a bad character, `.5`, `5.`, an unterminated string),
+// Regression: when the lexer drops a bad token (a bad character, `.5`, `5.`, an unterminated string),
 // the parser then reports a second error about the hole it left ("expected ';' ... found number
 // '2'", "expected a value, found ';'"). One mistake should give one error: the lexer could keep
 // the token (0.5 for `.5`, the string up to the end of the line) or pass an error token that the
@@ -451,7 +451,7 @@ TEST(MalformedRecovery, StopsAtTheErrorLimit) {
 
 // ---- inputs that look malformed but are not, and inputs that must not crash ----------------
 
-// BUG: `[0:60]` and `[30:45]` are lexed as times of day (H:MM) and rejected as invalid times;
+// Regression: `[0:60]` and `[30:45]` are lexed as times of day (H:MM) and rejected as invalid times;
 // `[0:60]` even becomes the interval [1, 0] ("inverted interval"). As interval bounds they are
 // plain seconds: G[0:60] is the first minute.
 TEST(MalformedLookalike, IntervalWrittenLikeAnInvalidTimeOfDayIsAnInterval) {
@@ -474,7 +474,7 @@ TEST(MalformedLookalike, IntervalWrittenLikeAnInvalidTimeOfDayIsAnInterval) {
   }
 }
 
-// BUG: long operator chains build left-deep trees the parser's nesting limit does not count, and
+// Regression: long operator chains build left-deep trees the parser's nesting limit does not count, and
 // the elaborator (and, from about 100000 operands, the syntax tree's destructor) recurse once per
 // operand: about 500 operands overflow the stack in a Debug build. A chain must either be handled
 // or rejected with an error, never crash.
