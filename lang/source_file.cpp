@@ -1,5 +1,7 @@
 #include "lang/source_file.hpp"
 
+#include <cerrno>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +25,12 @@ std::string_view SourceFile::line_text(std::uint32_t line) const {
 }
 
 std::optional<SourceFile> read_source_file(const std::string& path) {
+  // An ifstream opens a directory and reads nothing from it.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    errno = EISDIR;
+    return std::nullopt;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   std::ostringstream buffer;

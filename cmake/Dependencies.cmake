@@ -1,0 +1,46 @@
+# Third-party libraries, all from Debian 12 packages (scripts/install-deps.sh installs them).
+# Facts behind the choices here: shared/reference/dependencies.md.
+
+# Eigen 3.4: geometry for physics.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+
+# NLopt 2.7 (C++ build): search strategies. Its config lives under lib/<arch>/cmake/nlopt_cxx; a
+# plain find_package(NLopt) would find the C build, which lacks StoGO and AGS.
+find_package(
+  NLopt 2.7 REQUIRED CONFIG
+  PATH_SUFFIXES lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/nlopt_cxx lib/cmake/nlopt_cxx
+  NO_CMAKE_PACKAGE_REGISTRY NO_CMAKE_SYSTEM_PACKAGE_REGISTRY)
+if(NOT TARGET NLopt::nlopt_cxx)
+  message(FATAL_ERROR "found NLopt at ${NLopt_DIR}, but not its C++ build "
+                      "(install libnlopt-cxx-dev)")
+endif()
+
+# OMPL 1.5: NPC path planning. Its package sets only variables; wrap them in a target whose
+# includes are SYSTEM (OMPL's headers warn by the hundred under our flags). OMPL links Boost
+# serialization, filesystem and system without its package depending on them: find them here so a
+# missing one fails at configure time, not at link time.
+find_package(ompl REQUIRED)
+find_package(Boost 1.71 REQUIRED COMPONENTS serialization filesystem system)
+if(NOT TARGET scenfuzz::ompl)
+  add_library(scenfuzz::ompl INTERFACE IMPORTED)
+  target_include_directories(scenfuzz::ompl SYSTEM INTERFACE ${OMPL_INCLUDE_DIRS})
+  target_link_libraries(
+    scenfuzz::ompl INTERFACE ${OMPL_LIBRARIES} Boost::serialization Boost::filesystem
+                             Boost::system Eigen3::Eigen)
+endif()
+
+# FCL 0.7 and libccd: collision world. libccd's config reports 2.0: do not ask for 2.1.
+find_package(fcl 0.6 REQUIRED)
+find_package(ccd REQUIRED)
+
+# oneTBB: parallel evaluation.
+find_package(TBB REQUIRED)
+
+# Command line and JSON output.
+find_package(CLI11 2.1 REQUIRED CONFIG)
+find_package(nlohmann_json 3.10 REQUIRED)
+
+if(SCENFUZZ_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,69 @@
+// The command line: subcommands, options and help texts (CLI11), and the mapping to exit codes.
+#include "fuzz/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "fuzz/commands.hpp"
+
+namespace scenfuzz {
+
+namespace {
+
+int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{
+      "scenfuzz searches the parameter space of a driving scenario for concrete scenarios in "
+      "which the automated driving system under test violates its specification.",
+      "scenfuzz"};
+  app.set_version_flag("--version", std::string("scenfuzz ") + SCENFUZZ_VERSION);
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("scenfuzz: error: ") + e.what() +
+           "\nRun with --help for more information.\n";
+  });
+  app.footer(
+      "Exit status: 0 success, 1 bad command line, 2 a scenario file cannot be read or has "
+      "errors.");
+
+  std::vector<std::string> check_files;
+  CLI::App* check = app.add_subcommand(
+      "check", "Parse scenario files and report their errors and warnings (nothing when clean)");
+  check->add_option("FILE", check_files, "AVUnit or scenest scenario files")
+      ->required()
+      ->type_name("");
+
+  std::string space_file;
+  bool space_json = false;
+  CLI::App* space = app.add_subcommand(
+      "space", "Print the parameter space of a scenario: one dimension per range in the file");
+  space->add_option("FILE", space_file, "AVUnit or scenest scenario file")
+      ->required()
+      ->type_name("");
+  space->add_flag("--json", space_json, "Print a JSON document instead of a table");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // Help and --version exit 0; every other parse error is a usage error.
+    return app.exit(e, out, err) == 0 ? kExitSuccess : kExitUsage;
+  }
+
+  if (check->parsed()) return run_check(check_files, err);
+  if (space->parsed()) return run_space(space_file, space_json, out, err);
+  return kExitUsage;  // unreachable: a subcommand is required
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  try {
+    return run(argc, argv, out, err);
+  } catch (const std::exception& e) {
+    err << "scenfuzz: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+}
+
+}  // namespace scenfuzz

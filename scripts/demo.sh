@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Build scenfuzz on a fresh Debian 12 machine and show what it does today: check a logical
+# scenario and print its parameter space.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+bash scripts/install-deps.sh
+cmake --preset ci >/dev/null
+cmake --build --preset ci -j2 --target scenfuzz
+
+scenfuzz=build/ci/bin/scenfuzz
+scenario=corpora/avunit/cut_in_multilane.avu
+
+run() {
+  echo
+  echo "\$ scenfuzz $*"
+  "$scenfuzz" "$@"
+}
+
+run --version
+run check "$scenario" && echo "(no output: no errors, no warnings)"
+run space "$scenario"
+run space --json "$scenario"
+
+# The same file with a typo on its first range: check names the place and exits with 2.
+broken=$(mktemp --suffix=.avu)
+trap 'rm -f "$broken"' EXIT
+sed '0,/range(/s//rnage(/' "$scenario" >"$broken"
+status=0
+run check "$broken" || status=$?
+echo "(exit status $status)"
