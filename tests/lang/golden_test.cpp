@@ -10,6 +10,7 @@
 #include "lang/avunit/avunit.hpp"
 #include "lang/number_format.hpp"
 #include "tests/lang/test_files.hpp"
+#include "tests/support/shared_dir.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -36,31 +37,49 @@ std::string golden_text(const ScenarioTemplate& scenario) {
   return text;
 }
 
+// Compares the golden text of `input` with `golden` (or rewrites it when updating).
+void expect_golden(const std::filesystem::path& input, const std::filesystem::path& golden) {
+  SCOPED_TRACE(input.string());
+  SourceFile file = test::load(input);
+  avunit::ParseResult parsed = avunit::parse(file);
+  ASSERT_TRUE(parsed.ok()) << format_diagnostics(file, parsed.diagnostics);
+  EXPECT_TRUE(parsed.diagnostics.all().empty()) << format_diagnostics(file, parsed.diagnostics);
+  std::string actual = golden_text(parsed.scenario);
+  if (std::getenv("SCENFUZZ_UPDATE_GOLDEN") != nullptr) {
+    std::ofstream(golden, std::ios::binary) << actual;
+    return;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden)) << "run with SCENFUZZ_UPDATE_GOLDEN=1";
+  EXPECT_EQ(actual, test::load(golden).text());
+
+  avunit::ParseResult reparsed =
+      avunit::parse(SourceFile(input.string(), avunit::print(parsed.scenario)));
+  ASSERT_TRUE(reparsed.ok());
+  EXPECT_EQ(parsed.scenario, reparsed.scenario);
+}
+
 TEST(Golden, EachGrammarRuleParsesToItsReviewedTemplate) {
   auto inputs = test::files_in(test::lang_data_dir() / "golden", {".avu", ".scenest"});
   ASSERT_GE(inputs.size(), 20u);
-  bool update = std::getenv("SCENFUZZ_UPDATE_GOLDEN") != nullptr;
   for (const auto& input : inputs) {
-    SCOPED_TRACE(input.string());
-    SourceFile file = test::load(input);
-    avunit::ParseResult parsed = avunit::parse(file);
-    ASSERT_TRUE(parsed.ok()) << format_diagnostics(file, parsed.diagnostics);
-    EXPECT_TRUE(parsed.diagnostics.all().empty()) << format_diagnostics(file, parsed.diagnostics);
-    std::string actual = golden_text(parsed.scenario);
     std::filesystem::path golden = input;
     golden.replace_extension(input.extension().string() + ".golden");
-    if (update) {
-      std::ofstream(golden, std::ios::binary) << actual;
-      continue;
-    }
-    ASSERT_TRUE(std::filesystem::exists(golden)) << "run with SCENFUZZ_UPDATE_GOLDEN=1";
-    EXPECT_EQ(actual, test::load(golden).text());
-
-    avunit::ParseResult reparsed =
-        avunit::parse(SourceFile(input.string(), avunit::print(parsed.scenario)));
-    ASSERT_TRUE(reparsed.ok());
-    EXPECT_EQ(parsed.scenario, reparsed.scenario);
+    expect_golden(input, golden);
   }
+}
+
+// The real files written by others for other tools (their goldens live here, the files do not).
+TEST(Golden, EverySharedExampleParsesToItsReviewedTemplate) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();
+  std::vector<std::filesystem::path> inputs;
+  for (const char* language : {"avunit", "scenest"})
+    for (const auto& input :
+         test::files_in(test::shared_dir() / "examples" / language, {".avu", ".scenest"}))
+      inputs.push_back(input);
+  ASSERT_EQ(inputs.size(), 7u);
+  for (const auto& input : inputs)
+    expect_golden(input,
+                  test::lang_data_dir() / "examples" / (input.filename().string() + ".golden"));
 }
 
 }  // namespace
