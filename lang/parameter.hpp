@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lang/source_location.hpp"
@@ -27,5 +28,8 @@ struct Parameter {
 
   bool operator==(const Parameter&) const = default;
 };
+
+// "continuous", "angle" or "discrete", as `scenfuzz space` shows it.
+std::string_view kind_name(ParameterKind kind);
 
 }  // namespace scenfuzz

@@ -16,15 +16,6 @@ ParameterSpace parameter_space(const ScenarioTemplate& scenario) {
   return space;
 }
 
-std::string_view kind_name(ParameterKind kind) {
-  switch (kind) {
-    case ParameterKind::continuous: return "continuous";
-    case ParameterKind::angle: return "angle";
-    case ParameterKind::discrete: return "discrete";
-  }
-  return "continuous";
-}
-
 namespace {
 
 // Number of cells of a discrete dimension.

@@ -34,9 +34,6 @@ struct ParameterSpace {
 // One dimension per template parameter, in the same order (dimension i is parameter i).
 ParameterSpace parameter_space(const ScenarioTemplate& scenario);
 
-// "continuous", "angle" or "discrete".
-std::string_view kind_name(ParameterKind kind);
-
 // A point of the unit cube to parameter values. Continuous and angle dimensions map linearly
 // onto [lower, upper] (0 -> lower, 1 -> upper exactly); a discrete dimension with n choices splits
 // [0,1] into n equal cells and gives the index of the cell, min(floor(u * n), n - 1).

@@ -15,20 +15,11 @@
 namespace scenfuzz {
 namespace {
 
-std::string kind_name(ParameterKind kind) {
-  switch (kind) {
-    case ParameterKind::continuous: return "continuous";
-    case ParameterKind::angle: return "angle";
-    case ParameterKind::discrete: return "discrete";
-  }
-  return "?";
-}
-
 std::string golden_text(const ScenarioTemplate& scenario) {
   std::string text = avunit::print(scenario);
   text += "// parameters:\n";
   for (const Parameter& parameter : scenario.parameters)
-    text += "//   " + parameter.name + " " + kind_name(parameter.kind) + " [" +
+    text += "//   " + parameter.name + " " + std::string(kind_name(parameter.kind)) + " [" +
             format_number(parameter.lower) + ", " + format_number(parameter.upper) + "] " +
             parameter.unit + " at " + std::to_string(parameter.location.line) + ":" +
             std::to_string(parameter.location.column) + "\n";
