@@ -33,6 +33,12 @@ endif()
 find_package(fcl 0.6 REQUIRED)
 find_package(ccd REQUIRED)
 
+# Protobuf 3.21: Apollo HD maps (physics/map/apollo_map.proto, our own subset of Apollo's schema).
+find_package(Protobuf 3.12 REQUIRED)
+if(NOT Protobuf_PROTOC_EXECUTABLE)
+  message(FATAL_ERROR "protoc not found (install protobuf-compiler)")
+endif()
+
 # oneTBB: parallel evaluation.
 find_package(TBB REQUIRED)
 

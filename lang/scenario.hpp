@@ -184,14 +184,15 @@ struct SpeedLimit {
   bool operator==(const SpeedLimit&) const = default;
 };
 
-struct TrafficLight {
+// A scenario's setting of a traffic light: its initial colour and the lanes it controls.
+struct TrafficLightSetting {
   std::string id;
   std::string color;  // initial colour
   std::optional<Position> position;
   std::vector<std::string> controlled_lanes;
   SourceLocation location;
 
-  bool operator==(const TrafficLight&) const = default;
+  bool operator==(const TrafficLightSetting&) const = default;
 };
 
 // Background traffic between two places (WMG SDL traffic model).
@@ -208,7 +209,7 @@ struct TrafficFlow {
 struct Traffic {
   std::vector<IntersectionControl> intersections;
   std::vector<SpeedLimit> speed_limits;
-  std::vector<TrafficLight> lights;
+  std::vector<TrafficLightSetting> lights;
   std::vector<Position> stop_signs;
   std::vector<Position> level_crossings;
   std::vector<TrafficFlow> flows;

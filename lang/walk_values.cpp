@@ -118,7 +118,7 @@ void walk_scenario(ScenarioTemplate& scenario, const Visit& visit) {
     walk(limit.lower, "traffic.speed_limit." + limit.lane + ".lower", "m/s", visit);
     walk(limit.upper, "traffic.speed_limit." + limit.lane + ".upper", "m/s", visit);
   }
-  for (TrafficLight& light : traffic.lights)
+  for (TrafficLightSetting& light : traffic.lights)
     if (light.position) walk_position(*light.position, "traffic." + light.id + ".position", visit);
   for (Position& position : traffic.stop_signs) walk_position(position, "traffic.stop_sign", visit);
   for (Position& position : traffic.level_crossings)

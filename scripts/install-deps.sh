@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libnlopt-cxx-dev libompl-dev libfcl-dev libccd-dev libtbb-dev
   # OMPL links these without its package depending on them
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
+  libprotobuf-dev protobuf-compiler              # Apollo HD maps
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
