@@ -24,8 +24,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
            "\nRun with --help for more information.\n";
   });
   app.footer(
-      "Exit status: 0 success, 1 bad command line, 2 a scenario file cannot be read or has "
-      "errors.");
+      "Exit status: 0 success, 1 bad command line, 2 a scenario or map file cannot be read or "
+      "has errors.");
 
   std::vector<std::string> check_files;
   CLI::App* check = app.add_subcommand(
@@ -43,6 +43,26 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       ->type_name("");
   space->add_flag("--json", space_json, "Print a JSON document instead of a table");
 
+  MapCommandOptions map_options;
+  CLI::App* map = app.add_subcommand(
+      "map",
+      "Summarise a road map (built-in or Apollo HD map), draw it as SVG, or list the "
+      "built-in maps");
+  map->add_option("MAP", map_options.name,
+                  "A built-in map (crossroads, straight?lanes=3&length=400, ...), the name of an "
+                  "Apollo map folder on the map search path (san_francisco), or a map file")
+      ->type_name("");
+  map->add_option("--map-path", map_options.map_paths,
+                  "Folder to look for Apollo maps in (<DIR>/<name>/base_map.bin or .txt); "
+                  "repeatable, searched before SCENFUZZ_MAP_PATH and corpora/maps")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  map->add_option("--svg", map_options.svg_path, "Draw the map into this SVG file")
+      ->type_name("FILE");
+  map->add_flag("--labels", map_options.labels, "With --svg: write every lane's id on the lane");
+  map->add_flag("--json", map_options.json, "Print JSON (counts, bounds, every lane) instead");
+  map->add_flag("--list", map_options.list, "List the built-in maps and their parameters");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -52,6 +72,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
 
   if (check->parsed()) return run_check(check_files, err);
   if (space->parsed()) return run_space(space_file, space_json, out, err);
+  if (map->parsed()) return run_map(map_options, out, err);
   return kExitUsage;  // unreachable: a subcommand is required
 }
 

@@ -8,7 +8,7 @@ namespace scenfuzz {
 // Exit codes of every subcommand.
 inline constexpr int kExitSuccess = 0;
 inline constexpr int kExitUsage = 1;     // bad command line
-inline constexpr int kExitBadInput = 2;  // a scenario file cannot be read or has errors
+inline constexpr int kExitBadInput = 2;  // a scenario or map file cannot be read or has errors
 inline constexpr int kExitInternal = 3;  // a bug: an unexpected exception
 
 // Runs `scenfuzz` with the given arguments; output goes to `out`, messages to `err`.

@@ -18,6 +18,19 @@ int run_check(const std::vector<std::string>& paths, std::ostream& err);
 // or as JSON. Diagnostics go to `err`; a file with errors gives kExitBadInput and no space.
 int run_space(const std::string& path, bool json, std::ostream& out, std::ostream& err);
 
+struct MapCommandOptions {
+  std::string name;                    // built-in map (with ?parameters), Apollo map name or file
+  std::vector<std::string> map_paths;  // --map-path, in order
+  std::string svg_path;                // --svg: draw the map there
+  bool labels = false;                 // --labels: lane ids in the drawing
+  bool json = false;                   // --json: the summary and every lane as JSON
+  bool list = false;                   // --list: the built-in maps and their parameters
+};
+
+// `scenfuzz map NAME|FILE`: loads a map and prints a summary (or JSON) to `out`; draws it with
+// --svg. A map that cannot be found or read gives kExitBadInput with the reason on `err`.
+int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& err);
+
 // Reads a scenario file, or prints `scenfuzz: error: cannot read 'path': <reason>` to `err`.
 std::optional<SourceFile> read_input(const std::string& path, std::ostream& err);
 

@@ -15,8 +15,8 @@ namespace {
 // rounded to the millimetre.
 constexpr double kLaneEndTolerance = 1e-3;
 
-// Lanes further than this from a point cannot contain it (no real lane is 40 m wide).
-constexpr double kMaximumLaneHalfWidth = 20;
+// Lanes further than this from a point cannot contain it (no lane is wider than 20 m).
+constexpr double kMaximumLaneHalfWidth = 10;
 
 LaneProjection make_projection(const RoadMap& map, LaneIndex lane,
                                const PolylineProjection& on_centre_line) {
@@ -47,6 +47,16 @@ std::optional<MapPose> lane_pose_at(const RoadMap& map, LaneIndex lane, double s
                  heading};
 }
 
+std::optional<ClampedLanePose> clamped_lane_pose(const RoadMap& map, LaneIndex lane, double s,
+                                                 double lateral) {
+  if (!std::isfinite(s)) return std::nullopt;
+  double length = map.lane(lane).length();
+  double clamped = std::clamp(s, 0.0, length);
+  auto pose = lane_pose_at(map, lane, clamped, lateral);
+  if (!pose) return std::nullopt;
+  return ClampedLanePose{*pose, std::abs(s - clamped)};
+}
+
 double lane_heading_at(const RoadMap& map, LaneIndex lane, double s) {
   return map.lane(lane).centre_line.heading_at(s);
 }
@@ -70,29 +80,31 @@ std::optional<LaneProjection> project_to_lane(const RoadMap& map, MapPoint point
 
 std::optional<LaneProjection> project_to_lane(const RoadMap& map, MapPoint point, double heading) {
   if (!std::isfinite(heading)) return project_to_lane(map, point);
-  if (!std::isfinite(point.x) || !std::isfinite(point.y)) return std::nullopt;
-  std::optional<LaneProjection> nearest;
+  std::optional<LaneProjection> nearest = project_to_lane(map, point);
+  if (!nearest) return std::nullopt;
+  // Every lane that could contain the point has a centre-line segment within this radius.
+  double radius = std::min(nearest->distance + kMaximumLaneHalfWidth, 2 * kMaximumLaneHalfWidth);
   std::optional<LaneProjection> best_inside;
   double best_heading_difference = std::numeric_limits<double>::infinity();
-  map.segment_index().visit_nearest(point, [&](const LaneSegmentReference& segment) {
+  for (const LaneSegmentReference& segment : map.segment_index().segments_in_box(
+           {point.x - radius, point.y - radius}, {point.x + radius, point.y + radius})) {
     const Polyline& centre_line = map.lane(segment.lane).centre_line;
-    PolylineProjection on_line = centre_line.project_to_segment(point, segment.segment);
-    if (nearest && on_line.distance > std::max(nearest->distance, kMaximumLaneHalfWidth))
-      return false;
-    LaneProjection candidate = make_projection(map, segment.lane, on_line);
-    if (!nearest) nearest = candidate;
-    if (candidate.inside) {
-      double difference = std::abs(angle_difference(heading, centre_line.heading_at(candidate.s)));
-      // Ties (the same lane met again at a vertex) keep the nearer projection.
-      if (difference < best_heading_difference - 1e-9 ||
-          (difference <= best_heading_difference + 1e-9 && best_inside &&
-           candidate.distance < best_inside->distance)) {
-        best_heading_difference = difference;
-        best_inside = candidate;
-      }
+    LaneProjection candidate =
+        make_projection(map, segment.lane, centre_line.project_to_segment(point, segment.segment));
+    if (!candidate.inside) continue;
+    double difference = std::abs(angle_difference(heading, centre_line.heading_at(candidate.s)));
+    // Equal headings (the same lane met at a vertex, parallel lanes) keep the nearer projection;
+    // exact ties go to the lower lane index, so the answer never depends on the index's order.
+    bool better =
+        !best_inside || difference < best_heading_difference - 1e-9 ||
+        (difference <= best_heading_difference + 1e-9 &&
+         (candidate.distance < best_inside->distance ||
+          (candidate.distance == best_inside->distance && candidate.lane < best_inside->lane)));
+    if (better) {
+      best_heading_difference = std::min(best_heading_difference, difference);
+      best_inside = candidate;
     }
-    return true;
-  });
+  }
   return best_inside ? best_inside : nearest;
 }
 

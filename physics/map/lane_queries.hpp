@@ -28,6 +28,17 @@ struct LaneProjection {
 // the lane. Returns nullopt when s is outside [0, length] (beyond a tolerance of 1 mm).
 std::optional<MapPose> lane_pose_at(const RoadMap& map, LaneIndex lane, double s,
                                     double lateral = 0);
+// A scenario's `"lane" -> s`: Apollo clamps s to [0, length] (LaneInfo::GetSmoothPoint), and the
+// AVUnit and scenest files written for it rely on that (shared examples put targets a few metres
+// past a lane's end), so this clamps too. `overshoot` is how far s lay outside the lane (0 when
+// inside), for a warning. nullopt only for a non-finite s or lateral.
+struct ClampedLanePose {
+  MapPose pose;
+  double overshoot = 0;
+};
+std::optional<ClampedLanePose> clamped_lane_pose(const RoadMap& map, LaneIndex lane, double s,
+                                                 double lateral = 0);
+
 double lane_heading_at(const RoadMap& map, LaneIndex lane, double s);
 // Distance from the centre line to the left and right boundary at s (linear between samples).
 double lane_left_width_at(const RoadMap& map, LaneIndex lane, double s);

@@ -1,11 +1,11 @@
 // A* over the lane graph, and the road furniture ahead on a route.
 //
 // The search state is a lane entered at some s. Following a successor enters the next lane at
-// s = 0; a lane change enters a forward neighbour beside the entry point (the route changes lane
-// where it entered, which fixes the sequence of lanes; where exactly to change is the driver's
-// choice). Costs are metres: the distance driven plus a fixed cost per lane change. The heuristic,
-// the straight-line distance to the target, never overestimates, so the first goal taken is the
-// cheapest route.
+// s = 0 (or where it joins a ring part-way); a lane change enters a forward neighbour beside the
+// entry point (the route changes lane where it entered, which fixes the sequence of lanes; where
+// exactly to change is the driver's choice). Costs are metres: the distance driven plus a fixed
+// cost per lane change. The heuristic, the straight-line distance to the target, never
+// overestimates, so the first goal taken is the cheapest route.
 #include "physics/map/lane_route.hpp"
 
 #include <algorithm>
@@ -17,6 +17,9 @@ namespace scenfuzz {
 
 namespace {
 
+// Lane ends closer than this are joined end to start (Apollo's joints are within millimetres).
+constexpr double kJointTolerance = 0.5;
+
 enum class Entry { start, successor, lane_change, goal };
 
 struct SearchState {
@@ -25,6 +28,7 @@ struct SearchState {
   double cost = 0;  // from the start to the entry point
   Entry entry = Entry::start;
   std::size_t parent = 0;
+  double parent_exit_s = 0;  // where the route left the parent's lane
 };
 
 struct Queued {
@@ -37,8 +41,55 @@ struct Queued {
   }
 };
 
-LaneRoute reconstruct(const std::vector<SearchState>& states, std::size_t goal, double goal_s,
-                      const RoadMap& map) {
+// Where a successor link leaves `from` and enters `to`. Usually from's end and to's start, but a
+// closed ring (roundabout) is one lane whose entries and exits join it part-way along.
+struct LinkPoints {
+  double exit_s = 0;
+  double entry_s = 0;
+};
+
+LinkPoints link_points(const RoadMap& map, LaneIndex from, LaneIndex to) {
+  const Polyline& from_line = map.lane(from).centre_line;
+  const Polyline& to_line = map.lane(to).centre_line;
+  const MapPoint from_end = from_line.points().back();
+  const MapPoint to_start = to_line.points().front();
+  LinkPoints link{from_line.length(), 0};
+  if (distance(from_end, to_start) <= kJointTolerance) return link;
+  PolylineProjection exit = from_line.project(to_start);
+  if (exit.distance <= kJointTolerance) {
+    link.exit_s = exit.s;  // `to` branches off part-way along `from`
+    return link;
+  }
+  PolylineProjection entry = to_line.project(from_end);
+  if (entry.distance <= kJointTolerance) link.entry_s = entry.s;  // `from` joins `to` part-way
+  return link;
+}
+
+// An entry already expanded on a lane.
+struct Expanded {
+  double entry_s;
+  double cost;
+};
+
+// Whether expanding `state` can find nothing the expanded entries of its lane have not. An entry
+// that entered no later and reaches this entry point no more expensively did all this one could.
+// A lane change lands beside where it left, at an s of its own; were such entries compared
+// exactly, changing back and forth would creep along a road, each time at a new s, and the search
+// would grow without useful bound. So a lane-change entry must also reach the lane's end more
+// cheaply than every earlier entry (its goal, if on this lane, has already been pushed).
+bool dominated(const std::vector<Expanded>& expanded, const SearchState& state) {
+  for (const Expanded& earlier : expanded) {
+    if (earlier.entry_s <= state.entry_s &&
+        earlier.cost + (state.entry_s - earlier.entry_s) <= state.cost)
+      return true;
+    if (state.entry == Entry::lane_change &&
+        earlier.cost - earlier.entry_s <= state.cost - state.entry_s)
+      return true;
+  }
+  return false;
+}
+
+LaneRoute reconstruct(const std::vector<SearchState>& states, std::size_t goal) {
   std::vector<std::size_t> chain;
   for (std::size_t state = goal;; state = states[state].parent) {
     chain.push_back(state);
@@ -50,11 +101,8 @@ LaneRoute reconstruct(const std::vector<SearchState>& states, std::size_t goal, 
   for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
     const SearchState& state = states[chain[i]];
     const SearchState& next = states[chain[i + 1]];
-    double s_end = next.entry == Entry::successor     ? map.lane(state.lane).length()
-                   : next.entry == Entry::lane_change ? state.entry_s
-                                                      : goal_s;
-    route.segments.push_back({state.lane, state.entry_s, s_end});
-    route.length += s_end - state.entry_s;
+    route.segments.push_back({state.lane, state.entry_s, next.parent_exit_s});
+    route.length += next.parent_exit_s - state.entry_s;
     if (next.entry == Entry::lane_change) ++route.lane_changes;
   }
   return route;
@@ -67,12 +115,6 @@ std::optional<LaneRoute> find_route(const RoadMap& map, LanePosition from, LaneP
   if (from.lane >= map.lanes().size() || to.lane >= map.lanes().size()) return std::nullopt;
   from.s = std::clamp(from.s, 0.0, map.lane(from.lane).length());
   to.s = std::clamp(to.s, 0.0, map.lane(to.lane).length());
-  if (from.lane == to.lane && to.s >= from.s) {
-    LaneRoute route;
-    route.segments.push_back({from.lane, from.s, to.s});
-    route.length = to.s - from.s;
-    return route;
-  }
 
   const MapPoint target = map.lane(to.lane).centre_line.point_at(to.s);
   auto heuristic = [&](LaneIndex lane, double s) {
@@ -84,29 +126,30 @@ std::optional<LaneRoute> find_route(const RoadMap& map, LanePosition from, LaneP
     states.push_back(state);
     open.push({priority, states.size() - 1});
   };
-  // The cheapest cost yet of reaching each lane's end: a later entry that cannot beat it is
-  // dominated (except for reaching the target, which is checked before pruning).
-  std::vector<double> best_end_cost(map.lanes().size(), std::numeric_limits<double>::infinity());
+  std::vector<std::vector<Expanded>> expanded(map.lanes().size());
 
-  push({from.lane, from.s, 0, Entry::start, 0}, heuristic(from.lane, from.s));
+  push({from.lane, from.s, 0, Entry::start, 0, 0}, heuristic(from.lane, from.s));
   while (!open.empty()) {
     Queued top = open.top();
     open.pop();
     const SearchState state = states[top.state];
-    if (state.entry == Entry::goal) return reconstruct(states, top.state, to.s, map);
+    if (state.entry == Entry::goal) return reconstruct(states, top.state);
 
     const Lane& lane = map.lane(state.lane);
     if (state.lane == to.lane && to.s >= state.entry_s) {
       double cost = state.cost + (to.s - state.entry_s);
-      push({state.lane, to.s, cost, Entry::goal, top.state}, cost);
+      push({state.lane, to.s, cost, Entry::goal, top.state, to.s}, cost);
     }
-    double end_cost = state.cost + (lane.length() - state.entry_s);
-    if (end_cost >= best_end_cost[state.lane]) continue;
-    best_end_cost[state.lane] = end_cost;
+    if (dominated(expanded[state.lane], state)) continue;
+    expanded[state.lane].push_back({state.entry_s, state.cost});
 
-    for (LaneIndex successor : lane.successors)
-      push({successor, 0, end_cost, Entry::successor, top.state},
-           end_cost + heuristic(successor, 0));
+    for (LaneIndex successor : lane.successors) {
+      LinkPoints link = link_points(map, state.lane, successor);
+      if (link.exit_s < state.entry_s) continue;  // the branch is behind us on this lane
+      double cost = state.cost + (link.exit_s - state.entry_s);
+      push({successor, link.entry_s, cost, Entry::successor, top.state, link.exit_s},
+           cost + heuristic(successor, link.entry_s));
+    }
     if (!options.allow_lane_changes) continue;
     MapPoint here = lane.centre_line.point_at(state.entry_s);
     for (const auto* neighbours : {&lane.left_forward_neighbours, &lane.right_forward_neighbours}) {
@@ -114,7 +157,7 @@ std::optional<LaneRoute> find_route(const RoadMap& map, LanePosition from, LaneP
         if (!lane_change_allowed(map, state.lane, neighbour)) continue;
         PolylineProjection beside = map.lane(neighbour).centre_line.project(here);
         double cost = state.cost + beside.distance + options.lane_change_cost;
-        push({neighbour, beside.s, cost, Entry::lane_change, top.state},
+        push({neighbour, beside.s, cost, Entry::lane_change, top.state, state.entry_s},
              cost + heuristic(neighbour, beside.s));
       }
     }

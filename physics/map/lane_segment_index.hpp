@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -26,12 +25,8 @@ class LaneSegmentIndex {
   LaneSegmentIndex(const LaneSegmentIndex&) = delete;
   LaneSegmentIndex& operator=(const LaneSegmentIndex&) = delete;
 
-  // The segment nearest to `point`; nullopt-like false when the index is empty.
+  // The segment nearest to `point`; false when the index is empty.
   bool nearest(MapPoint point, LaneSegmentReference& result) const;
-  // Calls `visit` with segments in order of increasing distance from `point` until it returns
-  // false or every segment has been seen.
-  void visit_nearest(MapPoint point,
-                     const std::function<bool(const LaneSegmentReference&)>& visit) const;
   // Segments whose bounding boxes meet the box [min, max].
   std::vector<LaneSegmentReference> segments_in_box(MapPoint min, MapPoint max) const;
 

@@ -63,8 +63,9 @@ BuiltinMapRequest parse_builtin_map_request(std::string_view text) {
   std::size_t question = text.find('?');
   request.name = std::string(text.substr(0, question));
   if (question == std::string_view::npos) return request;
+  // Every '&'-separated piece must be name=value: "a=1&" and "a=1&&b=2" have an empty one.
   std::string_view rest = text.substr(question + 1);
-  while (!rest.empty()) {
+  for (;;) {
     std::size_t ampersand = rest.find('&');
     std::string_view pair = rest.substr(0, ampersand);
     std::size_t equals = pair.find('=');
@@ -83,23 +84,26 @@ BuiltinMapRequest parse_builtin_map_request(std::string_view text) {
 fs::path resolve_map_file(std::string_view name, const MapSearchPath& search_path) {
   std::error_code error;
   if (name.empty()) throw MapError("map name is empty");
-  if (looks_like_path(name) || fs::exists(fs::path(name), error)) {
-    fs::path path(name);
+  auto as_path = [&](const fs::path& path) {
     if (fs::is_directory(path, error)) {
       if (auto file = map_file_in(path)) return *file;
-      throw MapError(std::string(name) + ": error: the folder has no base_map.bin or base_map.txt");
+      throw MapError(path.string() + ": error: the folder has no base_map.bin or base_map.txt");
     }
-    if (!fs::exists(path, error)) throw MapError(std::string(name) + ": error: no such file");
+    if (!fs::exists(path, error)) throw MapError(path.string() + ": error: no such file");
     return path;
-  }
+  };
+  if (looks_like_path(name)) return as_path(fs::path(name));
   for (const fs::path& directory : search_path.directories)
     if (auto file = map_file_in(directory / std::string(name))) return *file;
+  // A bare name that is no map on the search path may still be a file here.
+  if (fs::exists(fs::path(name), error)) return as_path(fs::path(name));
   std::string message = "map '" + std::string(name) + "' not found: it is not a built-in map (";
   for (std::size_t i = 0; i < builtin_maps().size(); ++i)
     message += (i ? ", " : "") + builtin_maps()[i].name;
   message += ") and no folder of the map search path has " + std::string(name) +
              "/base_map.bin or base_map.txt; searched:";
-  for (const fs::path& directory : search_path.directories) message += " " + directory.string();
+  for (const fs::path& directory : search_path.directories)
+    message += " '" + directory.string() + "'";
   message += " (add folders with --map-path DIR or SCENFUZZ_MAP_PATH)";
   throw MapError(message);
 }
@@ -113,8 +117,14 @@ MapDescription describe_map(std::string_view name, const MapSearchPath& search_p
                               extra_parameters.end());
     return generate_builtin_map(request.name, request.parameters);
   }
-  if (name.find('?') != std::string_view::npos)
-    throw MapError("map '" + std::string(name) + "': only built-in maps take parameters");
+  if (name.find('?') != std::string_view::npos) {
+    std::string message = "map '" + std::string(name) +
+                          "': only built-in maps take parameters, and '" + std::string(base) +
+                          "' is not one (the built-in maps are ";
+    for (std::size_t i = 0; i < builtin_maps().size(); ++i)
+      message += (i ? ", " : "") + builtin_maps()[i].name;
+    throw MapError(message + ")");
+  }
   if (!extra_parameters.empty())
     throw MapError("map '" + std::string(name) + "': map parameters (" + extra_parameters[0].name +
                    ", ...) apply only to built-in maps");

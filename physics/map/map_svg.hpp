@@ -10,7 +10,7 @@
 namespace scenfuzz {
 
 struct SvgOptions {
-  bool labels = false;      // write each lane's id at its middle
+  bool labels = false;          // write each lane's id at its middle
   double pixels_per_metre = 0;  // 0: fit the map into about 2000 pixels
 };
 

@@ -17,13 +17,15 @@ struct GeoPoint {
 
 // A transverse Mercator projection on the WGS84 ellipsoid.
 struct TransverseMercator {
-  double central_meridian = 0;  // degrees
+  double central_meridian = 0;    // degrees
   double latitude_of_origin = 0;  // degrees
   double scale_factor = 0.9996;
   double false_easting = 500000;
   double false_northing = 0;
 };
 
+// Throws std::invalid_argument for a zone outside 1..60 (a programming error: parse_projection
+// checks user input).
 TransverseMercator utm_zone(int zone, bool south);
 // Parses "+proj=utm +zone=10 [+south] ..." and "+proj=tmerc +lat_0=.. +lon_0=.. +k=.. +x_0=..
 // +y_0=.."; nullopt for anything else (the caller reports it).

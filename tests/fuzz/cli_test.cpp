@@ -1,13 +1,16 @@
 // End-to-end tests of the scenfuzz executable: exit codes and output of its subcommands, run as a
-// user would run them, on scenario files written to a temporary folder.
+// user would run them, on scenario and map files written to a temporary folder (and the shared
+// sample maps, when they are there).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -266,6 +269,319 @@ TEST_F(CliTest, CheckNeverCrashesOnTheSharedExamples) {
     const Outcome run = scenfuzz({"check", file});
     EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 2) << file << "\n" << run.err;
   }
+}
+
+// ---- scenfuzz map ----
+
+const std::vector<std::string> kBuiltinMaps = {"straight",   "curve",      "t_junction",
+                                               "crossroads", "roundabout", "merge"};
+
+// The value of one line of the map summary ("lanes       32 (...)" -> "32 (...)"), or
+// std::nullopt when the summary has no such line.
+std::optional<std::string> summary_field(const std::string& summary, const std::string& key) {
+  std::istringstream lines(summary);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with(key + " ")) continue;
+    return line.substr(line.find_first_not_of(' ', key.size()));
+  }
+  return std::nullopt;
+}
+
+// The smallest Apollo text map scenfuzz reads: one 10 m lane whose id says which file was read.
+std::string one_lane_map(const std::string& lane_id) {
+  return "lane {\n  id { id: \"" + lane_id +
+         "\" }\n"
+         "  central_curve { segment { line_segment {\n"
+         "    point { x: 0 y: 0 } point { x: 10 y: 0 } } } }\n"
+         "}\n";
+}
+
+// A syntax error on line 5.
+constexpr const char* kBrokenMap =
+    "header {\n"
+    "  projection { proj: \"x\" }\n"
+    "}\n"
+    "lane {\n"
+    "  speed_limit: fast\n"
+    "}\n";
+
+// Sets an environment variable for the scenfuzz runs of one test, and puts the old value back.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_value_ = old;
+    ::setenv(name_, value.c_str(), 1);
+  }
+  ~ScopedEnvironment() {
+    if (old_value_)
+      ::setenv(name_, old_value_->c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_value_;
+};
+
+bool has_leftover_temporary_file(const fs::path& dir) {
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir))
+    if (entry.path().filename().string().find(".tmp.") != std::string::npos) return true;
+  return false;
+}
+
+class CliMapTest : public CliTest {
+ protected:
+  std::string write_map(const std::string& folder, const std::string& text) {
+    fs::create_directories(dir_ / folder);
+    return write(folder + "/base_map.txt", text);
+  }
+};
+
+TEST_F(CliMapTest, ListShowsEveryBuiltinMapWithItsParameters) {
+  const Outcome run = scenfuzz({"map", "--list"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  // A map per unindented line, its parameters indented below it.
+  std::vector<std::string> maps;
+  std::vector<int> parameter_counts;
+  std::istringstream lines(run.out);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with("  ")) {
+      maps.push_back(line.substr(0, line.find(':')));
+      parameter_counts.push_back(0);
+    } else {
+      ASSERT_FALSE(maps.empty()) << "a parameter before any map: " << line;
+      ++parameter_counts.back();
+    }
+  }
+  EXPECT_EQ(maps, kBuiltinMaps);
+  for (std::size_t i = 0; i < maps.size() && i < parameter_counts.size(); ++i)
+    EXPECT_GT(parameter_counts[i], 0) << maps[i] << " lists no parameters";
+  // Name, default, range, unit and what it does.
+  EXPECT_NE(run.out.find("  lanes = 2 [1, 6]  lanes in each direction\n"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("  length = 500 [10, 10000] m  length of the road\n"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("  ring_radius = 20 [20, 60] m "), std::string::npos) << run.out;
+}
+
+TEST_F(CliMapTest, SummaryOfABuiltinMap) {
+  const Outcome run = scenfuzz({"map", "crossroads"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  EXPECT_EQ(summary_field(run.out, "map"), "crossroads");
+  EXPECT_EQ(summary_field(run.out, "source"), "built-in");
+  // 16 arm lanes (4 arms, 2 lanes each way) and 16 junction connectors.
+  const std::string lanes = summary_field(run.out, "lanes").value_or("");
+  EXPECT_TRUE(lanes.starts_with("32 (")) << run.out;
+  EXPECT_NE(lanes.find("16 in junctions"), std::string::npos) << run.out;
+  EXPECT_EQ(summary_field(run.out, "junctions"), "1");
+  EXPECT_EQ(summary_field(run.out, "signals"), "4");
+  EXPECT_EQ(summary_field(run.out, "stop signs"), "0");
+  EXPECT_EQ(summary_field(run.out, "yield signs"), "0");
+  EXPECT_EQ(summary_field(run.out, "crosswalks"), "4");
+  EXPECT_TRUE(summary_field(run.out, "bounds").has_value()) << run.out;
+
+  const Outcome one_lane = scenfuzz({"map", "crossroads?lanes=1&crosswalks=0"});
+  ASSERT_EQ(one_lane.exit_code, 0) << one_lane.err;
+  EXPECT_TRUE(summary_field(one_lane.out, "lanes").value_or("").starts_with("20 ("))
+      << one_lane.out;
+  EXPECT_EQ(summary_field(one_lane.out, "crosswalks"), "0");
+}
+
+TEST_F(CliMapTest, SummaryOfAnApolloMap) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();
+  const std::string apollo = (scenfuzz::test::shared_dir() / "maps" / "apollo").string();
+  // --map-path before the name as well as after it.
+  for (const std::vector<std::string>& args :
+       std::vector<std::vector<std::string>>{{"map", "san_francisco", "--map-path", apollo},
+                                             {"map", "--map-path", apollo, "san_francisco"}}) {
+    const Outcome run = scenfuzz(args);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(summary_field(run.out, "map"), "san_francisco");
+    EXPECT_EQ(summary_field(run.out, "source"), apollo + "/san_francisco/base_map.bin");
+    EXPECT_TRUE(summary_field(run.out, "projection").value_or("").starts_with("+proj=utm"))
+        << run.out;
+    EXPECT_TRUE(summary_field(run.out, "lanes").value_or("").starts_with("1524 (")) << run.out;
+    EXPECT_EQ(summary_field(run.out, "junctions"), "91");
+    EXPECT_EQ(summary_field(run.out, "signals"), "201");
+    EXPECT_EQ(summary_field(run.out, "stop signs"), "9");
+    EXPECT_EQ(summary_field(run.out, "crosswalks"), "43");
+  }
+}
+
+TEST_F(CliMapTest, JsonOfAnApolloMap) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();
+  const std::string apollo = (scenfuzz::test::shared_dir() / "maps" / "apollo").string();
+  const Outcome run = scenfuzz({"map", "san_francisco", "--map-path", apollo, "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json document = nlohmann::json::parse(run.out);
+  EXPECT_EQ(document.at("name"), "san_francisco");
+  const nlohmann::json& counts = document.at("counts");
+  EXPECT_EQ(counts.at("lanes"), 1524);
+  EXPECT_EQ(counts.at("junctions"), 91);
+  EXPECT_EQ(counts.at("signals"), 201);
+  EXPECT_EQ(counts.at("stop_signs"), 9);
+  EXPECT_EQ(counts.at("crosswalks"), 43);
+  const nlohmann::json& lanes = document.at("lanes");
+  ASSERT_TRUE(lanes.is_array());
+  EXPECT_EQ(lanes.size(), 1524u);
+  const auto lane_540 = std::find_if(lanes.begin(), lanes.end(), [](const nlohmann::json& lane) {
+    return lane.at("id") == "lane_540";
+  });
+  ASSERT_NE(lane_540, lanes.end());
+  EXPECT_GT(lane_540->at("length").get<double>(), 0);
+  EXPECT_TRUE(lane_540->at("successors").is_array());
+}
+
+TEST_F(CliMapTest, JsonOfABuiltinMap) {
+  const Outcome run = scenfuzz({"map", "--json", "crossroads"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json document = nlohmann::json::parse(run.out);
+  EXPECT_EQ(document.at("counts"), nlohmann::json({{"lanes", 32},
+                                                   {"junctions", 1},
+                                                   {"signals", 4},
+                                                   {"stop_signs", 0},
+                                                   {"yield_signs", 0},
+                                                   {"crosswalks", 4}}));
+  const nlohmann::json& lanes = document.at("lanes");
+  ASSERT_EQ(lanes.size(), 32u);
+  const auto in_junction =
+      std::count_if(lanes.begin(), lanes.end(),
+                    [](const nlohmann::json& lane) { return !lane.at("junction").is_null(); });
+  EXPECT_EQ(in_junction, 16);
+  EXPECT_NE(std::find_if(lanes.begin(), lanes.end(),
+                         [](const nlohmann::json& lane) { return lane.at("id") == "north_in_0"; }),
+            lanes.end());
+}
+
+TEST_F(CliMapTest, SvgDrawing) {
+  const fs::path plain = dir_ / "plain.svg", labelled = dir_ / "labelled.svg";
+  const Outcome run = scenfuzz({"map", "crossroads", "--svg", plain.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(summary_field(run.out, "map"), "crossroads") << "the summary is printed as well";
+  const std::string svg = slurp(plain);
+  EXPECT_TRUE(svg.starts_with("<?xml") || svg.starts_with("<svg")) << svg.substr(0, 100);
+  EXPECT_TRUE(svg.ends_with("</svg>\n"));
+  EXPECT_EQ(svg.find("north_in_0"), std::string::npos) << "lane ids only with --labels";
+
+  const Outcome with_labels =
+      scenfuzz({"map", "crossroads", "--svg", labelled.string(), "--labels"});
+  ASSERT_EQ(with_labels.exit_code, 0) << with_labels.err;
+  const std::string labelled_svg = slurp(labelled);
+  EXPECT_TRUE(labelled_svg.ends_with("</svg>\n"));
+  EXPECT_NE(labelled_svg.find(">north_in_0<"), std::string::npos);
+  EXPECT_FALSE(has_leftover_temporary_file(dir_));
+}
+
+TEST_F(CliMapTest, SvgThatCannotBeWritten) {
+  const fs::path missing_folder = dir_ / "missing";
+  const std::string into_missing = (missing_folder / "out.svg").string();
+  const Outcome run = scenfuzz({"map", "crossroads", "--svg", into_missing});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.out, "");
+  EXPECT_NE(run.err.find("cannot write '" + into_missing + "'"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(missing_folder));
+
+  // A folder where the drawing should go: the temporary file written beside it is removed.
+  const fs::path folder = dir_ / "drawing.svg";
+  fs::create_directories(folder);
+  const Outcome onto_folder = scenfuzz({"map", "crossroads", "--svg", folder.string()});
+  EXPECT_EQ(onto_folder.exit_code, 2);
+  EXPECT_NE(onto_folder.err.find(folder.string()), std::string::npos) << onto_folder.err;
+  EXPECT_TRUE(fs::is_empty(folder));
+  EXPECT_FALSE(has_leftover_temporary_file(dir_));
+}
+
+TEST_F(CliMapTest, UnknownMapName) {
+  const Outcome run = scenfuzz({"map", "atlantis", "--map-path", dir_.string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.out, "");
+  EXPECT_NE(run.err.find("'atlantis' not found"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(dir_.string()), std::string::npos) << "the searched folders";
+  EXPECT_NE(run.err.find("crossroads"), std::string::npos) << "the built-in maps";
+
+  // --svg draws nothing for a map that is not there.
+  const Outcome with_svg = scenfuzz({"map", "atlantis", "--svg", (dir_ / "a.svg").string()});
+  EXPECT_EQ(with_svg.exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "a.svg"));
+}
+
+TEST_F(CliMapTest, BadParametersExitWithTwo) {
+  const Outcome out_of_range = scenfuzz({"map", "straight?lanes=9"});
+  EXPECT_EQ(out_of_range.exit_code, 2);
+  EXPECT_NE(out_of_range.err.find("parameter 'lanes'"), std::string::npos) << out_of_range.err;
+
+  const Outcome not_a_number = scenfuzz({"map", "straight?lanes=abc"});
+  EXPECT_EQ(not_a_number.exit_code, 2);
+  EXPECT_NE(not_a_number.err.find("'abc'"), std::string::npos) << not_a_number.err;
+
+  write_map("town", one_lane_map("lane_1"));
+  const Outcome apollo = scenfuzz({"map", "town?lanes=2", "--map-path", dir_.string()});
+  EXPECT_EQ(apollo.exit_code, 2);
+  EXPECT_NE(apollo.err.find("only built-in maps take parameters"), std::string::npos) << apollo.err;
+}
+
+TEST_F(CliMapTest, MalformedMapFileNamesFileAndLine) {
+  const std::string file = write_map("broken", kBrokenMap);
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"map", file}, {"map", "broken", "--map-path", dir_.string()}}) {
+    const Outcome run = scenfuzz(args);
+    EXPECT_EQ(run.exit_code, 2) << ::testing::PrintToString(args);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find(file + ":5:"), std::string::npos) << run.err;
+  }
+}
+
+TEST_F(CliMapTest, MapPathOrderAndEnvironment) {
+  write_map("first/town", one_lane_map("lane_first"));
+  write_map("second/town", one_lane_map("lane_second"));
+  write_map("second/hamlet", one_lane_map("lane_hamlet"));
+  const std::string first = (dir_ / "first").string(), second = (dir_ / "second").string();
+
+  const Outcome first_wins =
+      scenfuzz({"map", "town", "--map-path", first, "--map-path", second, "--json"});
+  ASSERT_EQ(first_wins.exit_code, 0) << first_wins.err;
+  EXPECT_EQ(nlohmann::json::parse(first_wins.out).at("lanes").at(0).at("id"), "lane_first");
+  const Outcome second_wins =
+      scenfuzz({"map", "town", "--map-path", second, "--map-path", first, "--json"});
+  ASSERT_EQ(second_wins.exit_code, 0) << second_wins.err;
+  EXPECT_EQ(nlohmann::json::parse(second_wins.out).at("lanes").at(0).at("id"), "lane_second");
+
+  const ScopedEnvironment environment("SCENFUZZ_MAP_PATH",
+                                      (dir_ / "nowhere").string() + ":" + second);
+  const Outcome from_environment = scenfuzz({"map", "hamlet", "--json"});
+  ASSERT_EQ(from_environment.exit_code, 0) << from_environment.err;
+  EXPECT_EQ(nlohmann::json::parse(from_environment.out).at("lanes").at(0).at("id"), "lane_hamlet");
+  // --map-path comes before SCENFUZZ_MAP_PATH.
+  const Outcome command_line_first = scenfuzz({"map", "town", "--map-path", first, "--json"});
+  ASSERT_EQ(command_line_first.exit_code, 0) << command_line_first.err;
+  EXPECT_EQ(nlohmann::json::parse(command_line_first.out).at("lanes").at(0).at("id"), "lane_first");
+}
+
+TEST_F(CliMapTest, MissingNameOrBadOptionsExitWithOne) {
+  for (const std::vector<std::string>& args :
+       std::vector<std::vector<std::string>>{{"map"},
+                                             {"map", "--svg"},
+                                             {"map", "--map-path"},
+                                             {"map", "--bogus", "crossroads"},
+                                             {"map", "crossroads", "straight"}}) {
+    const Outcome run = scenfuzz(args);
+    EXPECT_EQ(run.exit_code, 1) << "args: " << ::testing::PrintToString(args);
+    EXPECT_NE(run.err.find("scenfuzz: error:"), std::string::npos) << run.err;
+  }
+}
+
+TEST_F(CliMapTest, Help) {
+  const Outcome top = scenfuzz({"--help"});
+  EXPECT_NE(top.out.find("map"), std::string::npos) << top.out;
+  const Outcome run = scenfuzz({"map", "--help"});
+  EXPECT_EQ(run.exit_code, 0);
+  for (const char* option : {"--map-path", "--svg", "--labels", "--json", "--list"})
+    EXPECT_NE(run.out.find(option), std::string::npos) << option << "\n" << run.out;
 }
 
 }  // namespace

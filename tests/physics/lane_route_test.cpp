@@ -5,6 +5,7 @@
 
 #include <numbers>
 
+#include "physics/map/builtin_maps.hpp"
 #include "tests/physics/map_fixtures.hpp"
 
 namespace scenfuzz {
@@ -86,6 +87,35 @@ TEST_F(LaneRouting, FeaturesAheadInRouteOrder) {
   ASSERT_TRUE(last);
   EXPECT_DOUBLE_EQ(last->distance, 10);
   EXPECT_FALSE(next_feature_ahead(map, *route, 151));  // the crosswalk begins at 150
+}
+
+// The roundabout's ring is one closed lane that entries join and exits leave part-way along.
+TEST(LaneRoutingRoundabout, EntersAndLeavesTheRingPartWayAndWrapsThroughZero) {
+  RoadMap map = build_road_map(generate_builtin_map("roundabout", {}));
+  auto lane = [&](std::string_view id) { return map.find_lane(id).value(); };
+  auto route =
+      find_route(map, LanePosition{lane("south_in_0"), 50}, LanePosition{lane("north_out_0"), 10});
+  ASSERT_TRUE(route);
+  std::vector<std::string> lanes;
+  for (const RouteSegment& segment : route->segments) lanes.push_back(map.lane(segment.lane).id);
+  EXPECT_EQ(lanes, (std::vector<std::string>{"south_in_0", "south_entry", "ring_0", "ring_0",
+                                             "north_exit", "north_out_0"}));
+  EXPECT_NEAR(route->segments[2].s_begin, 99.48, 0.01);
+  EXPECT_NEAR(route->segments[2].s_end, 125.66, 0.01);
+  EXPECT_NEAR(route->segments[3].s_begin, 0, 1e-9);
+  EXPECT_NEAR(route->segments[3].s_end, 26.18, 0.01);
+  // The east exit is the first after the south entry: no wrap.
+  auto east =
+      find_route(map, LanePosition{lane("south_in_0"), 50}, LanePosition{lane("east_out_0"), 10});
+  ASSERT_TRUE(east);
+  EXPECT_EQ(east->segments.size(), 5u);
+  EXPECT_NEAR(east->segments[2].s_end, 120.43, 0.01);
+  // Around the ring from s = 110 to s = 10.
+  auto around =
+      find_route(map, LanePosition{lane("ring_0"), 110}, LanePosition{lane("ring_0"), 10});
+  ASSERT_TRUE(around);
+  ASSERT_EQ(around->segments.size(), 2u);
+  EXPECT_NEAR(around->length, 125.66 - 110 + 10, 0.01);
 }
 
 }  // namespace
