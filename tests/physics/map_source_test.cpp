@@ -438,8 +438,8 @@ TEST(MapSourceSearchPath, EnvironmentFoldersAreSearchedInOrder) {
             std::vector<std::string>{"lane_three"});
 
   const std::string message = map_error([] { load_map("atlantis", map_search_path({})); });
-  EXPECT_THAT(message, HasSubstr("'" + one.string() + "' '" + two.string() + "' '" +
-                                 three.string() + "'"));
+  EXPECT_THAT(message,
+              HasSubstr("'" + one.string() + "' '" + two.string() + "' '" + three.string() + "'"));
 }
 
 // ---- the shared sample maps, through symlinks ----
