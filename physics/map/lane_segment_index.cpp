@@ -1,6 +1,8 @@
 // The lane segment R-tree (Boost.Geometry, packed at construction with the STR algorithm).
 #include "physics/map/lane_segment_index.hpp"
 
+// Boost 1.74 geometry includes a header it itself deprecates; the note is not ours to fix.
+#define BOOST_ALLOW_DEPRECATED_HEADERS
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <utility>
