@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/apollo_text_maps.hpp"
 #include "tests/support/shared_dir.hpp"
 
 #ifndef SCENFUZZ_EXECUTABLE
@@ -287,24 +288,6 @@ std::optional<std::string> summary_field(const std::string& summary, const std::
   return std::nullopt;
 }
 
-// The smallest Apollo text map scenfuzz reads: one 10 m lane whose id says which file was read.
-std::string one_lane_map(const std::string& lane_id) {
-  return "lane {\n  id { id: \"" + lane_id +
-         "\" }\n"
-         "  central_curve { segment { line_segment {\n"
-         "    point { x: 0 y: 0 } point { x: 10 y: 0 } } } }\n"
-         "}\n";
-}
-
-// A syntax error on line 5.
-constexpr const char* kBrokenMap =
-    "header {\n"
-    "  projection { proj: \"x\" }\n"
-    "}\n"
-    "lane {\n"
-    "  speed_limit: fast\n"
-    "}\n";
-
 // Sets an environment variable for the scenfuzz runs of one test, and puts the old value back.
 class ScopedEnvironment {
  public:
@@ -519,14 +502,14 @@ TEST_F(CliMapTest, BadParametersExitWithTwo) {
   EXPECT_EQ(not_a_number.exit_code, 2);
   EXPECT_NE(not_a_number.err.find("'abc'"), std::string::npos) << not_a_number.err;
 
-  write_map("town", one_lane_map("lane_1"));
+  write_map("town", scenfuzz::test::one_lane_map("lane_1"));
   const Outcome apollo = scenfuzz({"map", "town?lanes=2", "--map-path", dir_.string()});
   EXPECT_EQ(apollo.exit_code, 2);
   EXPECT_NE(apollo.err.find("only built-in maps take parameters"), std::string::npos) << apollo.err;
 }
 
 TEST_F(CliMapTest, MalformedMapFileNamesFileAndLine) {
-  const std::string file = write_map("broken", kBrokenMap);
+  const std::string file = write_map("broken", scenfuzz::test::kBrokenMap);
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
            {"map", file}, {"map", "broken", "--map-path", dir_.string()}}) {
     const Outcome run = scenfuzz(args);
@@ -537,9 +520,9 @@ TEST_F(CliMapTest, MalformedMapFileNamesFileAndLine) {
 }
 
 TEST_F(CliMapTest, MapPathOrderAndEnvironment) {
-  write_map("first/town", one_lane_map("lane_first"));
-  write_map("second/town", one_lane_map("lane_second"));
-  write_map("second/hamlet", one_lane_map("lane_hamlet"));
+  write_map("first/town", scenfuzz::test::one_lane_map("lane_first"));
+  write_map("second/town", scenfuzz::test::one_lane_map("lane_second"));
+  write_map("second/hamlet", scenfuzz::test::one_lane_map("lane_hamlet"));
   const std::string first = (dir_ / "first").string(), second = (dir_ / "second").string();
 
   const Outcome first_wins =

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "physics/map/road_map.hpp"
+#include "tests/support/apollo_text_maps.hpp"
 #include "tests/support/shared_dir.hpp"
 
 namespace scenfuzz {
@@ -84,29 +85,6 @@ class ScopedEnvironment {
   const char* name_;
   std::optional<std::string> old_value_;
 };
-
-// The smallest Apollo text map the reader accepts: one 10 m lane. The lane id tells which file
-// was read when several could have been.
-std::string one_lane_map(const std::string& lane_id) {
-  return "header { projection { proj: \"+proj=utm +zone=10 +ellps=WGS84\" } }\n"
-         "lane {\n"
-         "  id { id: \"" +
-         lane_id +
-         "\" }\n"
-         "  central_curve { segment { line_segment {\n"
-         "    point { x: 0 y: 0 } point { x: 10 y: 0 } } } }\n"
-         "}\n";
-}
-
-// A syntax error on line 5: a number expected, a word found.
-constexpr const char* kBrokenMap =
-    "header {\n"
-    "  projection { proj: \"x\" }\n"
-    "}\n"
-    "lane {\n"
-    "  speed_limit: fast\n"
-    "}\n";
-constexpr int kBrokenLine = 5;
 
 std::vector<std::string> lane_ids(const RoadMap& map) {
   std::vector<std::string> ids;
@@ -263,7 +241,7 @@ TEST(MapSourceBuiltin, BadParametersNameTheParameter) {
 // a stray folder cannot change what every scenario on "crossroads" drives on.
 TEST(MapSourceBuiltin, BuiltinNamesWinOverTheSearchPath) {
   const TempDir temp;
-  temp.write("crossroads/base_map.txt", one_lane_map("impostor"));
+  temp.write("crossroads/base_map.txt", test::one_lane_map("impostor"));
   const RoadMap map = load_map("crossroads", MapSearchPath{{temp.path()}});
   EXPECT_EQ(map.source(), "built-in");
   EXPECT_FALSE(map.find_lane("impostor"));
@@ -273,7 +251,7 @@ TEST(MapSourceBuiltin, BuiltinNamesWinOverTheSearchPath) {
 
 TEST(MapSourceApollo, ParametersAreAnError) {
   const TempDir temp;
-  const fs::path file = temp.write("town/base_map.txt", one_lane_map("lane_1"));
+  const fs::path file = temp.write("town/base_map.txt", test::one_lane_map("lane_1"));
   const MapSearchPath search_path{{temp.path()}};
   ASSERT_EQ(load_map("town", search_path).lanes().size(), 1u);
 
@@ -291,8 +269,8 @@ TEST(MapSourceApollo, ParametersAreAnError) {
 
 TEST(MapSourceApollo, MalformedTextMapNamesFileAndLine) {
   const TempDir temp;
-  const fs::path file = temp.write("broken/base_map.txt", kBrokenMap);
-  const std::string at_line = file.string() + ":" + std::to_string(kBrokenLine) + ":";
+  const fs::path file = temp.write("broken/base_map.txt", test::kBrokenMap);
+  const std::string at_line = file.string() + ":" + std::to_string(test::kBrokenMapLine) + ":";
   // By path and by name on the search path alike.
   EXPECT_THAT(map_error([&] { load_map(file.string(), kNoSearchPath); }), HasSubstr(at_line));
   EXPECT_THAT(map_error([&] { load_map("broken", MapSearchPath{{temp.path()}}); }),
@@ -357,8 +335,8 @@ TEST(MapSourceResolve, FirstFolderWins) {
 
 TEST(MapSourceResolve, LoadsTheMapTheSearchFinds) {
   const TempDir temp;
-  temp.write("first/town/base_map.txt", one_lane_map("lane_first"));
-  temp.write("second/town/base_map.txt", one_lane_map("lane_second"));
+  temp.write("first/town/base_map.txt", test::one_lane_map("lane_first"));
+  temp.write("second/town/base_map.txt", test::one_lane_map("lane_second"));
   const RoadMap map =
       load_map("town", MapSearchPath{{temp.path() / "first", temp.path() / "second"}});
   EXPECT_EQ(map.name(), "town");
@@ -424,9 +402,9 @@ TEST(MapSourceSearchPath, EnvironmentFoldersAreSearchedInOrder) {
   const fs::path one = temp.path() / "one", two = temp.path() / "two",
                  three = temp.path() / "three";
   fs::create_directories(one);
-  temp.write("two/town/base_map.txt", one_lane_map("lane_two"));
-  temp.write("three/town/base_map.txt", one_lane_map("lane_three"));
-  temp.write("three/hamlet/base_map.txt", one_lane_map("lane_hamlet"));
+  temp.write("two/town/base_map.txt", test::one_lane_map("lane_two"));
+  temp.write("three/town/base_map.txt", test::one_lane_map("lane_three"));
+  temp.write("three/hamlet/base_map.txt", test::one_lane_map("lane_hamlet"));
   const ScopedEnvironment environment("SCENFUZZ_MAP_PATH",
                                       one.string() + ":" + two.string() + ":" + three.string());
 
