@@ -40,8 +40,8 @@ LaneSegmentIndex::LaneSegmentIndex(const std::vector<Lane>& lanes) {
     }
   }
   // The range constructor packs the tree (STR bulk loading): faster queries than inserting.
-  // Eight values per node measured fastest for nearest queries on san_francisco (rstar 4, 16
-  // and 32 are slower; fewer than 8 also trips GCC 12 -Warray-bounds inside Boost).
+  // Eight values per node measured fastest for nearest queries on san_francisco (16 and 32 are
+  // slower, docs/performance.md; fewer than 8 trips GCC 12 -Warray-bounds inside Boost).
   tree_ = std::make_unique<Tree>(Tree{{values.begin(), values.end()}});
 }
 
