@@ -1,0 +1,50 @@
+// Scripted motion: a path with a speed profile along it, for NPC vehicles and pedestrians that
+// follow what the scenario says rather than react. The speed changes with constant acceleration
+// between consecutive speed points (the speeds the scenario gives at its waypoints), so the
+// profile is continuous and every time is finite; past the end the actor stands still.
+#pragma once
+
+#include <vector>
+
+#include "physics/actors/kinematics.hpp"
+#include "physics/map/lane_route.hpp"
+#include "physics/map/polyline.hpp"
+
+namespace scenfuzz {
+
+// The actor's speed when its path reaches arc length s.
+struct SpeedPoint {
+  double s = 0;
+  double speed = 0;
+};
+
+class Trajectory {
+ public:
+  Trajectory() = default;
+  // `speeds` sorted by s, the first at s = 0; a missing last point keeps the last speed up to the
+  // path's end, where the actor stops (braking at `stop_deceleration` so as to stop there).
+  Trajectory(Polyline path, std::vector<SpeedPoint> speeds, double stop_deceleration);
+
+  // The state at time t >= 0 (since the start of the motion).
+  KinematicState state_at(double t) const;
+  const Polyline& path() const { return path_; }
+  double duration() const;  // time to reach the end of the path (infinite if it never does)
+
+ private:
+  Polyline path_;
+  // Knots of the piecewise constant-acceleration profile: arc length, speed and time at each.
+  std::vector<double> knot_s_, knot_speed_, knot_time_;
+};
+
+// A drivable path along a lane route, `lateral` metres left of the centre lines, sampled every
+// `spacing` metres. A lane change in the route becomes a smooth sideways move over
+// `lane_change_length` metres ending where the route enters the new lane (shorter when the lane
+// before it is shorter).
+Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral = 0,
+                    double lane_change_length = 30, double spacing = 1);
+
+// Where a lane-following actor goes without a target: from `start` along successors (the one
+// that turns least at each fork), for at least `length` metres or to a dead end.
+LaneRoute route_ahead(const RoadMap& map, LanePosition start, double length);
+
+}  // namespace scenfuzz

@@ -1,0 +1,101 @@
+// What a simulation produces: one sample per step for every actor, in columns (structure of
+// arrays, so the oracle scans one signal at a time), the ego's perception of every other actor,
+// the traffic lights' colours, and the events of the run.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "physics/actors/actor_class.hpp"
+#include "physics/collision/body_side.hpp"
+#include "physics/map/map_description.hpp"
+#include "physics/map/map_point.hpp"
+
+namespace scenfuzz {
+
+// Index into Trace::actors. The ego is always actor 0.
+using ActorId = std::uint32_t;
+inline constexpr ActorId kEgo = 0;
+
+enum class TraceActorKind { ego, vehicle, pedestrian, obstacle };
+
+// An obstacle's body as the scenario gives it; actors are boxes (vehicles) or cylinders.
+enum class BodyShape { box, cylinder, sphere, cone };
+
+struct TraceActor {
+  std::string name;  // as the scenario's specs refer to it ("ego", "npc1", "ped", "obs1")
+  TraceActorKind kind = TraceActorKind::vehicle;
+  ActorCategory category = ActorCategory::car;  // obstacles: unused
+  BodyShape shape = BodyShape::box;
+  double length = 0;  // box: along the heading; round shapes: diameter
+  double width = 0;   // box: across; round shapes: diameter
+  double height = 0;
+
+  // One entry per sample.
+  std::vector<double> x, y, heading, speed, acceleration, yaw_rate;
+  std::vector<std::int32_t> lane;  // LaneIndex of the lane the centre is on, -1 on none
+  std::vector<double> s;           // arc length on `lane`; 0 when lane is -1
+};
+
+// How the ego saw one other actor at each sample (after range, field of view, misses, noise and
+// latency). Samples where it was not detected have detected == 0 and NaN elsewhere.
+struct PerceivedActor {
+  ActorId actor = 0;
+  std::vector<std::uint8_t> detected;
+  std::vector<double> x, y, heading, speed;
+};
+
+struct TraceLight {
+  std::string id;                     // the map's traffic light id
+  std::vector<SignalColour> colour;   // one per sample
+};
+
+struct Collision {
+  double time = 0;
+  ActorId first = 0;   // the lower actor id of the pair
+  ActorId second = 0;
+  MapPoint point;      // a contact point, map frame
+  BodySide first_side = BodySide::front;
+  BodySide second_side = BodySide::front;
+};
+
+enum class TraceEventKind {
+  collision,       // detail: the index into Trace::collisions
+  target_reached,  // the ego reached its target state
+  timeout,         // the scenario's duration elapsed
+  ego_failure,     // the ego driver (a plugin) crashed, hung or returned an error
+};
+
+struct TraceEvent {
+  TraceEventKind kind = TraceEventKind::timeout;
+  double time = 0;
+  std::int64_t collision = -1;  // collision events: index into Trace::collisions
+  std::string message;          // ego_failure: what happened
+};
+
+enum class EndReason { duration, target_reached, collision, ego_failure };
+
+struct Trace {
+  std::string map_name;
+  std::uint64_t seed = 0;
+  double dt = 0.05;
+  std::vector<double> time;  // time[i] = i * dt
+  std::vector<TraceActor> actors;
+  std::vector<PerceivedActor> perceived;  // one per actor other than the ego, in actor order
+  std::vector<TraceLight> lights;
+  std::vector<Collision> collisions;
+  std::vector<TraceEvent> events;  // in time order
+  EndReason end = EndReason::duration;
+
+  std::size_t sample_count() const { return time.size(); }
+  // The actor named `name`, or nullopt.
+  std::optional<ActorId> find_actor(const std::string& name) const;
+};
+
+std::string_view trace_actor_kind_name(TraceActorKind kind);
+std::string_view end_reason_name(EndReason reason);
+std::string_view signal_colour_name(SignalColour colour);
+
+}  // namespace scenfuzz
