@@ -63,6 +63,42 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   map->add_flag("--json", map_options.json, "Print JSON (counts, bounds, every lane) instead");
   map->add_flag("--list", map_options.list, "List the built-in maps and their parameters");
 
+  RunCommandOptions run_options;
+  CLI::App* run_command = app.add_subcommand(
+      "run",
+      "Simulate a scenario: print the collisions and whether the ego reached its target; write "
+      "the trace (CSV, JSON), a bird's-eye SVG and the concrete scenario");
+  run_command->add_option("FILE", run_options.path, "AVUnit or scenest scenario file")
+      ->required()
+      ->type_name("");
+  run_command->add_option("--seed", run_options.seed, "Seed of every random draw (default 0)")
+      ->type_name("N");
+  run_command->add_option("--out", run_options.out_dir, "Folder for the outputs (default scenfuzz-run)")
+      ->type_name("DIR");
+  run_command->add_option("--at", run_options.at,
+                          "Which point of a logical scenario to simulate: mid (the middle of "
+                          "every range) or random (drawn from --seed)")
+      ->check(CLI::IsMember({"mid", "random"}))
+      ->type_name("mid|random");
+  run_command->add_option("--map-path", run_options.map_paths,
+                          "Folder to look for Apollo maps in; repeatable")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  run_command->add_option("--ego-plugin", run_options.ego_plugin,
+                          "Drive the ego with this shared library (docs/ego-plugin.md) instead of "
+                          "the reference driver")
+      ->type_name("LIB");
+  run_command->add_option("--duration", run_options.duration,
+                          "Seconds to simulate (default: the scenario's, else 30)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("S");
+  run_command->add_option("--dt", run_options.dt, "Seconds per step (default 0.05)")
+      ->check(CLI::Range(0.001, 1.0))
+      ->type_name("S");
+  run_command->add_flag("--continue-after-collision", run_options.continue_after_collision,
+                        "Keep simulating after the ego's first collision");
+  run_command->add_flag("--json", run_options.json, "Print the summary as JSON");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,6 +109,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   if (check->parsed()) return run_check(check_files, err);
   if (space->parsed()) return run_space(space_file, space_json, out, err);
   if (map->parsed()) return run_map(map_options, out, err);
+  if (run_command->parsed()) return run_run(run_options, out, err);
   return kExitUsage;  // unreachable: a subcommand is required
 }
 

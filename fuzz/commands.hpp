@@ -1,6 +1,7 @@
 // The subcommands behind the command line, callable without it (tests, other front ends).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -30,6 +31,23 @@ struct MapCommandOptions {
 // `scenfuzz map NAME|FILE`: loads a map and prints a summary (or JSON) to `out`; draws it with
 // --svg. A map that cannot be found or read gives kExitBadInput with the reason on `err`.
 int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& err);
+
+struct RunCommandOptions {
+  std::string path;
+  std::vector<std::string> map_paths;  // --map-path, in order
+  std::uint64_t seed = 0;              // --seed: perception noise, random walks, --at random
+  std::string out_dir = "scenfuzz-run";  // --out: trace.csv, trace.json, trace.svg, scenario.avu
+  std::string at;                      // --at: "mid" or "random" for a logical scenario
+  bool json = false;                   // --json: the summary as JSON
+  std::string ego_plugin;              // --ego-plugin: a shared library driving the ego
+  std::optional<double> duration;      // --duration: overrides the scenario's
+  double dt = 0.05;                    // --dt
+  bool continue_after_collision = false;
+};
+
+// `scenfuzz run FILE`: simulates the scenario (a logical one at the point --at chooses), prints
+// what happened to `out` and writes the trace and a picture into the output folder.
+int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& err);
 
 // Reads a scenario file, or prints `scenfuzz: error: cannot read 'path': <reason>` to `err`.
 std::optional<SourceFile> read_input(const std::string& path, std::ostream& err);

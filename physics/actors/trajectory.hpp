@@ -23,7 +23,12 @@ class Trajectory {
   Trajectory() = default;
   // `speeds` sorted by s, the first at s = 0; a missing last point keeps the last speed up to the
   // path's end, where the actor stops (braking at `stop_deceleration` so as to stop there).
+  // Throws std::invalid_argument for an empty path or speed list, speeds out of order or
+  // negative, or a deceleration that is not positive.
   Trajectory(Polyline path, std::vector<SpeedPoint> speeds, double stop_deceleration);
+  // An actor that stays at `pose` (a Polyline needs two distinct points, so a standing actor has
+  // no path: path() is empty and duration() is 0).
+  static Trajectory standing(MapPose pose);
 
   // The state at time t >= 0 (since the start of the motion).
   KinematicState state_at(double t) const;
@@ -32,19 +37,23 @@ class Trajectory {
 
  private:
   Polyline path_;
+  MapPose standing_pose_;  // where an actor without a path stays
   // Knots of the piecewise constant-acceleration profile: arc length, speed and time at each.
   std::vector<double> knot_s_, knot_speed_, knot_time_;
 };
 
 // A drivable path along a lane route, `lateral` metres left of the centre lines, sampled every
 // `spacing` metres. A lane change in the route becomes a smooth sideways move over
-// `lane_change_length` metres ending where the route enters the new lane (shorter when the lane
-// before it is shorter).
+// `lane_change_length` metres ending where the route enters the new lane; when the route has
+// less than that on the lane before (find_route changes lane where it entered a lane, so it has
+// none), the move starts as early as it can and runs on into the new lane. Lane changes in a row
+// take turns. Throws std::invalid_argument for an empty or zero-length route or a bad spacing.
 Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral = 0,
                     double lane_change_length = 30, double spacing = 1);
 
 // Where a lane-following actor goes without a target: from `start` along successors (the one
-// that turns least at each fork), for at least `length` metres or to a dead end.
+// that turns least over its first metres at each fork), for `length` metres (the last segment
+// is cut there) or to a dead end.
 LaneRoute route_ahead(const RoadMap& map, LanePosition start, double length);
 
 }  // namespace scenfuzz

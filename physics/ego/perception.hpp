@@ -29,15 +29,15 @@ struct Conditions {
 double darkness_at(double time_of_day);
 
 struct PerceptionSettings {
-  double vehicle_range = 150;     // m, clear daylight
-  double pedestrian_range = 80;   // m, clear daylight
-  double field_of_view = 6.2832;  // rad, centred on the heading (2 pi: all round)
-  double position_noise = 0.1;    // m, standard deviation per axis
-  double heading_noise = 0.02;    // rad
-  double speed_noise = 0.1;       // m/s
-  double latency = 0.1;           // s between a sample and its arrival at the driver
-  double miss_probability = 0.01; // per object and step, clear conditions, close range
-  double coast_time = 0.3;        // s a tracked object is kept (extrapolated) after a miss
+  double vehicle_range = 150;      // m, clear daylight
+  double pedestrian_range = 80;    // m, clear daylight
+  double field_of_view = 6.2832;   // rad, centred on the heading (2 pi: all round)
+  double position_noise = 0.1;     // m, standard deviation per axis
+  double heading_noise = 0.02;     // rad
+  double speed_noise = 0.1;        // m/s
+  double latency = 0.1;            // s between a sample and its arrival at the driver
+  double miss_probability = 0.01;  // per object and step, clear conditions, close range
+  double coast_time = 0.3;         // s a tracked object is kept (extrapolated) after a miss
 };
 
 // The settings worsened by the conditions (documented in docs/simulation.md).
@@ -66,14 +66,22 @@ class Perception {
   PerceptionSettings settings_;
   std::mt19937_64 random_;
   double dt_;
-  // Implementation state (history for latency, tracks for coasting) is the helper's choice.
+  // What the sensors sampled at one step: the ego's pose then and the true objects, by id.
+  struct Snapshot {
+    KinematicState ego;
+    std::vector<WorldObject> objects;
+  };
+  // The detection of an object at `last_seen` (s since the first call), extrapolated while it
+  // coasts.
   struct Track {
     WorldObject object;
     double last_seen = 0;
   };
-  std::vector<std::vector<WorldObject>> history_;
+  // A ring of round(latency / dt) + 1 snapshots; history_head_ is the oldest, read this step.
+  std::vector<Snapshot> history_;
   std::size_t history_head_ = 0;
-  std::vector<Track> tracks_;
+  bool started_ = false;
+  std::vector<Track> tracks_;  // sorted by id
   std::vector<WorldObject> output_;
   double time_ = 0;
 };

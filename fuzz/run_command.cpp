@@ -1,0 +1,168 @@
+// `scenfuzz run FILE`: simulate one concrete scenario (or one point of a logical one) and report
+// what happened; write the trace (CSV, JSON), a bird's-eye SVG and the concrete scenario.
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "fuzz/atomic_file.hpp"
+#include "fuzz/cli.hpp"
+#include "fuzz/commands.hpp"
+#include "lang/avunit/avunit.hpp"
+#include "lang/number_format.hpp"
+#include "physics/map/map_source.hpp"
+#include "physics/simulation/simulation.hpp"
+#include "physics/trace/trace_export.hpp"
+#include "physics/trace/trace_svg.hpp"
+#include "sampler/parameter_space.hpp"
+
+namespace scenfuzz {
+namespace {
+
+// A point of the unit cube: its middle, or uniform random from the seed.
+std::vector<double> unit_point(std::size_t dimensions, const std::string& at, std::uint64_t seed) {
+  std::vector<double> point(dimensions, 0.5);
+  if (at != "random") return point;
+  std::mt19937_64 random(seed);
+  // 53 random bits to [0, 1), the same on every standard library.
+  for (double& u : point) u = static_cast<double>(random() >> 11) * 0x1.0p-53;
+  return point;
+}
+
+std::string describe_collision(const Trace& trace, const Collision& collision) {
+  return "collision at " + format_number(collision.time) + " s: " +
+         trace.actors[collision.first].name + " " +
+         std::string(body_side_name(collision.first_side)) + " / " +
+         trace.actors[collision.second].name + " " +
+         std::string(body_side_name(collision.second_side)) + " at (" +
+         format_number(std::round(collision.point.x * 100) / 100) + ", " +
+         format_number(std::round(collision.point.y * 100) / 100) + ")";
+}
+
+nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
+                            const std::vector<double>& values, const std::vector<std::string>& files) {
+  nlohmann::json summary;
+  summary["map"] = trace.map_name;
+  summary["seed"] = trace.seed;
+  summary["dt"] = trace.dt;
+  summary["duration"] = trace.time.empty() ? 0.0 : trace.time.back();
+  summary["end"] = std::string(end_reason_name(trace.end));
+  summary["target_reached"] = trace.end == EndReason::target_reached;
+  nlohmann::json parameters = nlohmann::json::object();
+  for (std::size_t i = 0; i < space.dimensions.size(); ++i)
+    parameters[space.dimensions[i].name] = values[i];
+  summary["parameters"] = parameters;
+  nlohmann::json collisions = nlohmann::json::array();
+  for (const Collision& c : trace.collisions)
+    collisions.push_back({{"time", c.time},
+                          {"first", trace.actors[c.first].name},
+                          {"second", trace.actors[c.second].name},
+                          {"first_side", std::string(body_side_name(c.first_side))},
+                          {"second_side", std::string(body_side_name(c.second_side))},
+                          {"point", {c.point.x, c.point.y}}});
+  summary["collisions"] = collisions;
+  for (const TraceEvent& event : trace.events)
+    if (event.kind == TraceEventKind::ego_failure) summary["ego_failure"] = event.message;
+  summary["files"] = files;
+  return summary;
+}
+
+}  // namespace
+
+int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& err) {
+  std::optional<SourceFile> file = read_input(options.path, err);
+  if (!file) return kExitBadInput;
+  const avunit::ParseResult parsed = avunit::parse(*file);
+  err << format_diagnostics(*file, parsed.diagnostics);
+  if (!parsed.ok()) return kExitBadInput;
+  const ScenarioTemplate& scenario = parsed.scenario;
+  if (!scenario.has_scenario) {
+    err << "scenfuzz: error: '" << options.path
+        << "' builds no scenario (no CreateScenario): nothing to simulate\n";
+    return kExitBadInput;
+  }
+
+  const ParameterSpace space = parameter_space(scenario);
+  if (!space.dimensions.empty() && options.at.empty()) {
+    err << "scenfuzz: error: '" << options.path << "' is a logical scenario with "
+        << space.dimensions.size()
+        << " parameters; choose the point to simulate with --at mid or --at random\n";
+    return kExitUsage;
+  }
+  const std::vector<double> values =
+      decode(space, unit_point(space.dimensions.size(), options.at, options.seed));
+
+  std::vector<std::filesystem::path> map_paths(options.map_paths.begin(), options.map_paths.end());
+  std::optional<RoadMap> map;
+  try {
+    map = load_scenario_map(scenario.map, map_search_path(map_paths), values);
+  } catch (const MapError& error) {
+    err << "scenfuzz: error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+
+  Diagnostics diagnostics;
+  auto setup = prepare_simulation(scenario, values, *map, options.seed, diagnostics);
+  err << format_diagnostics(*file, diagnostics);
+  if (!setup) return kExitBadInput;
+
+  SimulationOptions simulation;
+  simulation.seed = options.seed;
+  simulation.dt = options.dt;
+  simulation.duration = options.duration;
+  simulation.stop_at_collision = !options.continue_after_collision;
+  simulation.ego_plugin = options.ego_plugin;
+  const Trace trace = simulate(*map, *setup, simulation);
+
+  std::vector<std::string> written;
+  if (!options.out_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(options.out_dir, error);
+    if (error) {
+      err << "scenfuzz: error: cannot create '" << options.out_dir << "': " << error.message() << "\n";
+      return kExitBadInput;
+    }
+    std::vector<std::string> lane_ids;
+    for (const Lane& lane : map->lanes()) lane_ids.push_back(lane.id);
+    const std::filesystem::path dir = options.out_dir;
+    const std::vector<std::pair<std::string, std::string>> outputs = {
+        {"trace.csv", trace_csv(trace, lane_ids)},
+        {"trace.json", trace_json(trace)},
+        {"trace.svg", render_trace_svg(*map, trace)},
+        {"scenario.avu", avunit::print_concrete(*file, scenario, values)},
+    };
+    for (const auto& [name, content] : outputs) {
+      std::string failure = write_file_atomically(dir / name, content);
+      if (!failure.empty()) {
+        err << "scenfuzz: error: " << failure << "\n";
+        return kExitBadInput;
+      }
+      written.push_back((dir / name).string());
+    }
+  }
+
+  if (options.json) {
+    out << summary_json(trace, space, values, written).dump(2) << "\n";
+    return kExitSuccess;
+  }
+  out << "map " << trace.map_name << ", seed " << trace.seed << ", dt " << format_number(trace.dt)
+      << " s\n";
+  for (std::size_t i = 0; i < space.dimensions.size(); ++i)
+    out << "  " << space.dimensions[i].name << " = " << format_number(values[i]) << "\n";
+  double simulated = trace.time.empty() ? 0.0 : trace.time.back();
+  out << "simulated " << format_number(std::round(simulated * 1000) / 1000) << " s, ended: "
+      << end_reason_name(trace.end) << "\n";
+  for (const Collision& collision : trace.collisions) out << describe_collision(trace, collision) << "\n";
+  if (trace.collisions.empty()) out << "no collision\n";
+  out << "ego reached its target: " << (trace.end == EndReason::target_reached ? "yes" : "no")
+      << "\n";
+  for (const TraceEvent& event : trace.events)
+    if (event.kind == TraceEventKind::ego_failure) out << "ego failure: " << event.message << "\n";
+  for (const std::string& path : written) out << "wrote " << path << "\n";
+  return kExitSuccess;
+}
+
+}  // namespace scenfuzz

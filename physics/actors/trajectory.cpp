@@ -1,0 +1,395 @@
+// Scripted motion along a path (a piecewise constant-acceleration speed profile), and the paths
+// themselves: lane routes turned into drivable polylines, and the route a lane follower takes.
+#include "physics/actors/trajectory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+namespace scenfuzz {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A polyline's heading jumps at every vertex; within this distance of a vertex (and at most half
+// of each adjoining segment) it turns linearly from one segment's heading to the next, so the
+// heading is continuous and the yaw rate finite.
+constexpr double kHeadingBlendDistance = 2;
+
+// Lane ends closer than this are joined end to start, as in lane_route.cpp (Apollo's joints are
+// within millimetres).
+constexpr double kJointTolerance = 0.5;
+
+// Route path points closer than this to the previous point are dropped: a near-duplicate at a lane
+// joint would make a tiny segment with an arbitrary heading.
+constexpr double kMinimumPointGap = 0.01;
+
+// How far into a successor route_ahead looks to judge how much it turns: a connector that joins
+// tangentially turns only after its first metres (a roundabout's exit leaves the ring tangentially
+// and then turns away).
+constexpr double kTurnLookahead = 5;
+
+// route_ahead stops after this many segments: a ring of tiny lanes must not loop for ever.
+constexpr std::size_t kMaximumRouteSegments = 100000;
+
+double wrap_angle(double angle) { return angle_difference(angle, 0); }
+
+double segment_heading(const Polyline& path, std::size_t segment) {
+  const MapPoint& a = path.points()[segment];
+  const MapPoint& b = path.points()[segment + 1];
+  return std::atan2(b.y - a.y, b.x - a.x);
+}
+
+double segment_length(const Polyline& path, std::size_t segment) {
+  return path.arc_lengths()[segment + 1] - path.arc_lengths()[segment];
+}
+
+// Half-width of the heading blend around interior vertex `vertex`.
+double blend_distance(const Polyline& path, std::size_t vertex) {
+  return std::min({kHeadingBlendDistance, 0.5 * segment_length(path, vertex - 1),
+                   0.5 * segment_length(path, vertex)});
+}
+
+struct PathDirection {
+  double heading = 0;
+  double curvature = 0;  // rad/m, positive turning left
+};
+
+// The heading at s, continuous along the path (see kHeadingBlendDistance), and its derivative.
+PathDirection direction_at(const Polyline& path, double s) {
+  s = std::clamp(s, 0.0, path.length());
+  std::size_t segment = path.segment_at(s);
+  double heading = segment_heading(path, segment);
+  double from_start = s - path.arc_lengths()[segment];
+  double to_end = path.arc_lengths()[segment + 1] - s;
+  if (segment > 0) {
+    double blend = blend_distance(path, segment);
+    if (from_start < blend) {
+      double turn = angle_difference(heading, segment_heading(path, segment - 1));
+      return {wrap_angle(heading - 0.5 * turn * (1 - from_start / blend)), turn / (2 * blend)};
+    }
+  }
+  if (segment + 1 < path.segment_count()) {
+    double blend = blend_distance(path, segment + 1);
+    if (to_end < blend) {
+      double turn = angle_difference(segment_heading(path, segment + 1), heading);
+      return {wrap_angle(heading + 0.5 * turn * (1 - to_end / blend)), turn / (2 * blend)};
+    }
+  }
+  return {heading, 0};
+}
+
+KinematicState state_on_path(const Polyline& path, double s, double speed, double acceleration) {
+  MapPoint point = path.point_at(s);
+  PathDirection direction = direction_at(path, s);
+  KinematicState state;
+  state.x = point.x;
+  state.y = point.y;
+  state.heading = direction.heading;
+  state.speed = speed;
+  state.acceleration = acceleration;
+  state.yaw_rate = speed * direction.curvature;
+  return state;
+}
+
+// Speed points checked, sorted, clamped to the path and with repeated arc lengths merged (the
+// later speed wins), so that every interval between knots has a positive length.
+std::vector<SpeedPoint> checked_speed_points(std::vector<SpeedPoint> speeds, double length) {
+  if (speeds.empty()) throw std::invalid_argument("trajectory needs at least one speed point");
+  std::vector<SpeedPoint> checked;
+  double previous_s = 0;
+  for (const SpeedPoint& point : speeds) {
+    if (!std::isfinite(point.s) || !std::isfinite(point.speed) || point.speed < 0)
+      throw std::invalid_argument("trajectory speed points need finite s and speed >= 0");
+    if (point.s < previous_s)
+      throw std::invalid_argument("trajectory speed points must be sorted by s from s = 0");
+    previous_s = point.s;
+    double s = std::min(point.s, length);
+    if (!checked.empty() && s - checked.back().s <= 1e-9)
+      checked.back().speed = point.speed;
+    else
+      checked.push_back({s, point.speed});
+  }
+  if (checked.front().s > 1e-9)
+    throw std::invalid_argument("trajectory speed points must start at s = 0");
+  checked.front().s = 0;
+  return checked;
+}
+
+}  // namespace
+
+Trajectory::Trajectory(Polyline path, std::vector<SpeedPoint> speeds, double stop_deceleration)
+    : path_(std::move(path)) {
+  if (path_.points().empty())
+    throw std::invalid_argument("trajectory needs a path; use Trajectory::standing for none");
+  if (!(stop_deceleration > 0) || !std::isfinite(stop_deceleration))
+    throw std::invalid_argument("trajectory stop deceleration must be positive");
+  const double length = path_.length();
+  std::vector<SpeedPoint> points = checked_speed_points(std::move(speeds), length);
+
+  // The last given speed holds to where braking at stop_deceleration stops the actor at the end;
+  // if the last point is too close to the end for that, braking starts at the last point.
+  const SpeedPoint last = points.back();
+  if (last.s < length) {
+    double braking_distance = last.speed * last.speed / (2 * stop_deceleration);
+    double braking_start = length - braking_distance;
+    if (last.speed > 0 && braking_start > last.s) points.push_back({braking_start, last.speed});
+    points.push_back({length, 0});
+  }
+
+  standing_pose_ = {path_.points().front(), direction_at(path_, 0).heading};
+  double time = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i > 0) {
+      double speed_sum = points[i - 1].speed + points[i].speed;
+      // Standing still between two points: the actor never gets past the first.
+      time = speed_sum > 0 ? time + 2 * (points[i].s - points[i - 1].s) / speed_sum : kInfinity;
+    }
+    knot_s_.push_back(points[i].s);
+    knot_speed_.push_back(points[i].speed);
+    knot_time_.push_back(time);
+  }
+}
+
+Trajectory Trajectory::standing(MapPose pose) {
+  Trajectory trajectory;
+  trajectory.standing_pose_ = pose;
+  return trajectory;
+}
+
+double Trajectory::duration() const { return knot_time_.empty() ? 0 : knot_time_.back(); }
+
+KinematicState Trajectory::state_at(double t) const {
+  if (knot_time_.empty()) {
+    KinematicState state;
+    state.x = standing_pose_.position.x;
+    state.y = standing_pose_.position.y;
+    state.heading = standing_pose_.heading;
+    return state;
+  }
+  t = std::max(t, 0.0);
+  if (t >= knot_time_.back()) return state_on_path(path_, path_.length(), 0, 0);
+  // The interval [knot i, knot i + 1) containing t; a knot at infinite time is never reached.
+  auto after = std::upper_bound(knot_time_.begin(), knot_time_.end(), t);
+  std::size_t i = static_cast<std::size_t>(after - knot_time_.begin()) - 1;
+  double v0 = knot_speed_[i];
+  double v1 = knot_speed_[i + 1];
+  double ds = knot_s_[i + 1] - knot_s_[i];
+  double acceleration = (v1 * v1 - v0 * v0) / (2 * ds);
+  if (std::isinf(knot_time_[i + 1])) acceleration = 0;
+  double elapsed = t - knot_time_[i];
+  double speed = std::max(0.0, v0 + acceleration * elapsed);
+  double s =
+      std::min(knot_s_[i] + v0 * elapsed + 0.5 * acceleration * elapsed * elapsed, knot_s_[i + 1]);
+  return state_on_path(path_, s, speed, acceleration);
+}
+
+namespace {
+
+// Where a successor link leaves `from` and enters `to` (as lane_route.cpp finds them): usually
+// from's end and to's start, but a roundabout's ring is joined part-way along.
+struct LinkPoints {
+  double exit_s = 0;
+  double entry_s = 0;
+};
+
+LinkPoints link_points(const RoadMap& map, LaneIndex from, LaneIndex to) {
+  const Polyline& from_line = map.lane(from).centre_line;
+  const Polyline& to_line = map.lane(to).centre_line;
+  const MapPoint from_end = from_line.points().back();
+  const MapPoint to_start = to_line.points().front();
+  LinkPoints link{from_line.length(), 0};
+  if (distance(from_end, to_start) <= kJointTolerance) return link;
+  PolylineProjection exit = from_line.project(to_start);
+  if (exit.distance <= kJointTolerance) {
+    link.exit_s = exit.s;
+    return link;
+  }
+  PolylineProjection entry = to_line.project(from_end);
+  if (entry.distance <= kJointTolerance) link.entry_s = entry.s;
+  return link;
+}
+
+// The segments of a route laid end to end: segment k covers route distances [start[k], end[k]].
+struct RouteLayout {
+  std::vector<double> start, end;
+  // change[k]: segments k and k + 1 are joined by a lane change (else by a successor link).
+  std::vector<bool> change;
+};
+
+RouteLayout lay_out(const RoadMap& map, const LaneRoute& route) {
+  RouteLayout layout;
+  double distance_so_far = 0;
+  for (std::size_t k = 0; k < route.segments.size(); ++k) {
+    const RouteSegment& segment = route.segments[k];
+    if (segment.lane >= map.lanes().size())
+      throw std::invalid_argument("route names a lane the map does not have");
+    if (!(segment.s_begin <= segment.s_end))
+      throw std::invalid_argument("route segment ends before it begins");
+    layout.start.push_back(distance_so_far);
+    distance_so_far += segment.s_end - segment.s_begin;
+    layout.end.push_back(distance_so_far);
+    if (k + 1 == route.segments.size()) break;
+    const RouteSegment& next = route.segments[k + 1];
+    const Lane& lane = map.lane(segment.lane);
+    bool successor =
+        std::find(lane.successors.begin(), lane.successors.end(), next.lane) !=
+            lane.successors.end() &&
+        distance(lane.centre_line.point_at(segment.s_end),
+                 map.lane(next.lane).centre_line.point_at(next.s_begin)) <= kJointTolerance;
+    layout.change.push_back(!successor);
+  }
+  return layout;
+}
+
+// A stretch of the path: on one segment's lane, or blending from one segment's lane to the next
+// one's. A segment's lane extends beyond the segment (lanes beside each other run on together),
+// at s = s_begin + (route distance - segment start).
+struct PathPiece {
+  double begin = 0;
+  double end = 0;
+  std::size_t from = 0;
+  std::size_t to = 0;  // == from when not blending
+};
+
+// Follows the segments and places each lane change's blend: ending at the change point when the
+// lane before has room, otherwise as early as it can and running on into the new lane. Lane
+// changes in a row (a route enters a lane and leaves it sideways at once) share the room up to
+// the next successor link or the route's end.
+std::vector<PathPiece> plan_pieces(const RoadMap& map, const LaneRoute& route,
+                                   const RouteLayout& layout, double lane_change_length) {
+  std::vector<PathPiece> pieces;
+  const std::size_t count = route.segments.size();
+  double cursor = 0;
+  auto follow = [&](std::size_t segment, double until) {
+    if (until > cursor) pieces.push_back({cursor, until, segment, segment});
+    cursor = std::max(cursor, until);
+  };
+  for (std::size_t k = 0; k + 1 < count; ++k) {
+    if (!layout.change[k]) {
+      follow(k, layout.end[k]);
+      continue;
+    }
+    std::size_t changes_after = 0;
+    while (k + 1 + changes_after < count - 1 && layout.change[k + 1 + changes_after])
+      ++changes_after;
+    const double room_end = layout.end[k + 1 + changes_after];
+    const double change_point = layout.end[k];
+    const RouteSegment& old_segment = route.segments[k];
+    const RouteSegment& new_segment = route.segments[k + 1];
+    double old_room = map.lane(old_segment.lane).length() - old_segment.s_end;
+    double new_room = map.lane(new_segment.lane).length() - new_segment.s_begin;
+    double begin = std::max(cursor, change_point - lane_change_length);
+    double share = (room_end - begin) / static_cast<double>(changes_after + 1);
+    double end = std::min({begin + lane_change_length, begin + share, change_point + old_room,
+                           change_point + new_room});
+    follow(k, begin);
+    if (end > begin) {
+      pieces.push_back({begin, end, k, k + 1});
+      cursor = end;
+    }
+  }
+  follow(count - 1, layout.end[count - 1]);
+  return pieces;
+}
+
+MapPoint lane_point(const RoadMap& map, const LaneRoute& route, const RouteLayout& layout,
+                    std::size_t segment, double route_distance, double lateral) {
+  const RouteSegment& on = route.segments[segment];
+  const Polyline& centre_line = map.lane(on.lane).centre_line;
+  double s = on.s_begin + (route_distance - layout.start[segment]);
+  MapPoint centre = centre_line.point_at(s);
+  double heading = direction_at(centre_line, s).heading;
+  return {centre.x - std::sin(heading) * lateral, centre.y + std::cos(heading) * lateral};
+}
+
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+}  // namespace
+
+Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral,
+                    double lane_change_length, double spacing) {
+  if (route.segments.empty()) throw std::invalid_argument("route_path needs a route");
+  if (!(spacing > 0) || !std::isfinite(spacing))
+    throw std::invalid_argument("route_path spacing must be positive");
+  if (!(lane_change_length >= 0) || !std::isfinite(lane_change_length) || !std::isfinite(lateral))
+    throw std::invalid_argument("route_path needs a finite lateral offset and lane change length");
+  RouteLayout layout = lay_out(map, route);
+  std::vector<MapPoint> points;
+  auto add = [&](MapPoint point) {
+    if (points.empty() || distance(points.back(), point) >= kMinimumPointGap)
+      points.push_back(point);
+  };
+  for (const PathPiece& piece : plan_pieces(map, route, layout, lane_change_length)) {
+    double span = piece.end - piece.begin;
+    auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil(span / spacing - 1e-9)));
+    for (std::size_t i = 0; i <= steps; ++i) {
+      double fraction = static_cast<double>(i) / static_cast<double>(steps);
+      double at = piece.begin + span * fraction;
+      MapPoint from = lane_point(map, route, layout, piece.from, at, lateral);
+      if (piece.to == piece.from) {
+        add(from);
+        continue;
+      }
+      MapPoint to = lane_point(map, route, layout, piece.to, at, lateral);
+      double weight = smoothstep(fraction);
+      add({from.x + weight * (to.x - from.x), from.y + weight * (to.y - from.y)});
+    }
+  }
+  if (points.size() < 2)
+    throw std::invalid_argument("route_path: the route has no length (use a standing actor)");
+  return Polyline(points);
+}
+
+LaneRoute route_ahead(const RoadMap& map, LanePosition start, double length) {
+  if (start.lane >= map.lanes().size())
+    throw std::invalid_argument("route_ahead: the map has no such lane");
+  if (!std::isfinite(start.s) || std::isnan(length))
+    throw std::invalid_argument("route_ahead needs a finite s and a length");
+  LaneRoute route;
+  LaneIndex lane = start.lane;
+  double s = std::clamp(start.s, 0.0, map.lane(lane).length());
+  while (route.segments.size() < kMaximumRouteSegments) {
+    const Lane& current = map.lane(lane);
+    double remaining = length - route.length;
+    // Among the successors that branch off ahead, the one that turns least over its first metres
+    // (the nearer branch point on a tie).
+    std::optional<LaneIndex> next;
+    LinkPoints next_link;
+    double least_turn = kInfinity;
+    for (LaneIndex successor : current.successors) {
+      LinkPoints link = link_points(map, lane, successor);
+      if (link.exit_s < s) continue;
+      const Polyline& successor_line = map.lane(successor).centre_line;
+      double ahead = std::min(link.entry_s + kTurnLookahead, successor_line.length());
+      double turn =
+          std::abs(angle_difference(direction_at(successor_line, ahead).heading,
+                                    direction_at(current.centre_line, link.exit_s).heading));
+      if (turn < least_turn || (turn == least_turn && link.exit_s < next_link.exit_s)) {
+        least_turn = turn;
+        next = successor;
+        next_link = link;
+      }
+    }
+    double end = next ? next_link.exit_s : current.length();
+    if (end - s >= remaining || !next) {
+      end = std::min(end, s + std::max(remaining, 0.0));
+      route.segments.push_back({lane, s, end});
+      route.length += end - s;
+      break;
+    }
+    route.segments.push_back({lane, s, end});
+    route.length += end - s;
+    lane = *next;
+    s = next_link.entry_s;
+  }
+  return route;
+}
+
+}  // namespace scenfuzz

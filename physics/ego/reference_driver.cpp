@@ -1,0 +1,250 @@
+// The reference driver: lateral control by pure pursuit on the route's path, longitudinal
+// control by the Intelligent Driver Model (Treiber, Hennecke, Helbing 2000) against every
+// constraint ahead (perceived objects, stop lines, crosswalks with pedestrians, the target),
+// overridden by full braking when the time to collision with an object gets short.
+#include "physics/ego/reference_driver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace scenfuzz {
+namespace {
+
+constexpr double kIdmExponent = 4;
+constexpr double kMinimumDesiredSpeed = 0.1;  // m/s, keeps IDM's free-road term finite
+constexpr double kTargetClearance = 0.5;      // m the centre stops short of the target
+constexpr double kStoppedSpeed = 0.2;         // m/s: standing, for a stop sign
+constexpr double kPredictionTime = 3.0;       // s a pedestrian's or cut-in's motion is projected
+constexpr double kCorridorMargin = 0.4;       // m beside the ego's body that must stay clear
+
+double cross(MapPoint o, MapPoint a, MapPoint b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+double distance_to_segment(MapPoint p, MapPoint a, MapPoint b) {
+  double dx = b.x - a.x, dy = b.y - a.y;
+  double length2 = dx * dx + dy * dy;
+  double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0;
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+// Whether p lies inside the polygon or within `margin` of its outline.
+bool near_polygon(MapPoint p, const std::vector<MapPoint>& polygon, double margin) {
+  if (polygon.size() < 3) return false;
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const MapPoint& a = polygon[j];
+    const MapPoint& b = polygon[i];
+    if ((a.y > p.y) != (b.y > p.y) && (cross(a, b, p) > 0) == (b.y > a.y)) inside = !inside;
+    if (distance_to_segment(p, a, b) <= margin) return true;
+  }
+  return inside;
+}
+
+// Half the extent of a box along and across a direction at `relative_heading` to it.
+double extent_along(const WorldObject& object, double relative_heading) {
+  return std::abs(std::cos(relative_heading)) * object.length / 2 +
+         std::abs(std::sin(relative_heading)) * object.width / 2;
+}
+double extent_across(const WorldObject& object, double relative_heading) {
+  return std::abs(std::sin(relative_heading)) * object.length / 2 +
+         std::abs(std::cos(relative_heading)) * object.width / 2;
+}
+
+}  // namespace
+
+ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
+                                 const ActorClass& vehicle, bool route_ends_at_target,
+                                 const DriverSettings& settings)
+    : map_(map),
+      route_(route),
+      vehicle_(vehicle),
+      route_ends_at_target_(route_ends_at_target),
+      settings_(settings),
+      stop_sign_served_(route.features().size(), false) {
+  // The speed the driver may have at each path vertex: the limit, the bend, and what braking
+  // comfortably for the bends and limits further on allows (one backward pass).
+  const auto& arc = route.path().arc_lengths();
+  speed_envelope_.resize(arc.size());
+  for (std::size_t i = 0; i < arc.size(); ++i) {
+    double limit = std::min(route.speed_limit_at(arc[i]), vehicle.max_speed);
+    double curvature = route.curvature_at(arc[i]);
+    if (curvature > 1e-6) limit = std::min(limit, std::sqrt(settings.lateral_acceleration / curvature));
+    speed_envelope_[i] = limit;
+  }
+  for (std::size_t i = arc.size(); i-- > 1;) {
+    double reachable = std::sqrt(speed_envelope_[i] * speed_envelope_[i] +
+                                 2 * settings.comfortable_deceleration * (arc[i] - arc[i - 1]));
+    speed_envelope_[i - 1] = std::min(speed_envelope_[i - 1], reachable);
+  }
+}
+
+double ReferenceDriver::desired_speed(double s) const {
+  if (speed_envelope_.empty()) return std::min(settings_.default_speed_limit, vehicle_.max_speed);
+  const auto& arc = route_.path().arc_lengths();
+  std::size_t segment = route_.path().segment_at(s);
+  double t = std::clamp((s - arc[segment]) / (arc[segment + 1] - arc[segment]), 0.0, 1.0);
+  return std::max(kMinimumDesiredSpeed,
+                  speed_envelope_[segment] + t * (speed_envelope_[segment + 1] - speed_envelope_[segment]));
+}
+
+double ReferenceDriver::steering(const KinematicState& ego) const {
+  if (route_.empty()) return 0;
+  // Pure pursuit steers the rear axle onto the arc through the target point.
+  double half_base = vehicle_.wheelbase / 2;
+  MapPoint rear{ego.x - half_base * std::cos(ego.heading), ego.y - half_base * std::sin(ego.heading)};
+  double lookahead = std::max(settings_.min_lookahead, settings_.lookahead_time * ego.speed);
+  double target_s = route_.progress() + lookahead;
+  MapPoint target;
+  if (target_s <= route_.length()) {
+    target = route_.path().point_at(target_s);
+  } else {
+    // Beyond the end, keep aiming along the path's last direction.
+    MapPoint end = route_.path().point_at(route_.length());
+    double heading = route_.path().heading_at(route_.length());
+    double beyond = target_s - route_.length();
+    target = {end.x + beyond * std::cos(heading), end.y + beyond * std::sin(heading)};
+  }
+  double dx = target.x - rear.x, dy = target.y - rear.y;
+  double reach = std::hypot(dx, dy);
+  if (reach < 1e-6) return 0;
+  double alpha = angle_difference(std::atan2(dy, dx), ego.heading);
+  return std::atan(2 * vehicle_.wheelbase * std::sin(alpha) / reach);
+}
+
+void ReferenceDriver::collect_object_constraints(const DriverInput& input, double front_s) {
+  const KinematicState& ego = input.ego;
+  double horizon = std::max(60.0, ego.speed * 6 + 30);
+  double half_width = vehicle_.width / 2 + kCorridorMargin;
+  for (const WorldObject& object : input.objects) {
+    double dx = object.x - ego.x, dy = object.y - ego.y;
+    if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
+    auto at = route_.locate({object.x, object.y}, 0, horizon, horizon);
+    if (!at || at->s <= route_.progress()) continue;  // beside or behind the ego's centre
+    double path_heading = route_.path().heading_at(at->s);
+    double relative = angle_difference(object.heading, path_heading);
+    double across = extent_across(object, relative);
+    double along = extent_along(object, relative);
+    double gap = at->s - along - front_s;
+    double lead_speed = object.speed * std::cos(relative);
+    double lateral_speed = object.speed * std::sin(relative);
+    double clearance = std::abs(at->lateral) - across - half_width;
+
+    bool in_path = clearance <= 0;
+    if (!in_path && lateral_speed * at->lateral < 0) {
+      // Moving towards the path: will it be there by the time the ego is?
+      double time_to_enter = clearance / std::abs(lateral_speed);
+      double time_to_arrive = gap / std::max(ego.speed, 1.0);
+      bool pedestrian = object.kind == TraceActorKind::pedestrian;
+      double window = pedestrian ? time_to_arrive + 2.0 : 1.0;
+      in_path = time_to_enter < std::min(window, kPredictionTime + (pedestrian ? 2.0 : 0.0));
+      if (in_path && pedestrian) lead_speed = 0;  // it will stand in the way, not drive ahead
+    }
+    if (!in_path) continue;
+    DriverReason reason =
+        object.kind == TraceActorKind::pedestrian ? DriverReason::pedestrian : DriverReason::lead;
+    constraints_.push_back({gap, settings_.standstill_gap, std::max(lead_speed, 0.0), true, reason});
+  }
+}
+
+void ReferenceDriver::collect_feature_constraints(const DriverInput& input, double front_s) {
+  const KinematicState& ego = input.ego;
+  double horizon = std::max(80.0, ego.speed * 8 + 40);
+  double full_stop = ego.speed * ego.speed / (2 * vehicle_.max_deceleration);
+  double calm_stop = ego.speed * ego.speed / (2 * settings_.comfortable_deceleration);
+  const auto& features = route_.features();
+  for (std::size_t i = 0; i < features.size(); ++i) {
+    const RouteFeature& feature = features[i];
+    double to_line = feature.s - front_s;
+    if (to_line > horizon) break;
+    if (to_line < -0.5) {
+      if (feature.kind == FeatureKind::stop_sign) stop_sign_served_[i] = true;
+      continue;
+    }
+    switch (feature.kind) {
+      case FeatureKind::traffic_light: {
+        SignalColour colour =
+            feature.index < input.lights.size() ? input.lights[feature.index] : SignalColour::green;
+        bool stop = (colour == SignalColour::red && to_line > full_stop - 1) ||
+                    (colour == SignalColour::yellow && to_line > calm_stop);
+        if (stop)
+          constraints_.push_back({to_line, settings_.stop_line_gap, 0, false, DriverReason::red_light});
+        break;
+      }
+      case FeatureKind::stop_sign: {
+        if (stop_sign_served_[i]) break;
+        if (to_line < settings_.stop_line_gap + 3 && ego.speed < kStoppedSpeed) {
+          if (stopped_since_ < 0) stopped_since_ = input.time;
+          if (input.time - stopped_since_ >= settings_.stop_sign_wait) {
+            stop_sign_served_[i] = true;
+            stopped_since_ = -1;
+            break;
+          }
+        }
+        constraints_.push_back({to_line, settings_.stop_line_gap, 0, false, DriverReason::stop_sign});
+        break;
+      }
+      case FeatureKind::yield_sign: break;
+      case FeatureKind::crosswalk: {
+        if (to_line < full_stop) break;  // too late to stop before it: clear it instead
+        const Crosswalk& crosswalk = map_.crosswalks()[feature.index];
+        bool occupied = std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
+          return o.kind == TraceActorKind::pedestrian &&
+                 near_polygon({o.x, o.y}, crosswalk.outline, settings_.crosswalk_clearance);
+        });
+        if (occupied)
+          constraints_.push_back({to_line, settings_.stop_line_gap, 0, false, DriverReason::pedestrian});
+        break;
+      }
+    }
+  }
+  if (route_ends_at_target_)
+    constraints_.push_back({route_.length() - route_.progress(), kTargetClearance, 0, false,
+                            DriverReason::target});
+}
+
+double ReferenceDriver::idm_acceleration(double speed, double desired,
+                                         const Constraint& constraint) const {
+  double a = settings_.comfortable_acceleration;
+  double b = settings_.comfortable_deceleration;
+  double approach = speed * (speed - constraint.lead_speed) / (2 * std::sqrt(a * b));
+  double wanted_gap = constraint.clearance + std::max(0.0, speed * settings_.time_gap + approach);
+  double gap = std::max(constraint.gap, 0.01);
+  return a * (1 - std::pow(speed / desired, kIdmExponent) - (wanted_gap / gap) * (wanted_gap / gap));
+}
+
+VehicleControl ReferenceDriver::step(const DriverInput& input) {
+  const KinematicState& ego = input.ego;
+  double front_s = route_.progress() + vehicle_.length / 2;
+  constraints_.clear();
+  collect_object_constraints(input, front_s);
+  collect_feature_constraints(input, front_s);
+
+  double desired = desired_speed(route_.progress());
+  double a = settings_.comfortable_acceleration;
+  double acceleration = a * (1 - std::pow(ego.speed / desired, kIdmExponent));
+  reason_ = DriverReason::cruise;
+  for (const Constraint& constraint : constraints_) {
+    double candidate = idm_acceleration(ego.speed, desired, constraint);
+    if (candidate < acceleration) {
+      acceleration = candidate;
+      reason_ = constraint.reason;
+    }
+    if (!constraint.is_object) continue;
+    double closing = ego.speed - constraint.lead_speed;
+    bool collision_course = closing > 0 && constraint.gap / closing < settings_.emergency_time_to_collision;
+    if (collision_course || (constraint.gap < 0.5 && ego.speed > 0)) {
+      acceleration = -vehicle_.max_deceleration;
+      reason_ = DriverReason::emergency;
+    }
+  }
+  if (!route_.empty() && route_.progress() >= route_.length() - 0.01 && !route_ends_at_target_) {
+    // The end of the lanes: stop rather than drive off the map.
+    acceleration = -settings_.comfortable_deceleration;
+  }
+  acceleration = std::clamp(acceleration, -vehicle_.max_deceleration, vehicle_.max_acceleration);
+  return {acceleration, std::clamp(steering(ego), -vehicle_.max_steering_angle, vehicle_.max_steering_angle)};
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,79 @@
+// The built-in ego under test: a reference driver competent enough that what the fuzzer finds is
+// interesting. It follows its route (pure pursuit on the route's path), keeps the speed limit and
+// slows for bends, follows the perceived lead with the Intelligent Driver Model, brakes hard on a
+// short time-to-collision, stops for red (and catchable yellow) lights, stops at stop signs and
+// then goes on, yields to pedestrians on or about to enter its path and in crosswalks ahead, and
+// stops at its target. It sees only what perception gives it.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "physics/actors/kinematics.hpp"
+#include "physics/ego/perception.hpp"
+#include "physics/ego/route_tracker.hpp"
+
+namespace scenfuzz {
+
+struct DriverSettings {
+  double time_gap = 1.5;                  // s, IDM's desired time headway
+  double standstill_gap = 2.5;            // m, bumper to bumper behind a stopped lead
+  double stop_line_gap = 1.0;             // m between the front bumper and a stop line
+  double comfortable_acceleration = 1.5;  // m/s^2, IDM's a
+  double comfortable_deceleration = 2.5;  // m/s^2, IDM's b
+  double emergency_time_to_collision = 1.5;  // s: below it, full braking
+  double lateral_acceleration = 2.0;         // m/s^2 allowed in bends
+  double default_speed_limit = 13.9;         // m/s on lanes without a limit (50 km/h)
+  double stop_sign_wait = 1.0;               // s standing at a stop sign before going on
+  double crosswalk_clearance = 1.5;          // m around a crosswalk where a pedestrian counts
+  double lookahead_time = 0.8;               // s of travel to the pure-pursuit target point
+  double min_lookahead = 5.0;                // m
+};
+
+// What the driver knows at one step.
+struct DriverInput {
+  double time = 0;
+  KinematicState ego;                       // its own state (odometry is exact)
+  std::span<const WorldObject> objects;     // perceived objects
+  std::span<const SignalColour> lights;     // every map light's colour now (index as the map's)
+};
+
+// Why the driver chose its acceleration, for tests and the trace's reading.
+enum class DriverReason { cruise, lead, emergency, red_light, stop_sign, pedestrian, target };
+
+class ReferenceDriver {
+ public:
+  ReferenceDriver(const RoadMap& map, const RouteTracker& route, const ActorClass& vehicle,
+                  bool route_ends_at_target, const DriverSettings& settings = {});
+
+  VehicleControl step(const DriverInput& input);
+  DriverReason last_reason() const { return reason_; }
+
+ private:
+  struct Constraint {
+    double gap = 0;         // m from the front bumper (the centre, for the target) to it
+    double clearance = 0;   // m to keep when standing behind it (IDM's s0)
+    double lead_speed = 0;  // m/s along the path
+    bool is_object = false; // a real object (time-to-collision braking applies)
+    DriverReason reason = DriverReason::lead;
+  };
+
+  double desired_speed(double s) const;
+  double steering(const KinematicState& ego) const;
+  void collect_object_constraints(const DriverInput& input, double front_s);
+  void collect_feature_constraints(const DriverInput& input, double front_s);
+  double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
+
+  const RoadMap& map_;
+  const RouteTracker& route_;
+  ActorClass vehicle_;
+  bool route_ends_at_target_;
+  DriverSettings settings_;
+  std::vector<double> speed_envelope_;  // per path vertex: the speed limit and bends, braked back
+  std::vector<Constraint> constraints_;
+  std::vector<bool> stop_sign_served_;  // per route feature
+  double stopped_since_ = -1;
+  DriverReason reason_ = DriverReason::cruise;
+};
+
+}  // namespace scenfuzz

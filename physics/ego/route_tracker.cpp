@@ -1,0 +1,102 @@
+// Route tracking for the ego: the path, its features and limits, computed once per run; progress
+// and object positions found by searching only the stretch of path near the ego.
+#include "physics/ego/route_tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/actors/trajectory.hpp"
+
+namespace scenfuzz {
+namespace {
+
+// Curvature is measured over this many path vertices on either side, so that the polyline's
+// small kinks (1 m spacing) do not look like sharp bends.
+constexpr std::size_t kCurvatureReach = 3;
+
+}  // namespace
+
+RouteTracker::RouteTracker(const RoadMap& map, const LaneRoute& route,
+                           std::span<const std::pair<LaneIndex, double>> speed_limits,
+                           double default_speed_limit) {
+  if (route.segments.empty()) return;
+  path_ = route_path(map, route);
+
+  double route_s = 0;
+  for (const RouteSegment& segment : route.segments) {
+    const Lane& lane = map.lane(segment.lane);
+    double limit = lane.speed_limit > 0 ? lane.speed_limit : default_speed_limit;
+    for (const auto& [limited_lane, speed] : speed_limits)
+      if (limited_lane == segment.lane && speed > 0) limit = speed;
+    limit_s_.push_back(route_s);
+    limit_speed_.push_back(limit);
+    for (const LaneFeature& feature : lane.features) {
+      if (feature.s_end < segment.s_begin || feature.s_begin > segment.s_end) continue;
+      double s = route_s + std::max(0.0, feature.s_begin - segment.s_begin);
+      double s_end = route_s + std::min(segment.s_end, feature.s_end) - segment.s_begin;
+      // A feature met again on the next lane (a crosswalk spanning two lanes) is one feature.
+      bool repeated = std::any_of(features_.begin(), features_.end(), [&](const RouteFeature& f) {
+        return f.kind == feature.kind && f.index == feature.index && s - f.s_end < 1;
+      });
+      if (!repeated) features_.push_back({feature.kind, feature.index, s, s_end});
+    }
+    route_s += segment.s_end - segment.s_begin;
+  }
+  std::sort(features_.begin(), features_.end(),
+            [](const RouteFeature& a, const RouteFeature& b) { return a.s < b.s; });
+
+  const auto& points = path_.points();
+  const auto& arc = path_.arc_lengths();
+  curvature_.assign(points.size(), 0.0);
+  std::size_t segments = path_.segment_count();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::size_t before = i > kCurvatureReach ? i - kCurvatureReach : 0;
+    std::size_t after = std::min(i + kCurvatureReach, segments);
+    if (after <= before + 1) continue;
+    // Segment headings belong to segment midpoints: the turn between two of them happens over
+    // the distance between those midpoints.
+    double turn = angle_difference(path_.heading_at(arc[after - 1]), path_.heading_at(arc[before]));
+    double from = (arc[before] + arc[before + 1]) / 2;
+    double to = (arc[after - 1] + arc[after]) / 2;
+    if (to > from) curvature_[i] = std::abs(turn) / (to - from);
+  }
+}
+
+void RouteTracker::update(MapPoint point) {
+  if (empty()) return;
+  // Progress moves on by at most a few metres per step; search a little behind and ahead.
+  auto found = locate(point, 5, 20, 1e9);
+  if (found) {
+    progress_ = std::max(progress_, found->s);
+    segment_ = path_.segment_at(progress_);
+  }
+}
+
+double RouteTracker::speed_limit_at(double s) const {
+  if (limit_s_.empty()) return 0;
+  auto next = std::upper_bound(limit_s_.begin(), limit_s_.end(), s);
+  std::size_t index = next == limit_s_.begin() ? 0 : static_cast<std::size_t>(next - limit_s_.begin()) - 1;
+  return limit_speed_[index];
+}
+
+double RouteTracker::curvature_at(double s) const {
+  if (curvature_.empty()) return 0;
+  std::size_t segment = path_.segment_at(s);
+  return std::max(curvature_[segment], curvature_[std::min(segment + 1, curvature_.size() - 1)]);
+}
+
+std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, double behind, double ahead,
+                                                   double max_lateral) const {
+  if (empty()) return std::nullopt;
+  std::size_t first = path_.segment_at(std::max(0.0, progress_ - behind));
+  std::size_t last = path_.segment_at(std::min(length(), progress_ + ahead));
+  std::optional<PolylineProjection> best;
+  for (std::size_t segment = first; segment <= last; ++segment) {
+    PolylineProjection projection = path_.project_to_segment(point, segment);
+    if (!best || projection.distance < best->distance) best = projection;
+  }
+  if (!best || best->distance > max_lateral) return std::nullopt;
+  return PathCoordinate{best->s, best->lateral};
+}
+
+}  // namespace scenfuzz

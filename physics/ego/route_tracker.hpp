@@ -1,0 +1,67 @@
+// The ego's route as a path to follow: the drivable path along its lane route, how far along it
+// the ego has come, the traffic lights, signs and crosswalks on it, the speed limit at each
+// point, and where other objects lie relative to it. Shared by the reference driver and by
+// what a plugin driver is told.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "physics/map/lane_route.hpp"
+#include "physics/map/polyline.hpp"
+#include "physics/map/road_map.hpp"
+
+namespace scenfuzz {
+
+// A light, sign or crosswalk on the route, at arc length `s` of the path (where it begins).
+struct RouteFeature {
+  FeatureKind kind = FeatureKind::traffic_light;
+  std::uint32_t index = 0;  // into the map's traffic_lights(), signs() or crosswalks()
+  double s = 0;
+  double s_end = 0;
+};
+
+// Where a point lies along the path: arc length and signed lateral offset (left positive).
+struct PathCoordinate {
+  double s = 0;
+  double lateral = 0;
+};
+
+class RouteTracker {
+ public:
+  // `speed_limits` override the map's limit on the lanes they name; `default_speed_limit`
+  // stands in for lanes without one.
+  RouteTracker(const RoadMap& map, const LaneRoute& route,
+               std::span<const std::pair<LaneIndex, double>> speed_limits,
+               double default_speed_limit);
+
+  // Moves the progress to the projection of `point` near where it was.
+  void update(MapPoint point);
+
+  const Polyline& path() const { return path_; }
+  double progress() const { return progress_; }
+  double length() const { return path_.length(); }
+  bool empty() const { return path_.points().size() < 2; }
+  const std::vector<RouteFeature>& features() const { return features_; }
+  double speed_limit_at(double s) const;
+  // The path's curvature (1/m, unsigned) around arc length s.
+  double curvature_at(double s) const;
+
+  // Where `point` lies on the path between progress - behind and progress + ahead, or nullopt
+  // when it is nearer to no point of that stretch than `max_lateral`.
+  std::optional<PathCoordinate> locate(MapPoint point, double behind, double ahead,
+                                       double max_lateral) const;
+
+ private:
+  Polyline path_;
+  std::vector<RouteFeature> features_;
+  std::vector<double> limit_s_, limit_speed_;  // speed limit from each s on
+  std::vector<double> curvature_;              // per path vertex
+  std::size_t segment_ = 0;
+  double progress_ = 0;
+};
+
+}  // namespace scenfuzz

@@ -1,0 +1,26 @@
+// Which lane an actor is on, step after step, for the trace's lane and s columns. Asking the
+// map's spatial index every step for every actor would dominate a step; an actor is almost always
+// still on the lane it was on, so that lane is checked first, near where the actor was.
+#pragma once
+
+#include <cstdint>
+
+#include "physics/map/lane_queries.hpp"
+
+namespace scenfuzz {
+
+struct LaneFix {
+  std::int32_t lane = -1;  // -1: on no lane
+  double s = 0;
+};
+
+class LaneTracker {
+ public:
+  LaneFix update(const RoadMap& map, MapPoint point, double heading);
+
+ private:
+  std::int32_t lane_ = -1;
+  std::size_t segment_ = 0;
+};
+
+}  // namespace scenfuzz

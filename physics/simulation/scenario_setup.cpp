@@ -1,0 +1,475 @@
+// Evaluates a scenario's actors, obstacles, lights and environment at one point of the search
+// space, and plans what the scripted actors will do.
+#include "physics/simulation/scenario_setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include "lang/number_format.hpp"
+#include "physics/actors/random_walk.hpp"
+#include "physics/map/lane_queries.hpp"
+#include "physics/map/lane_route.hpp"
+#include "physics/map/scenario_position.hpp"
+#include "physics/planning/path_planner.hpp"
+
+namespace scenfuzz {
+namespace {
+
+constexpr double kDefaultDuration = 30;
+constexpr double kDefaultPedestrianSpeed = 1.2;  // m/s, a typical walking pace
+constexpr double kRandomWalkRadius = 10;         // m around the start
+// Scripted NPCs stop at the end of their path as a calm driver would.
+constexpr double kPathEndMargin = 50;  // m of lane beyond what the duration needs
+
+struct Context {
+  const ScenarioTemplate& scenario;
+  std::span<const double> values;
+  const RoadMap& map;
+  std::uint64_t seed;
+  Diagnostics& diagnostics;
+  std::optional<MapPose> ego_pose;
+  std::unordered_map<std::string, double> initial_headings;  // by actor name
+  double duration = kDefaultDuration;
+};
+
+double heading_in_radians(const Heading& heading, std::span<const double> values) {
+  double angle = evaluate(heading.angle, values);
+  return heading.unit == AngleUnit::degree ? angle * std::numbers::pi / 180 : angle;
+}
+
+// The direction a heading is measured from, or nullopt after reporting why it is unknown.
+std::optional<double> reference_heading(Context& context, const Direction& direction) {
+  switch (direction.kind) {
+    case Direction::Kind::lane: {
+      auto lane = context.map.find_lane(direction.lane);
+      if (!lane) {
+        context.diagnostics.error(direction.location, "unknown lane '" + direction.lane +
+                                                          "' on map '" + context.map.name() + "'");
+        return std::nullopt;
+      }
+      double s = std::clamp(evaluate(direction.s, context.values), 0.0,
+                            context.map.lane(*lane).length());
+      return lane_heading_at(context.map, *lane, s);
+    }
+    case Direction::Kind::ego:
+      if (!context.ego_pose) {
+        context.diagnostics.error(direction.location,
+                                  "the ego's own heading cannot be related to the ego");
+        return std::nullopt;
+      }
+      return context.ego_pose->heading;
+    case Direction::Kind::actor: {
+      auto known = context.initial_headings.find(direction.actor);
+      if (known == context.initial_headings.end()) {
+        context.diagnostics.error(direction.location,
+                                  "the heading is related to '" + direction.actor +
+                                      "', whose initial heading is not known here (only actors "
+                                      "defined before this one, and the ego, can be referred to)");
+        return std::nullopt;
+      }
+      return known->second;
+    }
+  }
+  return std::nullopt;
+}
+
+// A state's pose: its position, and its heading (the lane's direction when it gives none).
+std::optional<MapPose> place_state(Context& context, const State& state) {
+  if (state.position.kind == PositionKind::relative) {
+    context.diagnostics.error(state.position.location,
+                              "positions relative to another actor are not simulated yet");
+    return std::nullopt;
+  }
+  auto placed = place_position(context.map, state.position, context.values, context.ego_pose,
+                               context.diagnostics);
+  if (!placed) return std::nullopt;
+  if (placed->overshoot > 0.01)
+    context.diagnostics.warning(state.position.location,
+                                "s lies " + format_number(placed->overshoot) +
+                                    " m outside lane '" + state.position.lane +
+                                    "'; the lane's end is used, as Apollo does");
+  MapPose pose = placed->pose;
+  if (!state.heading) {
+    if (!placed->lane) {
+      auto lane = project_to_lane(context.map, pose.position);
+      if (lane) pose.heading = lane_heading_at(context.map, lane->lane, lane->s);
+    }
+    return pose;
+  }
+  double angle = heading_in_radians(*state.heading, context.values);
+  if (!std::isfinite(angle)) {
+    context.diagnostics.error(state.heading->location, "the heading is not a finite number");
+    return std::nullopt;
+  }
+  if (state.heading->relative_to) {
+    auto reference = reference_heading(context, *state.heading->relative_to);
+    if (!reference) return std::nullopt;
+    angle += *reference;
+  }
+  pose.heading = angle;
+  return pose;
+}
+
+// A speed the scenario gives, checked; `fallback` when it gives none.
+std::optional<double> speed_of(Context& context, const State& state, double fallback) {
+  if (!state.speed) return fallback;
+  double speed = evaluate(*state.speed, context.values);
+  if (!std::isfinite(speed) || speed < 0) {
+    context.diagnostics.error(state.speed->location, "a speed must be a finite number >= 0, not " +
+                                                         format_number(speed));
+    return std::nullopt;
+  }
+  return speed;
+}
+
+ActorClass body_of(Context& context, const Actor& actor, ActorCategory fallback) {
+  ActorCategory category = fallback;
+  if (actor.type) {
+    auto known = category_for_model(actor.type->model);
+    if (known) {
+      category = *known;
+    } else {
+      context.diagnostics.warning(actor.type->location,
+                                  "unknown vehicle model '" + actor.type->model + "'; simulated as a " +
+                                      std::string(actor_class(fallback).name) +
+                                      " (docs/simulation.md lists the known models)");
+    }
+  }
+  ActorClass body = actor_class(category);
+  if (actor.type && actor.type->height) {
+    double height = evaluate(*actor.type->height, context.values);
+    if (std::isfinite(height) && height > 0) body.height = height;
+  }
+  return body;
+}
+
+std::uint64_t actor_seed(std::uint64_t seed, std::size_t actor) {
+  // SplitMix64 of (seed, actor): neighbouring actors get unrelated streams.
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (actor + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+Trajectory standing_at(const MapPose& pose) { return Trajectory::standing(pose); }
+
+// A vehicle that follows lanes: to its target over the lane graph, or along the lanes ahead.
+std::optional<Trajectory> lane_following(Context& context, const Actor& actor, const MapPose& start,
+                                         double speed, const ActorClass& body) {
+  std::optional<LaneRoute> route;
+  if (actor.target) {
+    auto target = place_state(context, *actor.target);
+    if (!target) return std::nullopt;
+    route = find_route(context.map, start, *target);
+    if (!route) {
+      context.diagnostics.error(actor.target->location,
+                                "no route over the lanes of map '" + context.map.name() +
+                                    "' leads from " + actor.name + "'s initial position to this target");
+      return std::nullopt;
+    }
+  } else {
+    auto lane = project_to_lane(context.map, start.position, start.heading);
+    if (!lane) return standing_at(start);
+    route = route_ahead(context.map, LanePosition{lane->lane, lane->s, 0},
+                        speed * context.duration + kPathEndMargin);
+  }
+  if (route->segments.empty() || route->length < 0.5) return standing_at(start);
+  auto projection = project_to_lane(context.map, start.position, start.heading);
+  double lateral = projection ? projection->lateral : 0.0;
+  Polyline path = route_path(context.map, *route, lateral);
+  return Trajectory(std::move(path), {{0, speed}}, body.comfortable_deceleration);
+}
+
+// A pedestrian walks in straight lines: along its heading, or to its target.
+std::optional<Trajectory> straight_walk(Context& context, const Actor& actor, const MapPose& start,
+                                        double speed) {
+  MapPoint end;
+  if (actor.target) {
+    auto target = place_state(context, *actor.target);
+    if (!target) return std::nullopt;
+    end = target->position;
+  } else {
+    double reach = std::max(speed * context.duration, 1.0);
+    end = {start.position.x + reach * std::cos(start.heading),
+           start.position.y + reach * std::sin(start.heading)};
+  }
+  if (speed <= 0 || distance(start.position, end) < 0.01) return standing_at(start);
+  std::vector<MapPoint> points{start.position, end};
+  return Trajectory(Polyline(points), {{0, speed}}, actor_class(ActorCategory::pedestrian).max_deceleration);
+}
+
+// Through the waypoints in order (then the target): OMPL paths for vehicles, straight legs for
+// pedestrians; the speed given at each waypoint is reached there.
+std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor,
+                                            const MapPose& start, double speed,
+                                            const ActorClass& body, std::size_t actor_index,
+                                            const CollisionWorld& obstacles,
+                                            const BodyGeometry& geometry) {
+  std::vector<MapPose> poses{start};
+  std::vector<double> speeds{speed};
+  std::vector<State> states = actor.motion.states;
+  if (actor.target) states.push_back(*actor.target);
+  for (const State& state : states) {
+    auto pose = place_state(context, state);
+    if (!pose) return std::nullopt;
+    auto waypoint_speed = speed_of(context, state, speeds.back());
+    if (!waypoint_speed) return std::nullopt;
+    if (distance(pose->position, poses.back().position) < 0.01) {
+      speeds.back() = *waypoint_speed;  // a waypoint where the actor already is: a new speed
+      continue;
+    }
+    poses.push_back(*pose);
+    speeds.push_back(*waypoint_speed);
+  }
+  if (poses.size() < 2) return standing_at(start);
+
+  std::vector<MapPoint> points;
+  std::vector<double> waypoint_s;
+  if (body.category == ActorCategory::pedestrian) {
+    double s = 0;
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+      if (i > 0) s += distance(poses[i - 1].position, poses[i].position);
+      points.push_back(poses[i].position);
+      waypoint_s.push_back(s);
+    }
+  } else {
+    PathRequest request;
+    request.waypoints = poses;
+    request.turning_radius = body.min_turning_radius();
+    request.seed = actor_seed(context.seed, actor_index);
+    if (obstacles.body_count() > 0)
+      request.is_free = [&](const MapPose& pose) { return !obstacles.touches_static(geometry, pose); };
+    try {
+      PlannedPath planned = plan_path(request);
+      for (const MapPose& pose : planned.poses) points.push_back(pose.position);
+      for (std::size_t index : planned.waypoint_at) waypoint_s.push_back(planned.s[index]);
+    } catch (const PlanningError& error) {
+      context.diagnostics.error(actor.motion.location.line > 0 ? actor.motion.location : actor.location,
+                                "cannot plan " + actor.name + "'s path through its waypoints: " +
+                                    error.what());
+      return std::nullopt;
+    }
+  }
+  std::vector<SpeedPoint> profile;
+  for (std::size_t i = 0; i < waypoint_s.size(); ++i) {
+    if (!profile.empty() && waypoint_s[i] <= profile.back().s) continue;
+    profile.push_back({waypoint_s[i], speeds[i]});
+  }
+  // The last waypoint's speed is reached there; the actor then stops at the path's end, which is
+  // that waypoint, so it keeps no speed beyond it.
+  return Trajectory(Polyline(points), std::move(profile), body.comfortable_deceleration);
+}
+
+std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
+                                           std::size_t actor_index, const CollisionWorld& obstacles) {
+  bool pedestrian = actor.kind == ActorKind::pedestrian;
+  ScriptedActor scripted;
+  scripted.name = actor.name;
+  scripted.kind = pedestrian ? TraceActorKind::pedestrian : TraceActorKind::vehicle;
+  scripted.body = body_of(context, actor, pedestrian ? ActorCategory::pedestrian
+                          : actor.kind == ActorKind::cyclist ? ActorCategory::bicycle
+                                                              : ActorCategory::car);
+  auto start = place_state(context, actor.initial);
+  if (!start) return std::nullopt;
+  context.initial_headings[actor.name] = start->heading;
+  auto initial_speed = speed_of(context, actor.initial, 0.0);
+  if (!initial_speed) return std::nullopt;
+  BodyGeometry geometry{BodyShape::box, scripted.body.length, scripted.body.width,
+                        scripted.body.height};
+
+  std::optional<Trajectory> trajectory;
+  switch (actor.motion.kind) {
+    case MotionKind::follow_route:
+    case MotionKind::uniform: {
+      double speed = *initial_speed;
+      if (actor.motion.kind == MotionKind::uniform && !actor.motion.states.empty()) {
+        auto uniform = speed_of(context, actor.motion.states.front(), speed);
+        if (!uniform) return std::nullopt;
+        speed = *uniform;
+      }
+      if (pedestrian && speed == 0 && actor.motion.kind == MotionKind::uniform)
+        speed = kDefaultPedestrianSpeed;
+      trajectory = pedestrian ? straight_walk(context, actor, *start, speed)
+                              : lane_following(context, actor, *start, speed, scripted.body);
+      break;
+    }
+    case MotionKind::waypoints:
+      trajectory = through_waypoints(context, actor, *start, *initial_speed, scripted.body,
+                                     actor_index, obstacles, geometry);
+      break;
+    case MotionKind::random_walk: {
+      double speed = *initial_speed;
+      if (!actor.motion.states.empty()) {
+        auto walk = speed_of(context, actor.motion.states.front(), speed);
+        if (!walk) return std::nullopt;
+        speed = *walk;
+      }
+      if (speed <= 0) speed = kDefaultPedestrianSpeed;
+      Polyline walk = random_walk_path(*start, speed, context.duration, kRandomWalkRadius,
+                                       actor_seed(context.seed, actor_index));
+      trajectory = Trajectory(std::move(walk), {{0, speed}}, scripted.body.max_deceleration);
+      break;
+    }
+    case MotionKind::manoeuvres:
+      context.diagnostics.error(actor.motion.location,
+                                "manoeuvre phases (" + actor.name + ") are not simulated yet");
+      return std::nullopt;
+  }
+  if (!trajectory) return std::nullopt;
+  scripted.trajectory = std::move(*trajectory);
+  return scripted;
+}
+
+BodyGeometry obstacle_geometry(Context& context, const Obstacle& obstacle) {
+  // Without a shape, an obstacle is a 1 m cube: about a pallet or a large box on the road.
+  if (!obstacle.shape) return {BodyShape::box, 1, 1, 1};
+  std::vector<double> d;
+  for (const Value& value : obstacle.shape->dimensions) d.push_back(evaluate(value, context.values));
+  auto at = [&](std::size_t i, double fallback) {
+    return i < d.size() && std::isfinite(d[i]) && d[i] > 0 ? d[i] : fallback;
+  };
+  switch (obstacle.shape->kind) {
+    case ShapeKind::sphere: {
+      double diameter = 2 * at(0, 0.5);
+      return {BodyShape::sphere, diameter, diameter, diameter};
+    }
+    case ShapeKind::box: return {BodyShape::box, at(0, 1), at(1, 1), at(2, 1)};
+    case ShapeKind::cone: return {BodyShape::cone, 2 * at(0, 0.5), 2 * at(0, 0.5), at(1, 1)};
+    case ShapeKind::cylinder:
+      return {BodyShape::cylinder, 2 * at(0, 0.5), 2 * at(0, 0.5), at(1, 1)};
+  }
+  return {BodyShape::box, 1, 1, 1};
+}
+
+std::optional<SignalColour> colour_named(const std::string& name) {
+  std::string lower;
+  for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "red") return SignalColour::red;
+  if (lower == "yellow" || lower == "amber") return SignalColour::yellow;
+  if (lower == "green") return SignalColour::green;
+  return std::nullopt;
+}
+
+void prepare_lights(Context& context, SimulationSetup& setup) {
+  for (const TrafficLightSetting& setting : context.scenario.traffic.lights) {
+    auto colour = colour_named(setting.color);
+    if (!colour) {
+      context.diagnostics.error(setting.location, "unknown traffic-light colour '" + setting.color +
+                                                      "' (expected red, yellow or green)");
+      continue;
+    }
+    const auto& lights = context.map.traffic_lights();
+    auto light = std::find_if(lights.begin(), lights.end(),
+                              [&](const TrafficLight& l) { return l.id == setting.id; });
+    if (light == lights.end()) {
+      context.diagnostics.error(setting.location, "map '" + context.map.name() +
+                                                      "' has no traffic light '" + setting.id + "'");
+      continue;
+    }
+    setup.lights.push_back({static_cast<std::uint32_t>(light - lights.begin()), *colour});
+  }
+}
+
+Conditions conditions_of(Context& context) {
+  Conditions conditions;
+  const auto& environment = context.scenario.environment;
+  double time_of_day = 12 * 3600;
+  if (environment && environment->time_of_day)
+    time_of_day = evaluate(*environment->time_of_day, context.values);
+  conditions.darkness = darkness_at(time_of_day);
+  if (!environment) return conditions;
+  for (const WeatherComponent& component : environment->weather) {
+    double intensity = std::clamp(evaluate(component.intensity, context.values), 0.0, 1.0);
+    if (std::isnan(intensity)) intensity = 0;
+    if (component.kind == "fog") conditions.fog = intensity;
+    else if (component.kind == "rain") conditions.rain = intensity;
+    else if (component.kind == "snow") conditions.snow = intensity;
+  }
+  return conditions;
+}
+
+}  // namespace
+
+std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenario,
+                                                  std::span<const double> values,
+                                                  const RoadMap& map, std::uint64_t seed,
+                                                  Diagnostics& diagnostics) {
+  std::size_t errors_before = diagnostics.error_count();
+  Context context{scenario, values, map, seed, diagnostics, std::nullopt, {}, kDefaultDuration};
+  SimulationSetup setup;
+  if (scenario.duration) {
+    double duration = evaluate(*scenario.duration, values);
+    if (std::isfinite(duration) && duration > 0) context.duration = duration;
+  }
+  setup.duration = context.duration;
+
+  const Actor& ego = scenario.ego;
+  if (!ego.name.empty()) setup.ego_name = ego.name;
+  setup.ego_body = body_of(context, ego, ActorCategory::car);
+  auto ego_pose = place_state(context, ego.initial);
+  if (!ego_pose) return std::nullopt;
+  context.ego_pose = ego_pose;
+  context.initial_headings[setup.ego_name] = ego_pose->heading;
+  auto ego_speed = speed_of(context, ego.initial, 0.0);
+  if (!ego_speed) return std::nullopt;
+  setup.ego_initial.x = ego_pose->position.x;
+  setup.ego_initial.y = ego_pose->position.y;
+  setup.ego_initial.heading = ego_pose->heading;
+  setup.ego_initial.speed = std::min(*ego_speed, setup.ego_body.max_speed);
+  if (ego.target) {
+    auto target = place_state(context, *ego.target);
+    if (!target) return std::nullopt;
+    setup.ego_target = target;
+    auto route = find_route(map, *ego_pose, *target);
+    if (!route) {
+      diagnostics.error(ego.target->location, "no route over the lanes of map '" + map.name() +
+                                                  "' leads from the ego's initial position to its "
+                                                  "target");
+      return std::nullopt;
+    }
+    setup.ego_route = std::move(*route);
+  } else {
+    auto lane = project_to_lane(map, ego_pose->position, ego_pose->heading);
+    if (lane)
+      setup.ego_route = route_ahead(map, LanePosition{lane->lane, lane->s, 0},
+                                    setup.ego_body.max_speed * context.duration + kPathEndMargin);
+  }
+
+  // Obstacles first: vehicles' paths are planned around them.
+  CollisionWorld obstacles;
+  for (const Obstacle& obstacle : scenario.obstacles) {
+    State state;
+    state.position = obstacle.position;
+    state.heading = obstacle.heading;
+    auto pose = place_state(context, state);
+    if (!pose) continue;
+    StaticObstacle placed{obstacle.name, obstacle_geometry(context, obstacle), *pose};
+    obstacles.add_body(placed.geometry, placed.pose, true);
+    setup.obstacles.push_back(std::move(placed));
+  }
+
+  std::size_t index = 0;
+  for (const auto* group : {&scenario.vehicles, &scenario.pedestrians}) {
+    for (const Actor& actor : *group) {
+      auto scripted = prepare_actor(context, actor, ++index, obstacles);
+      if (scripted) setup.actors.push_back(std::move(*scripted));
+    }
+  }
+
+  prepare_lights(context, setup);
+  for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
+    auto lane = map.find_lane(limit.lane);
+    if (!lane) {
+      diagnostics.error(limit.location, "unknown lane '" + limit.lane + "' on map '" + map.name() + "'");
+      continue;
+    }
+    setup.speed_limits.emplace_back(*lane, evaluate(limit.upper, values));
+  }
+  setup.conditions = conditions_of(context);
+  if (diagnostics.error_count() > errors_before) return std::nullopt;
+  return setup;
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,69 @@
+// From a scenario to what the simulation runs: every actor placed on the map with its class and
+// initial state, every scripted NPC's trajectory planned (lane routes, OMPL paths through
+// waypoints, pedestrians' walks), the ego's target, obstacles, traffic-light settings, weather
+// and duration, all evaluated at one point of the search space.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lang/diagnostic.hpp"
+#include "lang/scenario.hpp"
+#include "physics/actors/actor_class.hpp"
+#include "physics/actors/trajectory.hpp"
+#include "physics/collision/collision_world.hpp"
+#include "physics/ego/perception.hpp"
+#include "physics/map/lane_route.hpp"
+#include "physics/map/road_map.hpp"
+
+namespace scenfuzz {
+
+// An NPC vehicle or pedestrian: it follows its trajectory and does not react.
+struct ScriptedActor {
+  std::string name;
+  TraceActorKind kind = TraceActorKind::vehicle;
+  ActorClass body;  // dimensions (a pedestrian's height from the scenario)
+  Trajectory trajectory;
+};
+
+struct StaticObstacle {
+  std::string name;
+  BodyGeometry geometry;
+  MapPose pose;
+};
+
+// A scenario's setting of one of the map's traffic lights: it shows `colour` from t = 0 (when
+// the light has a signal plan, the plan runs on from the start of that colour's phase).
+struct LightSetting {
+  std::uint32_t light = 0;  // index into RoadMap::traffic_lights()
+  SignalColour colour = SignalColour::red;
+};
+
+struct SimulationSetup {
+  std::string ego_name = "ego";
+  ActorClass ego_body;
+  KinematicState ego_initial;
+  std::optional<MapPose> ego_target;
+  // Over the lane graph to the target, or along the lanes ahead when there is none.
+  LaneRoute ego_route;
+  std::vector<ScriptedActor> actors;  // vehicles first, then pedestrians, as in the scenario
+  std::vector<StaticObstacle> obstacles;
+  std::vector<LightSetting> lights;
+  std::vector<std::pair<LaneIndex, double>> speed_limits;  // the scenario's, m/s
+  Conditions conditions;
+  double duration = 30;  // s
+};
+
+// Evaluates `scenario` at `values` on `map`. Problems (an unknown lane, an unreachable target, a
+// path that cannot be planned, an unsupported motion) are errors in `diagnostics` at the place
+// in the file they come from, and give nullopt. `seed` seeds pedestrians' random walks and the
+// sampling planner.
+std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenario,
+                                                  std::span<const double> values,
+                                                  const RoadMap& map, std::uint64_t seed,
+                                                  Diagnostics& diagnostics);
+
+}  // namespace scenfuzz

@@ -1,0 +1,215 @@
+// The simulation loop. Each step: place every body, record new collisions, write one sample per
+// actor (state, lane, and how the ego perceived it), check the end conditions, then let the
+// driver choose the ego's control and advance the ego with the bicycle model. Scripted actors
+// are evaluated at each step's time directly, so they accumulate no integration error.
+#include "physics/simulation/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <utility>
+
+#include "physics/collision/collision_world.hpp"
+#include "physics/ego/plugin_driver.hpp"
+#include "physics/simulation/lane_tracker.hpp"
+#include "physics/simulation/plugin_observation.hpp"
+#include "physics/simulation/traffic_signals.hpp"
+
+namespace scenfuzz {
+namespace {
+
+// Perception draws from its own stream, so adding randomness elsewhere does not change it.
+constexpr std::uint64_t kPerceptionStream = 0x70657263657074ull;
+
+TraceActor describe(const std::string& name, TraceActorKind kind, ActorCategory category,
+                    const BodyGeometry& geometry) {
+  TraceActor actor;
+  actor.name = name;
+  actor.kind = kind;
+  actor.category = category;
+  actor.shape = geometry.shape;
+  actor.length = geometry.length;
+  actor.width = geometry.width;
+  actor.height = geometry.height;
+  return actor;
+}
+
+BodyGeometry body_geometry(const ActorClass& body) {
+  if (body.category == ActorCategory::pedestrian)
+    return {BodyShape::cylinder, body.length, body.length, body.height};
+  return {BodyShape::box, body.length, body.width, body.height};
+}
+
+void append_sample(TraceActor& actor, const KinematicState& state, LaneFix lane) {
+  actor.x.push_back(state.x);
+  actor.y.push_back(state.y);
+  actor.heading.push_back(state.heading);
+  actor.speed.push_back(state.speed);
+  actor.acceleration.push_back(state.acceleration);
+  actor.yaw_rate.push_back(state.yaw_rate);
+  actor.lane.push_back(lane.lane);
+  actor.s.push_back(lane.s);
+}
+
+void append_perceived(PerceivedActor& column, const WorldObject* seen) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  column.detected.push_back(seen ? 1 : 0);
+  column.x.push_back(seen ? seen->x : nan);
+  column.y.push_back(seen ? seen->y : nan);
+  column.heading.push_back(seen ? seen->heading : nan);
+  column.speed.push_back(seen ? seen->speed : nan);
+}
+
+void end_with(Trace& trace, EndReason reason, TraceEventKind kind, double time,
+              std::string message = {}) {
+  trace.end = reason;
+  trace.events.push_back({kind, time, -1, std::move(message)});
+}
+
+}  // namespace
+
+Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options) {
+  const double dt = options.dt;
+  Trace trace;
+  trace.map_name = map.name();
+  trace.seed = options.seed;
+  trace.dt = dt;
+
+  // Bodies: the ego, the scripted actors, the obstacles; collision ids equal actor ids.
+  CollisionWorld world;
+  std::vector<KinematicState> states;
+  BodyGeometry ego_geometry = body_geometry(setup.ego_body);
+  trace.actors.push_back(
+      describe(setup.ego_name, TraceActorKind::ego, setup.ego_body.category, ego_geometry));
+  world.add_body(ego_geometry, {{setup.ego_initial.x, setup.ego_initial.y}, setup.ego_initial.heading},
+                 false);
+  states.push_back(setup.ego_initial);
+  for (const ScriptedActor& actor : setup.actors) {
+    BodyGeometry geometry = body_geometry(actor.body);
+    trace.actors.push_back(describe(actor.name, actor.kind, actor.body.category, geometry));
+    KinematicState start = actor.trajectory.state_at(0);
+    world.add_body(geometry, {{start.x, start.y}, start.heading}, false);
+    states.push_back(start);
+  }
+  std::size_t first_obstacle = trace.actors.size();
+  for (const StaticObstacle& obstacle : setup.obstacles) {
+    trace.actors.push_back(describe(obstacle.name, TraceActorKind::obstacle, ActorCategory::car,
+                                    obstacle.geometry));
+    world.add_body(obstacle.geometry, obstacle.pose, true);
+    KinematicState state;
+    state.x = obstacle.pose.position.x;
+    state.y = obstacle.pose.position.y;
+    state.heading = obstacle.pose.heading;
+    states.push_back(state);
+  }
+  const std::size_t actor_count = trace.actors.size();
+  for (std::size_t k = 1; k < actor_count; ++k)
+    trace.perceived.push_back({static_cast<ActorId>(k), {}, {}, {}, {}, {}});
+  for (const TrafficLight& light : map.traffic_lights()) trace.lights.push_back({light.id, {}});
+
+  std::vector<WorldObject> truth(actor_count - 1);
+  for (std::size_t k = 1; k < actor_count; ++k) {
+    truth[k - 1].id = static_cast<ActorId>(k);
+    truth[k - 1].kind = trace.actors[k].kind;
+    truth[k - 1].length = trace.actors[k].length;
+    truth[k - 1].width = trace.actors[k].width;
+  }
+
+  Perception perception(degraded(options.perception, setup.conditions),
+                        options.seed ^ kPerceptionStream, dt);
+  RouteTracker route(map, setup.ego_route, setup.speed_limits, options.driver.default_speed_limit);
+  ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver);
+  TrafficSignals signals(map, setup.lights);
+  std::vector<LaneTracker> lanes(actor_count);
+
+  std::optional<PluginDriver> plugin;
+  if (!options.ego_plugin.empty()) {
+    try {
+      plugin.emplace(PluginOptions{options.ego_plugin, options.plugin_step_timeout},
+                     plugin_config(setup, dt, options.seed));
+    } catch (const EgoPluginError& error) {
+      end_with(trace, EndReason::ego_failure, TraceEventKind::ego_failure, 0, error.what());
+      return trace;
+    }
+  }
+
+  const double duration = options.duration.value_or(setup.duration);
+  const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
+  std::set<std::pair<BodyId, BodyId>> collided;
+  scenfuzz_observation observation{};
+
+  for (std::size_t step = 0;; ++step) {
+    const double t = static_cast<double>(step) * dt;
+    for (std::size_t k = 1; k <= setup.actors.size(); ++k)
+      states[k] = setup.actors[k - 1].trajectory.state_at(t);
+    for (std::size_t k = 0; k < first_obstacle; ++k)
+      world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
+
+    bool ego_hit = false;
+    for (const Contact& contact : world.find_contacts()) {
+      if (!collided.insert({contact.first, contact.second}).second) continue;
+      trace.collisions.push_back({t, contact.first, contact.second, contact.point,
+                                  contact.first_side, contact.second_side});
+      trace.events.push_back({TraceEventKind::collision, t,
+                              static_cast<std::int64_t>(trace.collisions.size() - 1), {}});
+      ego_hit = ego_hit || contact.first == kEgo;
+    }
+
+    trace.time.push_back(t);
+    for (std::size_t k = 0; k < actor_count; ++k) {
+      LaneFix fix = lanes[k].update(map, {states[k].x, states[k].y}, states[k].heading);
+      append_sample(trace.actors[k], states[k], fix);
+    }
+    const std::vector<SignalColour>& colours = signals.colours_at(t);
+    for (std::size_t light = 0; light < colours.size(); ++light)
+      trace.lights[light].colour.push_back(colours[light]);
+
+    for (std::size_t k = 1; k < actor_count; ++k) {
+      WorldObject& object = truth[k - 1];
+      object.x = states[k].x;
+      object.y = states[k].y;
+      object.heading = states[k].heading;
+      object.speed = states[k].speed;
+    }
+    const std::vector<WorldObject>& seen = perception.observe(states[kEgo], truth);
+    for (std::size_t k = 1, next = 0; k < actor_count; ++k) {
+      while (next < seen.size() && seen[next].id < k) ++next;
+      bool detected = next < seen.size() && seen[next].id == k;
+      append_perceived(trace.perceived[k - 1], detected ? &seen[next] : nullptr);
+    }
+
+    route.update({states[kEgo].x, states[kEgo].y});
+    if (ego_hit && options.stop_at_collision) {
+      trace.end = EndReason::collision;
+      break;
+    }
+    if (setup.ego_target && route.length() - route.progress() <= options.target_reach) {
+      end_with(trace, EndReason::target_reached, TraceEventKind::target_reached, t);
+      break;
+    }
+    if (step >= last_step) {
+      end_with(trace, EndReason::duration, TraceEventKind::timeout, t);
+      break;
+    }
+
+    VehicleControl control;
+    if (plugin) {
+      fill_observation(route, states[kEgo], t, seen, colours, setup.ego_target.has_value(),
+                       observation);
+      try {
+        scenfuzz_control answer = plugin->step(observation);
+        control = {answer.acceleration, answer.steering_angle};
+      } catch (const EgoPluginError& error) {
+        end_with(trace, EndReason::ego_failure, TraceEventKind::ego_failure, t, error.what());
+        break;
+      }
+    } else {
+      control = driver.step({t, states[kEgo], seen, colours});
+    }
+    states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
+  }
+  return trace;
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,32 @@
+// The simulation loop: a prepared scenario stepped at a fixed dt into a Trace. Scripted actors
+// follow their trajectories, the ego is driven by the reference driver (or a plugin in a child
+// process) through its perception, the collision world is checked every step, and the run ends
+// at the duration, when the ego reaches its target, or at its first collision.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "physics/ego/perception.hpp"
+#include "physics/ego/reference_driver.hpp"
+#include "physics/simulation/scenario_setup.hpp"
+#include "physics/trace/trace.hpp"
+
+namespace scenfuzz {
+
+struct SimulationOptions {
+  double dt = 0.05;                 // s per step
+  std::optional<double> duration;   // overrides the scenario's
+  bool stop_at_collision = true;    // end at the first collision involving the ego
+  std::uint64_t seed = 0;           // perception noise and misses; passed to a plugin
+  PerceptionSettings perception;    // clear-weather figures, degraded by the scenario's weather
+  DriverSettings driver;
+  std::string ego_plugin;           // a shared library to drive the ego; empty: the reference driver
+  double plugin_step_timeout = 2;   // s of wall time a plugin may take for one step
+  double target_reach = 2;          // m: the ego has reached its target within this distance
+};
+
+Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options);
+
+}  // namespace scenfuzz

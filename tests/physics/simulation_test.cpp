@@ -1,0 +1,157 @@
+// The whole simulation on small scenarios whose outcome a competent driver fixes: the reference
+// driver stops behind a stopped car, at a red light and for a crossing pedestrian; a cut-in too
+// close to avoid collides; the same seed gives the same trace bit for bit.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <thread>
+
+#include "simulation_fixtures.hpp"
+
+namespace scenfuzz {
+namespace {
+
+using test::closest_approach;
+using test::simulate_text;
+
+std::string scenario_text(const std::string& map, const std::string& ego, const std::string& npcs,
+                          const std::string& pedestrians, const std::string& body,
+                          const std::string& environment = "") {
+  return body + "\nscenario = CreateScenario{load(\"" + map + "\");\n" + ego + ";\n{" + npcs +
+         "};\n{" + pedestrians + "};\n{};\n" + environment + "};\n";
+}
+
+TEST(SimulationTest, StopsBehindAStoppedCarFrom20MetresPerSecond) {
+  auto run = simulate_text(scenario_text(
+      "straight", "ego", "parked", "",
+      "ego = AV((\"east_0\"->20, , 20), (\"east_0\"->480));\n"
+      "parked = Vehicle((\"east_0\"->250, , 0));\n"));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  double gap = closest_approach(trace, 0, 1);
+  EXPECT_GT(gap, 0.5);
+  EXPECT_LT(gap, 8.0) << "the ego should close up behind the car, not stop far away";
+  EXPECT_LT(trace.actors[0].speed.back(), 0.1);
+  EXPECT_EQ(trace.end, EndReason::duration);
+}
+
+TEST(SimulationTest, StopsAtARedLightAndGoesOnGreen) {
+  // On `crossroads` east-west traffic has red for the first half cycle (30 s).
+  std::string text = scenario_text("crossroads", "ego", "", "",
+                                   "ego = AV((\"west_in_0\"->60, , 10), (\"east_out_0\"->60));\n");
+  SimulationOptions options;
+  options.duration = 25;
+  auto stopped = simulate_text(text, options);
+  ASSERT_TRUE(stopped.trace) << stopped.errors;
+  const TraceActor& ego = stopped.trace->actors[0];
+  // The stop line is at x = -16 (s = 144 on west_in_0): the front bumper stays behind it.
+  double front = ego.x.back() + ego.length / 2;
+  EXPECT_LT(front, -16.0);
+  EXPECT_GT(front, -25.0);
+  EXPECT_LT(ego.speed.back(), 0.1);
+  for (std::size_t i = 0; i < ego.x.size(); ++i) ASSERT_LT(ego.x[i] + ego.length / 2, -16.0);
+
+  options.duration = 60;
+  auto through = simulate_text(text, options);
+  ASSERT_TRUE(through.trace) << through.errors;
+  EXPECT_EQ(through.trace->end, EndReason::target_reached);
+  EXPECT_GT(through.trace->time.back(), 30.0);
+}
+
+TEST(SimulationTest, YieldsToACrossingPedestrian) {
+  auto run = simulate_text(scenario_text(
+      "straight", "ego", "", "walker",
+      "ego = AV((\"east_0\"->10, , 12), (\"east_0\"->300));\n"
+      "walker = Pedestrian(((80, -9), 90 deg, 1.4), uniform(((80, -9), 90 deg, 1.4)));\n"));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  EXPECT_EQ(trace.end, EndReason::target_reached) << "the ego goes on once the road is clear";
+}
+
+TEST(SimulationTest, ACutInWithAThreeMetreGapAt25MetresPerSecondCollides) {
+  // npc starts in the left lane with its rear 3 m ahead of the ego's front and moves over.
+  auto run = simulate_text(scenario_text(
+      "straight", "ego", "cutter", "",
+      "ego = AV((\"east_0\"->50, , 25), (\"east_0\"->480));\n"
+      "cutter = Vehicle((\"east_1\"->57.6, , 20), Waypoint((\"east_0\"->85, , 20)), (\"east_0\"->400));\n"));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  ASSERT_FALSE(trace.collisions.empty());
+  EXPECT_EQ(trace.collisions[0].first, kEgo);
+  EXPECT_EQ(trace.collisions[0].first_side, BodySide::front);
+  EXPECT_EQ(trace.end, EndReason::collision);
+}
+
+TEST(SimulationTest, ReachesItsTargetOnAnEmptyRoad) {
+  auto run = simulate_text(scenario_text("straight", "ego", "", "",
+                                         "ego = AV((\"east_0\"->10, , 0), (\"east_1\"->300));\n"));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const TraceActor& ego = run.trace->actors[0];
+  EXPECT_EQ(run.trace->end, EndReason::target_reached);
+  EXPECT_NEAR(ego.y.back(), -1.75, 0.3) << "it changed into east_1";
+  for (double speed : ego.speed) EXPECT_LE(speed, 22.2 + 0.1) << "speed limit";
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+TEST(SimulationTest, TheSameSeedGivesABitIdenticalTraceOnAnyThread) {
+  std::string text = scenario_text(
+      "straight", "ego", "lead", "walker",
+      "ego = AV((\"east_0\"->10, , 15), (\"east_0\"->400));\n"
+      "lead = Vehicle((\"east_0\"->60, , 8));\n"
+      "walker = Pedestrian(((120, -9), 90 deg, 1.0), Random(((120, -9), 90 deg, 1.0)));\n",
+      "Environment(22:00, {fog: 0.4, rain: 0.5});\n");
+  SimulationOptions options;
+  options.seed = 42;
+  auto first = simulate_text(text, options);
+  ASSERT_TRUE(first.trace) << first.errors;
+  test::SimulatedRun second, third;
+  std::thread one([&] { second = simulate_text(text, options); });
+  std::thread two([&] { third = simulate_text(text, options); });
+  one.join();
+  two.join();
+  for (const auto* other : {&second, &third}) {
+    ASSERT_TRUE(other->trace);
+    const Trace& a = *first.trace;
+    const Trace& b = *other->trace;
+    ASSERT_EQ(a.actors.size(), b.actors.size());
+    for (std::size_t k = 0; k < a.actors.size(); ++k) {
+      EXPECT_TRUE(same_bits(a.actors[k].x, b.actors[k].x));
+      EXPECT_TRUE(same_bits(a.actors[k].y, b.actors[k].y));
+      EXPECT_TRUE(same_bits(a.actors[k].heading, b.actors[k].heading));
+      EXPECT_TRUE(same_bits(a.actors[k].speed, b.actors[k].speed));
+    }
+    for (std::size_t k = 0; k < a.perceived.size(); ++k) {
+      EXPECT_EQ(a.perceived[k].detected, b.perceived[k].detected);
+      EXPECT_TRUE(same_bits(a.perceived[k].x, b.perceived[k].x));
+    }
+  }
+  options.seed = 43;
+  auto other_seed = simulate_text(text, options);
+  ASSERT_TRUE(other_seed.trace);
+  EXPECT_FALSE(same_bits(first.trace->perceived[0].x, other_seed.trace->perceived[0].x))
+      << "perception noise depends on the seed";
+}
+
+TEST(SimulationTest, AnUnknownLaneIsAnErrorAtItsPlace) {
+  auto run = simulate_text(scenario_text("straight", "ego", "", "",
+                                         "ego = AV((\"nowhere\"->10, , 0), (\"east_1\"->300));\n"));
+  EXPECT_FALSE(run.trace);
+  EXPECT_NE(run.errors.find("inline.avu:1:"), std::string::npos) << run.errors;
+  EXPECT_NE(run.errors.find("nowhere"), std::string::npos) << run.errors;
+}
+
+TEST(SimulationTest, AnUnreachableTargetIsAnError) {
+  auto run = simulate_text(scenario_text("straight", "ego", "", "",
+                                         "ego = AV((\"east_0\"->10, , 0), (\"west_0\"->300));\n"));
+  EXPECT_FALSE(run.trace);
+  EXPECT_NE(run.errors.find("no route"), std::string::npos) << run.errors;
+}
+
+}  // namespace
+}  // namespace scenfuzz
