@@ -33,7 +33,7 @@ std::vector<double> unit_point(std::size_t dimensions, const std::string& at, st
 }
 
 std::string describe_collision(const Trace& trace, const Collision& collision) {
-  return "collision at " + format_number(collision.time) + " s: " +
+  return "collision at " + format_number(std::round(collision.time * 1000) / 1000) + " s: " +
          trace.actors[collision.first].name + " " +
          std::string(body_side_name(collision.first_side)) + " / " +
          trace.actors[collision.second].name + " " +
@@ -116,6 +116,11 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   simulation.stop_at_collision = !options.continue_after_collision;
   simulation.ego_plugin = options.ego_plugin;
   const Trace trace = simulate(*map, *setup, simulation);
+  if (trace.end == EndReason::ego_failure && trace.sample_count() == 0) {
+    // The plugin did not even start: a bad --ego-plugin, not something the scenario found.
+    err << "scenfuzz: error: " << trace.events.back().message << "\n";
+    return kExitBadInput;
+  }
 
   std::vector<std::string> written;
   if (!options.out_dir.empty()) {

@@ -568,3 +568,71 @@ TEST_F(CliMapTest, Help) {
 }
 
 }  // namespace
+
+class CliRunTest : public CliTest {
+ protected:
+  static std::string corpus_file(const std::string& name) {
+    return (fs::path(SCENFUZZ_TEST_DATA_DIR).parent_path().parent_path().parent_path() /
+            "corpora" / "avunit" / name)
+        .string();
+  }
+};
+
+TEST_F(CliRunTest, RunsALogicalScenarioAtTheMiddleAndWritesItsOutputs) {
+  const fs::path out = dir_ / "run";
+  const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu"), "--at",
+                                "mid", "--out", out.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("map straight"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("simulated "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("ego reached its target: "), std::string::npos) << run.out;
+  for (const char* name : {"trace.csv", "trace.json", "trace.svg", "scenario.avu"})
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  EXPECT_TRUE(slurp(out / "trace.csv").starts_with("time,actor,"));
+  EXPECT_TRUE(slurp(out / "trace.svg").ends_with("</svg>\n"));
+  const std::string concrete = slurp(out / "scenario.avu");
+  EXPECT_EQ(concrete.find("range("), std::string::npos) << "every range replaced";
+  EXPECT_FALSE(has_leftover_temporary_file(out));
+
+  // The concrete scenario it wrote runs as it is, and gives the same outcome.
+  const Outcome again = scenfuzz({"run", (out / "scenario.avu").string(), "--out",
+                                  (dir_ / "again").string()});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(slurp(out / "trace.csv"), slurp(dir_ / "again" / "trace.csv"));
+}
+
+TEST_F(CliRunTest, JsonSummary) {
+  const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu"), "--at",
+                                "random", "--seed", "7", "--json", "--out", (dir_ / "o").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto summary = nlohmann::json::parse(run.out);
+  EXPECT_EQ(summary["map"], "straight");
+  EXPECT_EQ(summary["seed"], 7);
+  EXPECT_TRUE(summary["collisions"].is_array());
+  EXPECT_TRUE(summary["parameters"].is_object());
+  EXPECT_EQ(summary["files"].size(), 4u);
+}
+
+TEST_F(CliRunTest, ALogicalScenarioNeedsAPoint) {
+  const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu")});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("--at mid"), std::string::npos) << run.err;
+}
+
+TEST_F(CliRunTest, AnEgoPluginThatCannotLoadIsABadInput) {
+  const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu"), "--at",
+                                "mid", "--ego-plugin", (dir_ / "missing.so").string(), "--out",
+                                (dir_ / "o").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("missing.so"), std::string::npos) << run.err;
+}
+
+TEST_F(CliRunTest, AScenarioWithAnUnknownLaneNamesItsPlace) {
+  const std::string path = write("bad_lane.avu", R"(ego = AV(("nowhere"->10), ("east_0"->100));
+scenario = CreateScenario{load("straight"); ego; {}; {}; {};};
+)");
+  const Outcome run = scenfuzz({"run", path, "--out", (dir_ / "o").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("bad_lane.avu:1:"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("nowhere"), std::string::npos) << run.err;
+}

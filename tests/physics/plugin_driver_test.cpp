@@ -14,13 +14,8 @@
 #include <thread>
 #include <vector>
 
-// The build passes the plugins' paths; by hand, build them into /tmp/hb-plugin (see
-// tests/physics/plugins/*.c and corpora/ego-plugins/README.md).
-#ifndef SCENFUZZ_EXAMPLE_EGO_PLUGIN
-#define SCENFUZZ_EXAMPLE_EGO_PLUGIN "/tmp/hb-plugin/libfollow_route.so"
-#endif
-#ifndef SCENFUZZ_TEST_PLUGIN_DIR
-#define SCENFUZZ_TEST_PLUGIN_DIR "/tmp/hb-plugin"
+#if !defined(SCENFUZZ_EXAMPLE_EGO_PLUGIN) || !defined(SCENFUZZ_TEST_PLUGIN_DIR)
+#error "tests/CMakeLists.txt passes the plugins' paths"
 #endif
 
 namespace scenfuzz {

@@ -71,18 +71,36 @@ TEST(SimulationTest, YieldsToACrossingPedestrian) {
   EXPECT_EQ(trace.end, EndReason::target_reached) << "the ego goes on once the road is clear";
 }
 
+// npc starts in the left lane with its rear 3 m ahead of the ego's front and moves over.
+std::string cut_in(const std::string& cutter_speed) {
+  return scenario_text("straight", "ego", "cutter", "",
+                       "ego = AV((\"east_0\"->50, , 25), (\"east_0\"->480));\n"
+                       "cutter = Vehicle((\"east_1\"->57.7, , " + cutter_speed +
+                           "), Waypoint((\"east_0\"->85, , " + cutter_speed +
+                           ")), (\"east_0\"->400));\n");
+}
+
 TEST(SimulationTest, ACutInWithAThreeMetreGapAt25MetresPerSecondCollides) {
-  // npc starts in the left lane with its rear 3 m ahead of the ego's front and moves over.
-  auto run = simulate_text(scenario_text(
-      "straight", "ego", "cutter", "",
-      "ego = AV((\"east_0\"->50, , 25), (\"east_0\"->480));\n"
-      "cutter = Vehicle((\"east_1\"->57.6, , 20), Waypoint((\"east_0\"->85, , 20)), (\"east_0\"->400));\n"));
+  // Closing at 10 m/s from 3 m: even full braking (8 m/s^2) needs 6.25 m.
+  auto run = simulate_text(cut_in("15"));
   ASSERT_TRUE(run.trace) << run.errors;
   const Trace& trace = *run.trace;
   ASSERT_FALSE(trace.collisions.empty());
   EXPECT_EQ(trace.collisions[0].first, kEgo);
-  EXPECT_EQ(trace.collisions[0].first_side, BodySide::front);
+  // The ego's front-left corner meets the cutter's right flank or rear while it moves over.
+  const Collision& hit = trace.collisions[0];
+  EXPECT_TRUE(hit.first_side == BodySide::front || hit.first_side == BodySide::left);
+  EXPECT_TRUE(hit.second_side == BodySide::right || hit.second_side == BodySide::rear);
   EXPECT_EQ(trace.end, EndReason::collision);
+  EXPECT_LT(trace.actors[0].acceleration.back(), -5) << "the ego was braking hard";
+}
+
+TEST(SimulationTest, TheSameCutInByAFasterCarIsAvoided) {
+  // Closing at 3 m/s from 3 m: braking in time is possible, and the driver does it.
+  auto run = simulate_text(cut_in("22"));
+  ASSERT_TRUE(run.trace) << run.errors;
+  EXPECT_TRUE(run.trace->collisions.empty());
+  EXPECT_GT(closest_approach(*run.trace, 0, 1), 0.0);
 }
 
 TEST(SimulationTest, ReachesItsTargetOnAnEmptyRoad) {
@@ -151,6 +169,68 @@ TEST(SimulationTest, AnUnreachableTargetIsAnError) {
                                          "ego = AV((\"east_0\"->10, , 0), (\"west_0\"->300));\n"));
   EXPECT_FALSE(run.trace);
   EXPECT_NE(run.errors.find("no route"), std::string::npos) << run.errors;
+}
+
+std::string straight_drive() {
+  return scenario_text("straight", "ego", "lead", "",
+                       "ego = AV((\"east_0\"->10, , 5), (\"east_0\"->300));\n"
+                       "lead = Vehicle((\"east_0\"->60, , 6));\n");
+}
+
+TEST(SimulationTest, TheExamplePluginDrivesAScenario) {
+  SimulationOptions options;
+  options.ego_plugin = SCENFUZZ_EXAMPLE_EGO_PLUGIN;
+  options.duration = 20;
+  auto run = simulate_text(straight_drive(), options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_EQ(trace.end, EndReason::duration);
+  EXPECT_TRUE(trace.collisions.empty());
+  const TraceActor& ego = trace.actors[0];
+  EXPECT_GT(ego.x.back(), 60.0) << "it drove";
+  for (double y : ego.y) EXPECT_NEAR(y, -5.25, 0.5) << "in its lane";
+  EXPECT_GT(closest_approach(trace, 0, 1), 1.0) << "behind the slower lead";
+}
+
+TEST(SimulationTest, ACrashingPluginEndsOnlyItsOwnRun) {
+  SimulationOptions options;
+  options.ego_plugin = std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/libcrashing.so";
+  auto crashed = simulate_text(straight_drive(), options);
+  ASSERT_TRUE(crashed.trace) << crashed.errors;
+  EXPECT_EQ(crashed.trace->end, EndReason::ego_failure);
+  ASSERT_FALSE(crashed.trace->events.empty());
+  const TraceEvent& failure = crashed.trace->events.back();
+  EXPECT_EQ(failure.kind, TraceEventKind::ego_failure);
+  EXPECT_NE(failure.message.find("SIGSEGV"), std::string::npos) << failure.message;
+  EXPECT_GE(crashed.trace->sample_count(), 3u) << "the samples before the crash are kept";
+
+  options.ego_plugin = SCENFUZZ_EXAMPLE_EGO_PLUGIN;
+  options.duration = 5;
+  auto next = simulate_text(straight_drive(), options);
+  ASSERT_TRUE(next.trace);
+  EXPECT_EQ(next.trace->end, EndReason::duration) << "the next run is unaffected";
+}
+
+TEST(SimulationTest, FogShortensHowFarTheEgoSees) {
+  // A car parked 120 m ahead: seen from the start in clear weather, only when close in fog.
+  auto first_seen = [](const std::string& environment) {
+    auto run = simulate_text(scenario_text("straight", "ego", "parked", "",
+                                           "ego = AV((\"east_0\"->10, , 10), (\"east_0\"->400));\n"
+                                           "parked = Vehicle((\"east_1\"->130, , 0));\n",
+                                           environment));
+    EXPECT_TRUE(run.trace) << run.errors;
+    const PerceivedActor& seen = run.trace->perceived[0];
+    for (std::size_t i = 0; i < seen.detected.size(); ++i)
+      if (seen.detected[i])
+        return std::hypot(run.trace->actors[1].x[i] - run.trace->actors[0].x[i],
+                          run.trace->actors[1].y[i] - run.trace->actors[0].y[i]);
+    return 0.0;
+  };
+  double clear = first_seen("");
+  double foggy = first_seen("Environment(12:00, {fog: 0.9});\n");
+  EXPECT_GT(clear, 110.0);
+  EXPECT_GT(foggy, 5.0);
+  EXPECT_LT(foggy, clear / 2);
 }
 
 }  // namespace
