@@ -186,7 +186,7 @@ std::vector<MapPoint> intersection(std::vector<MapPoint> subject,
 
 // The centroid of where the footprints overlap. A touch has no area: then the mean of the
 // touching points, and if rounding left nothing at all, halfway between the centres.
-MapPoint contact_point(const Footprint& a, const Footprint& b) {
+MapPoint local_contact_point(const Footprint& a, const Footprint& b) {
   const std::vector<MapPoint> shared = intersection(outline(a), outline(b));
   if (shared.empty()) return {(a.centre.x + b.centre.x) / 2, (a.centre.y + b.centre.y) / 2};
   double twice_area = 0, sum_x = 0, sum_y = 0;
@@ -204,6 +204,16 @@ MapPoint contact_point(const Footprint& a, const Footprint& b) {
     mean.y += p.y / static_cast<double>(shared.size());
   }
   return mean;
+}
+
+// local_contact_point computed about a's centre: with map coordinates in the millions (UTM), the area formula's
+// products would otherwise cancel catastrophically.
+MapPoint contact_point(Footprint a, Footprint b) {
+  const MapPoint origin = a.centre;
+  a.centre = {0, 0};
+  b.centre = {b.centre.x - origin.x, b.centre.y - origin.y};
+  const MapPoint local = local_contact_point(a, b);
+  return {origin.x + local.x, origin.y + local.y};
 }
 
 void* as_user_data(BodyId id) { return reinterpret_cast<void*>(static_cast<std::uintptr_t>(id)); }

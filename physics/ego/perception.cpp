@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <utility>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -50,10 +51,12 @@ void check_settings(const PerceptionSettings& settings) {
 // that a seed gives the same numbers with every standard library.
 double uniform(std::mt19937_64& random) { return static_cast<double>(random() >> 11) * 0x1.0p-53; }
 
-double standard_normal(std::mt19937_64& random) {
+// Two independent standard normal draws (Box-Muller uses both the cosine and the sine).
+std::pair<double, double> standard_normal_pair(std::mt19937_64& random) {
   const double u1 = 1 - uniform(random);  // (0, 1]: log stays finite
   const double u2 = uniform(random);
-  return std::sqrt(-2 * std::log(u1)) * std::cos(kTwoPi * u2);
+  const double radius = std::sqrt(-2 * std::log(u1));
+  return {radius * std::cos(kTwoPi * u2), radius * std::sin(kTwoPi * u2)};
 }
 
 double degraded_range(double clear, double factor) {
@@ -145,7 +148,7 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
                                                                    : settings_.vehicle_range;
     const double dx = object.x - sample.ego.x;
     const double dy = object.y - sample.ego.y;
-    const double distance = std::hypot(dx, dy);
+    const double distance = std::sqrt(dx * dx + dy * dy);
     if (distance > range) continue;
     if (!all_round && distance > 0 &&
         std::abs(angle_difference(std::atan2(dy, dx), sample.ego.heading)) >
@@ -153,16 +156,19 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
       continue;
     }
     // Detection falls off steeply near the edge of the range: a miss is certain there.
-    const double edge = range > 0 ? std::pow(distance / range, 4) : 1;
+    const double fraction = distance / range, fraction2 = fraction * fraction;
+    const double edge = range > 0 ? fraction2 * fraction2 : 1;
     const double miss = add_miss(settings_.miss_probability, edge);
     if (uniform(random_) < miss) continue;
 
     WorldObject seen = object;
-    seen.x += settings_.position_noise * standard_normal(random_);
-    seen.y += settings_.position_noise * standard_normal(random_);
+    const auto [noise_x, noise_y] = standard_normal_pair(random_);
+    const auto [noise_heading, noise_speed] = standard_normal_pair(random_);
+    seen.x += settings_.position_noise * noise_x;
+    seen.y += settings_.position_noise * noise_y;
     seen.heading =
-        angle_difference(object.heading + settings_.heading_noise * standard_normal(random_), 0);
-    seen.speed = std::max(0.0, object.speed + settings_.speed_noise * standard_normal(random_));
+        angle_difference(object.heading + settings_.heading_noise * noise_heading, 0);
+    seen.speed = std::max(0.0, object.speed + settings_.speed_noise * noise_speed);
 
     auto track = std::lower_bound(tracks_.begin(), tracks_.end(), object.id,
                                   [](const Track& t, ActorId id) { return t.object.id < id; });

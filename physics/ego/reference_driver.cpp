@@ -11,12 +11,17 @@
 namespace scenfuzz {
 namespace {
 
-constexpr double kIdmExponent = 4;
 constexpr double kMinimumDesiredSpeed = 0.1;  // m/s, keeps IDM's free-road term finite
 constexpr double kTargetClearance = 0.5;      // m the centre stops short of the target
 constexpr double kStoppedSpeed = 0.2;         // m/s: standing, for a stop sign
 constexpr double kPredictionTime = 3.0;       // s a pedestrian's or cut-in's motion is projected
 constexpr double kCorridorMargin = 0.4;       // m beside the ego's body that must stay clear
+
+// IDM's free-road term (v/v0)^4, without std::pow's cost.
+double fourth_power(double x) {
+  double squared = x * x;
+  return squared * squared;
+}
 
 double cross(MapPoint o, MapPoint a, MapPoint b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -26,7 +31,7 @@ double distance_to_segment(MapPoint p, MapPoint a, MapPoint b) {
   double dx = b.x - a.x, dy = b.y - a.y;
   double length2 = dx * dx + dy * dy;
   double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0;
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+  return distance(p, {a.x + t * dx, a.y + t * dy});
 }
 
 // Whether p lies inside the polygon or within `margin` of its outline.
@@ -211,7 +216,7 @@ double ReferenceDriver::idm_acceleration(double speed, double desired,
   double approach = speed * (speed - constraint.lead_speed) / (2 * std::sqrt(a * b));
   double wanted_gap = constraint.clearance + std::max(0.0, speed * settings_.time_gap + approach);
   double gap = std::max(constraint.gap, 0.01);
-  return a * (1 - std::pow(speed / desired, kIdmExponent) - (wanted_gap / gap) * (wanted_gap / gap));
+  return a * (1 - fourth_power(speed / desired) - (wanted_gap / gap) * (wanted_gap / gap));
 }
 
 VehicleControl ReferenceDriver::step(const DriverInput& input) {
@@ -223,7 +228,7 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
 
   double desired = desired_speed(route_.progress());
   double a = settings_.comfortable_acceleration;
-  double acceleration = a * (1 - std::pow(ego.speed / desired, kIdmExponent));
+  double acceleration = a * (1 - fourth_power(ego.speed / desired));
   reason_ = DriverReason::cruise;
   for (const Constraint& constraint : constraints_) {
     double candidate = idm_acceleration(ego.speed, desired, constraint);

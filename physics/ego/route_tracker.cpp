@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "physics/actors/trajectory.hpp"
 
@@ -13,6 +14,8 @@ namespace {
 // Curvature is measured over this many path vertices on either side, so that the polyline's
 // small kinks (1 m spacing) do not look like sharp bends.
 constexpr std::size_t kCurvatureReach = 3;
+// locate() first looks at every this-many path vertices.
+constexpr std::size_t kCoarseStride = 4;
 
 }  // namespace
 
@@ -90,8 +93,23 @@ std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, double behind
   if (empty()) return std::nullopt;
   std::size_t first = path_.segment_at(std::max(0.0, progress_ - behind));
   std::size_t last = path_.segment_at(std::min(length(), progress_ + ahead));
+  // Coarse to fine: the nearest of every few vertices, then the segments around it. The path is
+  // sampled every metre or so, far finer than it bends.
+  const auto& points = path_.points();
+  std::size_t nearest_vertex = first;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t vertex = first; vertex <= last + 1; vertex += kCoarseStride) {
+    double dx = points[vertex].x - point.x, dy = points[vertex].y - point.y;
+    double squared = dx * dx + dy * dy;
+    if (squared < nearest) {
+      nearest = squared;
+      nearest_vertex = vertex;
+    }
+  }
+  std::size_t from = std::max(first, nearest_vertex > kCoarseStride ? nearest_vertex - kCoarseStride : 0);
+  std::size_t to = std::min(last, nearest_vertex + kCoarseStride);
   std::optional<PolylineProjection> best;
-  for (std::size_t segment = first; segment <= last; ++segment) {
+  for (std::size_t segment = from; segment <= to; ++segment) {
     PolylineProjection projection = path_.project_to_segment(point, segment);
     if (!best || projection.distance < best->distance) best = projection;
   }

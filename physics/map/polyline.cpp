@@ -71,7 +71,10 @@ PolylineProjection Polyline::project_to_segment(MapPoint point, std::size_t segm
   PolylineProjection projection;
   projection.s = arc_lengths_[segment] + along;
   projection.lateral = lateral;
-  projection.distance = std::hypot(px - along * ux, py - along * uy);
+  // sqrt, not hypot: this is the innermost loop of every projection, and glibc's hypot (which
+  // guards against overflow no map coordinate comes near) costs several times as much.
+  const double off_x = px - along * ux, off_y = py - along * uy;
+  projection.distance = std::sqrt(off_x * off_x + off_y * off_y);
   projection.segment = segment;
   return projection;
 }

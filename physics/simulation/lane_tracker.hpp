@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "physics/map/lane_queries.hpp"
+#include "physics/map/map_point.hpp"
 
 namespace scenfuzz {
 
@@ -21,6 +22,8 @@ class LaneTracker {
  private:
   std::int32_t lane_ = -1;
   std::size_t segment_ = 0;
+  bool off_lanes_ = false;
+  MapPoint off_lanes_at_;  // where the map last said: on no lane
 };
 
 }  // namespace scenfuzz

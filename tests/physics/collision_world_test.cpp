@@ -91,6 +91,22 @@ TEST(CollisionWorld, CarHitsCrossingPedestrian) {
   EXPECT_LT(contact.point.x, 2.3);
 }
 
+TEST(CollisionWorld, ContactPointIsExactAtUtmCoordinates) {
+  // Apollo maps are in UTM: coordinates in the millions. The same crash there and at the origin
+  // must give the same contact point relative to the bodies.
+  const double east = 553000, north = 4181719;
+  CollisionWorld near_origin, in_utm;
+  near_origin.add_body(kCar, at(0, 0), false);
+  near_origin.add_body(kPedestrian, at(2.5, 0.3, pi / 2), false);
+  in_utm.add_body(kCar, at(east, north), false);
+  in_utm.add_body(kPedestrian, at(east + 2.5, north + 0.3, pi / 2), false);
+  const Contact expected = only_contact(near_origin);
+  const Contact actual = only_contact(in_utm);
+  EXPECT_NEAR(actual.point.x - east, expected.point.x, 1e-6);
+  EXPECT_NEAR(actual.point.y - north, expected.point.y, 1e-6);
+  EXPECT_EQ(actual.second_side, expected.second_side);
+}
+
 TEST(CollisionWorld, CarHitsEveryStaticObstacleShape) {
   for (BodyShape shape :
        {BodyShape::box, BodyShape::sphere, BodyShape::cone, BodyShape::cylinder}) {
