@@ -347,6 +347,18 @@ Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral,
   return Polyline(points);
 }
 
+std::vector<LaneChangeStretch> lane_change_stretches(const RoadMap& map, const LaneRoute& route,
+                                                     double lane_change_length) {
+  std::vector<LaneChangeStretch> stretches;
+  if (route.segments.empty()) return stretches;
+  RouteLayout layout = lay_out(map, route);
+  for (const PathPiece& piece : plan_pieces(map, route, layout, lane_change_length))
+    if (piece.to != piece.from)
+      stretches.push_back({piece.begin, piece.end, route.segments[piece.from].lane,
+                           route.segments[piece.to].lane});
+  return stretches;
+}
+
 LaneRoute route_ahead(const RoadMap& map, LanePosition start, double length) {
   if (start.lane >= map.lanes().size())
     throw std::invalid_argument("route_ahead: the map has no such lane");

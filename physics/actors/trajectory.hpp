@@ -51,6 +51,16 @@ class Trajectory {
 Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral = 0,
                     double lane_change_length = 30, double spacing = 1);
 
+// Where route_path moves sideways: from route distance `begin` to `end`, from lane `from` to `to`.
+struct LaneChangeStretch {
+  double begin = 0;
+  double end = 0;
+  LaneIndex from = 0;
+  LaneIndex to = 0;
+};
+std::vector<LaneChangeStretch> lane_change_stretches(const RoadMap& map, const LaneRoute& route,
+                                                     double lane_change_length = 30);
+
 // Where a lane-following actor goes without a target: from `start` along successors (the one
 // that turns least over its first metres at each fork), for `length` metres (the last segment
 // is cut there) or to a dead end.

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/map/lane_queries.hpp"
+
 namespace scenfuzz {
 namespace {
 
@@ -126,7 +128,8 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
     auto at = route_.locate({object.x, object.y}, 0, horizon, horizon);
-    if (!at || at->s <= route_.progress()) continue;  // beside or behind the ego's centre
+    // Beside or behind the ego's centre, or past the end of the route (where the ego stops).
+    if (!at || at->beyond_end || at->s <= route_.progress()) continue;
     double path_heading = route_.path().heading_at(at->s);
     double relative = angle_difference(object.heading, path_heading);
     double across = extent_across(object, relative);
@@ -209,6 +212,33 @@ void ReferenceDriver::collect_feature_constraints(const DriverInput& input, doub
                             DriverReason::target});
 }
 
+void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, double front_s) {
+  const KinematicState& ego = input.ego;
+  double lookahead = std::max(30.0, ego.speed * 4);
+  for (const LaneChangeStretch& change : route_.lane_changes()) {
+    if (change.begin <= route_.progress()) continue;  // under way: finish it
+    if (change.begin - front_s > lookahead) break;
+    const Polyline& next_lane = map_.lane(change.to).centre_line;
+    PolylineProjection ego_beside = next_lane.project({ego.x, ego.y});
+    bool blocked = std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
+      if (o.kind == TraceActorKind::pedestrian) return false;
+      PolylineProjection on = next_lane.project({o.x, o.y});
+      double half_width = on.lateral >= 0 ? lane_left_width_at(map_, change.to, on.s)
+                                          : lane_right_width_at(map_, change.to, on.s);
+      if (on.distance > half_width + o.width / 2) return false;
+      double ahead = on.s - ego_beside.s;  // along the next lane, centre to centre
+      double reach = (vehicle_.length + o.length) / 2 + settings_.lane_change_gap;
+      double behind_room = reach + settings_.lane_change_time_gap * o.speed;
+      double ahead_room = reach + settings_.lane_change_time_gap * ego.speed;
+      return ahead > -behind_room && ahead < ahead_room;
+    });
+    if (blocked)
+      constraints_.push_back({change.begin - front_s, settings_.stop_line_gap, 0, false,
+                              DriverReason::lane_change});
+    break;  // only the next lane change matters now
+  }
+}
+
 double ReferenceDriver::idm_acceleration(double speed, double desired,
                                          const Constraint& constraint) const {
   double a = settings_.comfortable_acceleration;
@@ -225,6 +255,7 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   constraints_.clear();
   collect_object_constraints(input, front_s);
   collect_feature_constraints(input, front_s);
+  collect_lane_change_constraints(input, front_s);
 
   double desired = desired_speed(route_.progress());
   double a = settings_.comfortable_acceleration;

@@ -28,6 +28,9 @@ struct DriverSettings {
   double crosswalk_clearance = 1.5;          // m around a crosswalk where a pedestrian counts
   double lookahead_time = 0.8;               // s of travel to the pure-pursuit target point
   double min_lookahead = 5.0;                // m
+  double lane_change_gap = 5.0;              // m kept free ahead of and behind the ego in the
+  double lane_change_time_gap = 1.0;         // next lane, plus this many seconds of the speed of
+                                             // whoever would be behind (or of the ego, ahead)
 };
 
 // What the driver knows at one step.
@@ -39,7 +42,16 @@ struct DriverInput {
 };
 
 // Why the driver chose its acceleration, for tests and the trace's reading.
-enum class DriverReason { cruise, lead, emergency, red_light, stop_sign, pedestrian, target };
+enum class DriverReason {
+  cruise,
+  lead,
+  emergency,
+  red_light,
+  stop_sign,
+  pedestrian,
+  target,
+  lane_change,  // waiting for a gap in the next lane
+};
 
 class ReferenceDriver {
  public:
@@ -62,6 +74,7 @@ class ReferenceDriver {
   double steering(const KinematicState& ego) const;
   void collect_object_constraints(const DriverInput& input, double front_s);
   void collect_feature_constraints(const DriverInput& input, double front_s);
+  void collect_lane_change_constraints(const DriverInput& input, double front_s);
   double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
 
   const RoadMap& map_;

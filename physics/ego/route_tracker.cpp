@@ -24,6 +24,7 @@ RouteTracker::RouteTracker(const RoadMap& map, const LaneRoute& route,
                            double default_speed_limit) {
   if (route.segments.empty()) return;
   path_ = route_path(map, route);
+  lane_changes_ = lane_change_stretches(map, route);
 
   double route_s = 0;
   for (const RouteSegment& segment : route.segments) {
@@ -114,7 +115,9 @@ std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, double behind
     if (!best || projection.distance < best->distance) best = projection;
   }
   if (!best || best->distance > max_lateral) return std::nullopt;
-  return PathCoordinate{best->s, best->lateral};
+  // The nearest point is an end point when it lies off the normal through it.
+  bool beyond_end = best->distance > std::abs(best->lateral) + 1e-6;
+  return PathCoordinate{best->s, best->lateral, beyond_end};
 }
 
 }  // namespace scenfuzz

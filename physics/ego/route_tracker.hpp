@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "physics/actors/trajectory.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/road_map.hpp"
@@ -28,6 +29,7 @@ struct RouteFeature {
 struct PathCoordinate {
   double s = 0;
   double lateral = 0;
+  bool beyond_end = false;  // past either end of the stretch searched: s is that end's
 };
 
 class RouteTracker {
@@ -46,6 +48,8 @@ class RouteTracker {
   double length() const { return path_.length(); }
   bool empty() const { return path_.points().size() < 2; }
   const std::vector<RouteFeature>& features() const { return features_; }
+  // Where the path moves from one lane to the next, in path arc length, in order.
+  const std::vector<LaneChangeStretch>& lane_changes() const { return lane_changes_; }
   double speed_limit_at(double s) const;
   // The path's curvature (1/m, unsigned) around arc length s.
   double curvature_at(double s) const;
@@ -58,6 +62,7 @@ class RouteTracker {
  private:
   Polyline path_;
   std::vector<RouteFeature> features_;
+  std::vector<LaneChangeStretch> lane_changes_;
   std::vector<double> limit_s_, limit_speed_;  // speed limit from each s on
   std::vector<double> curvature_;              // per path vertex
   std::size_t segment_ = 0;

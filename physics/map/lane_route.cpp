@@ -192,4 +192,24 @@ std::optional<FeatureAhead> next_feature_ahead(const RoadMap& map, const LaneRou
   return std::nullopt;
 }
 
+LaneRoute defer_lane_changes(const RoadMap& map, LaneRoute route, double distance) {
+  auto& segments = route.segments;
+  for (std::size_t k = 0; k + 1 < segments.size(); ++k) {
+    RouteSegment& leaving = segments[k];
+    RouteSegment& entering = segments[k + 1];
+    const Lane& lane = map.lane(leaving.lane);
+    auto beside = [&](const std::vector<LaneIndex>& neighbours) {
+      return std::find(neighbours.begin(), neighbours.end(), entering.lane) != neighbours.end();
+    };
+    if (!beside(lane.left_forward_neighbours) && !beside(lane.right_forward_neighbours)) continue;
+    // Keep a metre of the entered lane, so the segment after the change is not empty.
+    double shift = std::min({distance - (leaving.s_end - leaving.s_begin), lane.length() - leaving.s_end,
+                             entering.s_end - entering.s_begin - 1.0});
+    if (shift <= 0) continue;
+    leaving.s_end += shift;
+    entering.s_begin += shift;
+  }
+  return route;
+}
+
 }  // namespace scenfuzz

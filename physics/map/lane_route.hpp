@@ -38,6 +38,11 @@ std::optional<LaneRoute> find_route(const RoadMap& map, LanePosition from, LaneP
 std::optional<LaneRoute> find_route(const RoadMap& map, MapPose from, MapPose to,
                                     const RouteOptions& options = {});
 
+// The same route with each lane change moved to at least `distance` metres past where the route
+// entered the lane it leaves, as far as both lanes run on: find_route changes lane at once, and a
+// driver needs room to wait for a gap in the next lane. The route's length stays the same.
+LaneRoute defer_lane_changes(const RoadMap& map, LaneRoute route, double distance);
+
 struct FeatureAhead {
   FeatureKind kind = FeatureKind::traffic_light;
   std::uint32_t index = 0;  // into the map's traffic_lights(), signs() or crosswalks()

@@ -22,6 +22,9 @@ constexpr double kDefaultPedestrianSpeed = 1.2;  // m/s, a typical walking pace
 constexpr double kRandomWalkRadius = 10;         // m around the start
 // Scripted NPCs stop at the end of their path as a calm driver would.
 constexpr double kPathEndMargin = 50;  // m of lane beyond what the duration needs
+// The ego changes lane this far along the lane it leaves (not at once, as find_route would), so
+// that it can check the next lane and wait for a gap.
+constexpr double kLaneChangePreparation = 40;
 
 struct Context {
   const ScenarioTemplate& scenario;
@@ -429,7 +432,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
                                                   "target");
       return std::nullopt;
     }
-    setup.ego_route = std::move(*route);
+    setup.ego_route = defer_lane_changes(map, std::move(*route), kLaneChangePreparation);
   } else {
     auto lane = project_to_lane(map, ego_pose->position, ego_pose->heading);
     if (lane)

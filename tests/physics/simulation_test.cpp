@@ -113,6 +113,26 @@ TEST(SimulationTest, ReachesItsTargetOnAnEmptyRoad) {
   for (double speed : ego.speed) EXPECT_LE(speed, 22.2 + 0.1) << "speed limit";
 }
 
+TEST(SimulationTest, WaitsForAGapBeforeChangingLane) {
+  // The target is in the left lane, where a car drives beside the ego, a little faster.
+  SimulationOptions options;
+  options.duration = 60;
+  auto run = simulate_text(scenario_text("straight", "ego", "beside", "",
+                                         "ego = AV((\"east_0\"->10, , 10), (\"east_1\"->300));\n"
+                                         "beside = Vehicle((\"east_1\"->12, , 11));\n"),
+                           options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  const TraceActor& ego = trace.actors[0];
+  const TraceActor& beside = trace.actors[1];
+  std::size_t crossing = 0;
+  while (crossing < ego.y.size() && ego.y[crossing] < -3.5) ++crossing;
+  ASSERT_LT(crossing, ego.y.size()) << "it did change lane";
+  EXPECT_GT(beside.x[crossing] - ego.x[crossing], 6.0) << "only once the car had gone by";
+}
+
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
