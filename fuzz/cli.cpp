@@ -73,23 +73,28 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       ->type_name("");
   run_command->add_option("--seed", run_options.seed, "Seed of every random draw (default 0)")
       ->type_name("N");
-  run_command->add_option("--out", run_options.out_dir, "Folder for the outputs (default scenfuzz-run)")
+  run_command
+      ->add_option("--out", run_options.out_dir, "Folder for the outputs (default scenfuzz-run)")
       ->type_name("DIR");
-  run_command->add_option("--at", run_options.at,
-                          "Which point of a logical scenario to simulate: mid (the middle of "
-                          "every range) or random (drawn from --seed)")
+  run_command
+      ->add_option("--at", run_options.at,
+                   "Which point of a logical scenario to simulate: mid (the middle of "
+                   "every range) or random (drawn from --seed)")
       ->check(CLI::IsMember({"mid", "random"}))
       ->type_name("mid|random");
-  run_command->add_option("--map-path", run_options.map_paths,
-                          "Folder to look for Apollo maps in; repeatable")
+  run_command
+      ->add_option("--map-path", run_options.map_paths,
+                   "Folder to look for Apollo maps in; repeatable")
       ->type_name("DIR")
       ->allow_extra_args(false);
-  run_command->add_option("--ego-plugin", run_options.ego_plugin,
-                          "Drive the ego with this shared library (docs/ego-plugin.md) instead of "
-                          "the reference driver")
+  run_command
+      ->add_option("--ego-plugin", run_options.ego_plugin,
+                   "Drive the ego with this shared library (docs/ego-plugin.md) instead of "
+                   "the reference driver")
       ->type_name("LIB");
-  run_command->add_option("--duration", run_options.duration,
-                          "Seconds to simulate (default: the scenario's, else 30)")
+  run_command
+      ->add_option("--duration", run_options.duration,
+                   "Seconds to simulate (default: the scenario's, else 30)")
       ->check(CLI::PositiveNumber)
       ->type_name("S");
   run_command->add_option("--dt", run_options.dt, "Seconds per step (default 0.05)")

@@ -34,14 +34,14 @@ int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& e
 
 struct RunCommandOptions {
   std::string path;
-  std::vector<std::string> map_paths;  // --map-path, in order
-  std::uint64_t seed = 0;              // --seed: perception noise, random walks, --at random
+  std::vector<std::string> map_paths;    // --map-path, in order
+  std::uint64_t seed = 0;                // --seed: perception noise, random walks, --at random
   std::string out_dir = "scenfuzz-run";  // --out: trace.csv, trace.json, trace.svg, scenario.avu
-  std::string at;                      // --at: "mid" or "random" for a logical scenario
-  bool json = false;                   // --json: the summary as JSON
-  std::string ego_plugin;              // --ego-plugin: a shared library driving the ego
-  std::optional<double> duration;      // --duration: overrides the scenario's
-  double dt = 0.05;                    // --dt
+  std::string at;                        // --at: "mid" or "random" for a logical scenario
+  bool json = false;                     // --json: the summary as JSON
+  std::string ego_plugin;                // --ego-plugin: a shared library driving the ego
+  std::optional<double> duration;        // --duration: overrides the scenario's
+  double dt = 0.05;                      // --dt
   bool continue_after_collision = false;
 };
 

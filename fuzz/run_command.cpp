@@ -33,8 +33,8 @@ std::vector<double> unit_point(std::size_t dimensions, const std::string& at, st
 }
 
 std::string describe_collision(const Trace& trace, const Collision& collision) {
-  return "collision at " + format_number(std::round(collision.time * 1000) / 1000) + " s: " +
-         trace.actors[collision.first].name + " " +
+  return "collision at " + format_number(std::round(collision.time * 1000) / 1000) +
+         " s: " + trace.actors[collision.first].name + " " +
          std::string(body_side_name(collision.first_side)) + " / " +
          trace.actors[collision.second].name + " " +
          std::string(body_side_name(collision.second_side)) + " at (" +
@@ -43,7 +43,8 @@ std::string describe_collision(const Trace& trace, const Collision& collision) {
 }
 
 nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
-                            const std::vector<double>& values, const std::vector<std::string>& files) {
+                            const std::vector<double>& values,
+                            const std::vector<std::string>& files) {
   nlohmann::json summary;
   summary["map"] = trace.map_name;
   summary["seed"] = trace.seed;
@@ -127,7 +128,8 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     std::error_code error;
     std::filesystem::create_directories(options.out_dir, error);
     if (error) {
-      err << "scenfuzz: error: cannot create '" << options.out_dir << "': " << error.message() << "\n";
+      err << "scenfuzz: error: cannot create '" << options.out_dir << "': " << error.message()
+          << "\n";
       return kExitBadInput;
     }
     std::vector<std::string> lane_ids;
@@ -158,9 +160,10 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   for (std::size_t i = 0; i < space.dimensions.size(); ++i)
     out << "  " << space.dimensions[i].name << " = " << format_number(values[i]) << "\n";
   double simulated = trace.time.empty() ? 0.0 : trace.time.back();
-  out << "simulated " << format_number(std::round(simulated * 1000) / 1000) << " s, ended: "
-      << end_reason_name(trace.end) << "\n";
-  for (const Collision& collision : trace.collisions) out << describe_collision(trace, collision) << "\n";
+  out << "simulated " << format_number(std::round(simulated * 1000) / 1000)
+      << " s, ended: " << end_reason_name(trace.end) << "\n";
+  for (const Collision& collision : trace.collisions)
+    out << describe_collision(trace, collision) << "\n";
   if (trace.collisions.empty()) out << "no collision\n";
   out << "ego reached its target: " << (trace.end == EndReason::target_reached ? "yes" : "no")
       << "\n";

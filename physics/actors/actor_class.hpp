@@ -13,14 +13,14 @@ enum class ActorCategory { car, van, bus, truck, bicycle, motorbicycle, tricycle
 
 struct ActorClass {
   ActorCategory category = ActorCategory::car;
-  std::string_view name;  // "car", "van", ... as scenario files write the general kinds
-  double length = 0;      // m; a pedestrian's body diameter
-  double width = 0;       // m; a pedestrian's body diameter
-  double height = 0;      // m
-  double wheelbase = 0;   // m; 0 for pedestrians
-  double max_speed = 0;   // m/s
-  double max_acceleration = 0;          // m/s^2
-  double max_deceleration = 0;          // m/s^2, positive: full braking
+  std::string_view name;        // "car", "van", ... as scenario files write the general kinds
+  double length = 0;            // m; a pedestrian's body diameter
+  double width = 0;             // m; a pedestrian's body diameter
+  double height = 0;            // m
+  double wheelbase = 0;         // m; 0 for pedestrians
+  double max_speed = 0;         // m/s
+  double max_acceleration = 0;  // m/s^2
+  double max_deceleration = 0;  // m/s^2, positive: full braking
   double comfortable_deceleration = 0;  // m/s^2, positive: what a calm driver uses
   double max_steering_angle = 0;        // rad, front wheel; 0 for pedestrians
   double max_steering_rate = 0;         // rad/s, front wheel; 0 for pedestrians

@@ -19,10 +19,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // heading is continuous and the yaw rate finite.
 constexpr double kHeadingBlendDistance = 2;
 
-// Lane ends closer than this are joined end to start, as in lane_route.cpp (Apollo's joints are
-// within millimetres).
-constexpr double kJointTolerance = 0.5;
-
 // Route path points closer than this to the previous point are dropped: a near-duplicate at a lane
 // joint would make a tiny segment with an arbitrary heading.
 constexpr double kMinimumPointGap = 0.01;
@@ -189,30 +185,6 @@ KinematicState Trajectory::state_at(double t) const {
 
 namespace {
 
-// Where a successor link leaves `from` and enters `to` (as lane_route.cpp finds them): usually
-// from's end and to's start, but a roundabout's ring is joined part-way along.
-struct LinkPoints {
-  double exit_s = 0;
-  double entry_s = 0;
-};
-
-LinkPoints link_points(const RoadMap& map, LaneIndex from, LaneIndex to) {
-  const Polyline& from_line = map.lane(from).centre_line;
-  const Polyline& to_line = map.lane(to).centre_line;
-  const MapPoint from_end = from_line.points().back();
-  const MapPoint to_start = to_line.points().front();
-  LinkPoints link{from_line.length(), 0};
-  if (distance(from_end, to_start) <= kJointTolerance) return link;
-  PolylineProjection exit = from_line.project(to_start);
-  if (exit.distance <= kJointTolerance) {
-    link.exit_s = exit.s;
-    return link;
-  }
-  PolylineProjection entry = to_line.project(from_end);
-  if (entry.distance <= kJointTolerance) link.entry_s = entry.s;
-  return link;
-}
-
 // The segments of a route laid end to end: segment k covers route distances [start[k], end[k]].
 struct RouteLayout {
   std::vector<double> start, end;
@@ -354,8 +326,8 @@ std::vector<LaneChangeStretch> lane_change_stretches(const RoadMap& map, const L
   RouteLayout layout = lay_out(map, route);
   for (const PathPiece& piece : plan_pieces(map, route, layout, lane_change_length))
     if (piece.to != piece.from)
-      stretches.push_back({piece.begin, piece.end, route.segments[piece.from].lane,
-                           route.segments[piece.to].lane});
+      stretches.push_back(
+          {piece.begin, piece.end, route.segments[piece.from].lane, route.segments[piece.to].lane});
   return stretches;
 }
 

@@ -206,8 +206,8 @@ MapPoint local_contact_point(const Footprint& a, const Footprint& b) {
   return mean;
 }
 
-// local_contact_point computed about a's centre: with map coordinates in the millions (UTM), the area formula's
-// products would otherwise cancel catastrophically.
+// local_contact_point computed about a's centre: with map coordinates in the millions (UTM), the
+// area formula's products would otherwise cancel catastrophically.
 MapPoint contact_point(Footprint a, Footprint b) {
   const MapPoint origin = a.centre;
   a.centre = {0, 0};

@@ -28,7 +28,7 @@ struct BodyGeometry {
 struct Contact {
   BodyId first = 0;  // first < second
   BodyId second = 0;
-  MapPoint point;    // where the two footprints overlap (the centre of their intersection)
+  MapPoint point;  // where the two footprints overlap (the centre of their intersection)
   BodySide first_side = BodySide::front;
   BodySide second_side = BodySide::front;
 };

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <utility>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "physics/map/map_point.hpp"
 
@@ -166,8 +166,7 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
     const auto [noise_heading, noise_speed] = standard_normal_pair(random_);
     seen.x += settings_.position_noise * noise_x;
     seen.y += settings_.position_noise * noise_y;
-    seen.heading =
-        angle_difference(object.heading + settings_.heading_noise * noise_heading, 0);
+    seen.heading = angle_difference(object.heading + settings_.heading_noise * noise_heading, 0);
     seen.speed = std::max(0.0, object.speed + settings_.speed_noise * noise_speed);
 
     auto track = std::lower_bound(tracks_.begin(), tracks_.end(), object.id,

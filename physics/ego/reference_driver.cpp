@@ -32,7 +32,8 @@ double cross(MapPoint o, MapPoint a, MapPoint b) {
 double distance_to_segment(MapPoint p, MapPoint a, MapPoint b) {
   double dx = b.x - a.x, dy = b.y - a.y;
   double length2 = dx * dx + dy * dy;
-  double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0;
+  double t =
+      length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0;
   return distance(p, {a.x + t * dx, a.y + t * dy});
 }
 
@@ -77,7 +78,8 @@ ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
   for (std::size_t i = 0; i < arc.size(); ++i) {
     double limit = std::min(route.speed_limit_at(arc[i]), vehicle.max_speed);
     double curvature = route.curvature_at(arc[i]);
-    if (curvature > 1e-6) limit = std::min(limit, std::sqrt(settings.lateral_acceleration / curvature));
+    if (curvature > 1e-6)
+      limit = std::min(limit, std::sqrt(settings.lateral_acceleration / curvature));
     speed_envelope_[i] = limit;
   }
   for (std::size_t i = arc.size(); i-- > 1;) {
@@ -92,15 +94,17 @@ double ReferenceDriver::desired_speed(double s) const {
   const auto& arc = route_.path().arc_lengths();
   std::size_t segment = route_.path().segment_at(s);
   double t = std::clamp((s - arc[segment]) / (arc[segment + 1] - arc[segment]), 0.0, 1.0);
-  return std::max(kMinimumDesiredSpeed,
-                  speed_envelope_[segment] + t * (speed_envelope_[segment + 1] - speed_envelope_[segment]));
+  return std::max(
+      kMinimumDesiredSpeed,
+      speed_envelope_[segment] + t * (speed_envelope_[segment + 1] - speed_envelope_[segment]));
 }
 
 double ReferenceDriver::steering(const KinematicState& ego) const {
   if (route_.empty()) return 0;
   // Pure pursuit steers the rear axle onto the arc through the target point.
   double half_base = vehicle_.wheelbase / 2;
-  MapPoint rear{ego.x - half_base * std::cos(ego.heading), ego.y - half_base * std::sin(ego.heading)};
+  MapPoint rear{ego.x - half_base * std::cos(ego.heading),
+                ego.y - half_base * std::sin(ego.heading)};
   double lookahead = std::max(settings_.min_lookahead, settings_.lookahead_time * ego.speed);
   double target_s = route_.progress() + lookahead;
   MapPoint target;
@@ -152,7 +156,8 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     if (!in_path) continue;
     DriverReason reason =
         object.kind == TraceActorKind::pedestrian ? DriverReason::pedestrian : DriverReason::lead;
-    constraints_.push_back({gap, settings_.standstill_gap, std::max(lead_speed, 0.0), true, reason});
+    constraints_.push_back(
+        {gap, settings_.standstill_gap, std::max(lead_speed, 0.0), true, reason});
   }
 }
 
@@ -177,7 +182,8 @@ void ReferenceDriver::collect_feature_constraints(const DriverInput& input, doub
         bool stop = (colour == SignalColour::red && to_line > full_stop - 1) ||
                     (colour == SignalColour::yellow && to_line > calm_stop);
         if (stop)
-          constraints_.push_back({to_line, settings_.stop_line_gap, 0, false, DriverReason::red_light});
+          constraints_.push_back(
+              {to_line, settings_.stop_line_gap, 0, false, DriverReason::red_light});
         break;
       }
       case FeatureKind::stop_sign: {
@@ -190,26 +196,29 @@ void ReferenceDriver::collect_feature_constraints(const DriverInput& input, doub
             break;
           }
         }
-        constraints_.push_back({to_line, settings_.stop_line_gap, 0, false, DriverReason::stop_sign});
+        constraints_.push_back(
+            {to_line, settings_.stop_line_gap, 0, false, DriverReason::stop_sign});
         break;
       }
       case FeatureKind::yield_sign: break;
       case FeatureKind::crosswalk: {
         if (to_line < full_stop) break;  // too late to stop before it: clear it instead
         const Crosswalk& crosswalk = map_.crosswalks()[feature.index];
-        bool occupied = std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
-          return o.kind == TraceActorKind::pedestrian &&
-                 near_polygon({o.x, o.y}, crosswalk.outline, settings_.crosswalk_clearance);
-        });
+        bool occupied =
+            std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
+              return o.kind == TraceActorKind::pedestrian &&
+                     near_polygon({o.x, o.y}, crosswalk.outline, settings_.crosswalk_clearance);
+            });
         if (occupied)
-          constraints_.push_back({to_line, settings_.stop_line_gap, 0, false, DriverReason::pedestrian});
+          constraints_.push_back(
+              {to_line, settings_.stop_line_gap, 0, false, DriverReason::pedestrian});
         break;
       }
     }
   }
   if (route_ends_at_target_)
-    constraints_.push_back({route_.length() - route_.progress(), kTargetClearance, 0, false,
-                            DriverReason::target});
+    constraints_.push_back(
+        {route_.length() - route_.progress(), kTargetClearance, 0, false, DriverReason::target});
 }
 
 void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, double front_s) {
@@ -220,21 +229,22 @@ void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, 
     if (change.begin - front_s > lookahead) break;
     const Polyline& next_lane = map_.lane(change.to).centre_line;
     PolylineProjection ego_beside = next_lane.project({ego.x, ego.y});
-    bool blocked = std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
-      if (o.kind == TraceActorKind::pedestrian) return false;
-      PolylineProjection on = next_lane.project({o.x, o.y});
-      double half_width = on.lateral >= 0 ? lane_left_width_at(map_, change.to, on.s)
-                                          : lane_right_width_at(map_, change.to, on.s);
-      if (on.distance > half_width + o.width / 2) return false;
-      double ahead = on.s - ego_beside.s;  // along the next lane, centre to centre
-      double reach = (vehicle_.length + o.length) / 2 + settings_.lane_change_gap;
-      double behind_room = reach + settings_.lane_change_time_gap * o.speed;
-      double ahead_room = reach + settings_.lane_change_time_gap * ego.speed;
-      return ahead > -behind_room && ahead < ahead_room;
-    });
+    bool blocked =
+        std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
+          if (o.kind == TraceActorKind::pedestrian) return false;
+          PolylineProjection on = next_lane.project({o.x, o.y});
+          double half_width = on.lateral >= 0 ? lane_left_width_at(map_, change.to, on.s)
+                                              : lane_right_width_at(map_, change.to, on.s);
+          if (on.distance > half_width + o.width / 2) return false;
+          double ahead = on.s - ego_beside.s;  // along the next lane, centre to centre
+          double reach = (vehicle_.length + o.length) / 2 + settings_.lane_change_gap;
+          double behind_room = reach + settings_.lane_change_time_gap * o.speed;
+          double ahead_room = reach + settings_.lane_change_time_gap * ego.speed;
+          return ahead > -behind_room && ahead < ahead_room;
+        });
     if (blocked)
-      constraints_.push_back({change.begin - front_s, settings_.stop_line_gap, 0, false,
-                              DriverReason::lane_change});
+      constraints_.push_back(
+          {change.begin - front_s, settings_.stop_line_gap, 0, false, DriverReason::lane_change});
     break;  // only the next lane change matters now
   }
 }
@@ -269,7 +279,8 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
     }
     if (!constraint.is_object) continue;
     double closing = ego.speed - constraint.lead_speed;
-    bool collision_course = closing > 0 && constraint.gap / closing < settings_.emergency_time_to_collision;
+    bool collision_course =
+        closing > 0 && constraint.gap / closing < settings_.emergency_time_to_collision;
     if (collision_course || (constraint.gap < 0.5 && ego.speed > 0)) {
       acceleration = -vehicle_.max_deceleration;
       reason_ = DriverReason::emergency;
@@ -280,7 +291,8 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
     acceleration = -settings_.comfortable_deceleration;
   }
   acceleration = std::clamp(acceleration, -vehicle_.max_deceleration, vehicle_.max_acceleration);
-  return {acceleration, std::clamp(steering(ego), -vehicle_.max_steering_angle, vehicle_.max_steering_angle)};
+  return {acceleration,
+          std::clamp(steering(ego), -vehicle_.max_steering_angle, vehicle_.max_steering_angle)};
 }
 
 }  // namespace scenfuzz

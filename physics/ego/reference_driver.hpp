@@ -16,11 +16,11 @@
 namespace scenfuzz {
 
 struct DriverSettings {
-  double time_gap = 1.5;                  // s, IDM's desired time headway
-  double standstill_gap = 2.5;            // m, bumper to bumper behind a stopped lead
-  double stop_line_gap = 1.0;             // m between the front bumper and a stop line
-  double comfortable_acceleration = 1.5;  // m/s^2, IDM's a
-  double comfortable_deceleration = 2.5;  // m/s^2, IDM's b
+  double time_gap = 1.5;                     // s, IDM's desired time headway
+  double standstill_gap = 2.5;               // m, bumper to bumper behind a stopped lead
+  double stop_line_gap = 1.0;                // m between the front bumper and a stop line
+  double comfortable_acceleration = 1.5;     // m/s^2, IDM's a
+  double comfortable_deceleration = 2.5;     // m/s^2, IDM's b
   double emergency_time_to_collision = 1.5;  // s: below it, full braking
   double lateral_acceleration = 2.0;         // m/s^2 allowed in bends
   double default_speed_limit = 13.9;         // m/s on lanes without a limit (50 km/h)
@@ -36,9 +36,9 @@ struct DriverSettings {
 // What the driver knows at one step.
 struct DriverInput {
   double time = 0;
-  KinematicState ego;                       // its own state (odometry is exact)
-  std::span<const WorldObject> objects;     // perceived objects
-  std::span<const SignalColour> lights;     // every map light's colour now (index as the map's)
+  KinematicState ego;                    // its own state (odometry is exact)
+  std::span<const WorldObject> objects;  // perceived objects
+  std::span<const SignalColour> lights;  // every map light's colour now (index as the map's)
 };
 
 // Why the driver chose its acceleration, for tests and the trace's reading.
@@ -63,10 +63,10 @@ class ReferenceDriver {
 
  private:
   struct Constraint {
-    double gap = 0;         // m from the front bumper (the centre, for the target) to it
-    double clearance = 0;   // m to keep when standing behind it (IDM's s0)
-    double lead_speed = 0;  // m/s along the path
-    bool is_object = false; // a real object (time-to-collision braking applies)
+    double gap = 0;          // m from the front bumper (the centre, for the target) to it
+    double clearance = 0;    // m to keep when standing behind it (IDM's s0)
+    double lead_speed = 0;   // m/s along the path
+    bool is_object = false;  // a real object (time-to-collision braking applies)
     DriverReason reason = DriverReason::lead;
   };
 

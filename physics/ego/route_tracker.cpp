@@ -79,7 +79,8 @@ void RouteTracker::update(MapPoint point) {
 double RouteTracker::speed_limit_at(double s) const {
   if (limit_s_.empty()) return 0;
   auto next = std::upper_bound(limit_s_.begin(), limit_s_.end(), s);
-  std::size_t index = next == limit_s_.begin() ? 0 : static_cast<std::size_t>(next - limit_s_.begin()) - 1;
+  std::size_t index =
+      next == limit_s_.begin() ? 0 : static_cast<std::size_t>(next - limit_s_.begin()) - 1;
   return limit_speed_[index];
 }
 
@@ -107,7 +108,8 @@ std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, double behind
       nearest_vertex = vertex;
     }
   }
-  std::size_t from = std::max(first, nearest_vertex > kCoarseStride ? nearest_vertex - kCoarseStride : 0);
+  std::size_t from =
+      std::max(first, nearest_vertex > kCoarseStride ? nearest_vertex - kCoarseStride : 0);
   std::size_t to = std::min(last, nearest_vertex + kCoarseStride);
   std::optional<PolylineProjection> best;
   for (std::size_t segment = from; segment <= to; ++segment) {

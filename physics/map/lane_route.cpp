@@ -17,9 +17,6 @@ namespace scenfuzz {
 
 namespace {
 
-// Lane ends closer than this are joined end to start (Apollo's joints are within millimetres).
-constexpr double kJointTolerance = 0.5;
-
 enum class Entry { start, successor, lane_change, goal };
 
 struct SearchState {
@@ -40,30 +37,6 @@ struct Queued {
     return priority > other.priority || (priority == other.priority && state > other.state);
   }
 };
-
-// Where a successor link leaves `from` and enters `to`. Usually from's end and to's start, but a
-// closed ring (roundabout) is one lane whose entries and exits join it part-way along.
-struct LinkPoints {
-  double exit_s = 0;
-  double entry_s = 0;
-};
-
-LinkPoints link_points(const RoadMap& map, LaneIndex from, LaneIndex to) {
-  const Polyline& from_line = map.lane(from).centre_line;
-  const Polyline& to_line = map.lane(to).centre_line;
-  const MapPoint from_end = from_line.points().back();
-  const MapPoint to_start = to_line.points().front();
-  LinkPoints link{from_line.length(), 0};
-  if (distance(from_end, to_start) <= kJointTolerance) return link;
-  PolylineProjection exit = from_line.project(to_start);
-  if (exit.distance <= kJointTolerance) {
-    link.exit_s = exit.s;  // `to` branches off part-way along `from`
-    return link;
-  }
-  PolylineProjection entry = to_line.project(from_end);
-  if (entry.distance <= kJointTolerance) link.entry_s = entry.s;  // `from` joins `to` part-way
-  return link;
-}
 
 // An entry already expanded on a lane.
 struct Expanded {
@@ -192,6 +165,23 @@ std::optional<FeatureAhead> next_feature_ahead(const RoadMap& map, const LaneRou
   return std::nullopt;
 }
 
+LinkPoints link_points(const RoadMap& map, LaneIndex from, LaneIndex to) {
+  const Polyline& from_line = map.lane(from).centre_line;
+  const Polyline& to_line = map.lane(to).centre_line;
+  const MapPoint from_end = from_line.points().back();
+  const MapPoint to_start = to_line.points().front();
+  LinkPoints link{from_line.length(), 0};
+  if (distance(from_end, to_start) <= kJointTolerance) return link;
+  PolylineProjection exit = from_line.project(to_start);
+  if (exit.distance <= kJointTolerance) {
+    link.exit_s = exit.s;  // `to` branches off part-way along `from`
+    return link;
+  }
+  PolylineProjection entry = to_line.project(from_end);
+  if (entry.distance <= kJointTolerance) link.entry_s = entry.s;  // `from` joins `to` part-way
+  return link;
+}
+
 LaneRoute defer_lane_changes(const RoadMap& map, LaneRoute route, double distance) {
   auto& segments = route.segments;
   for (std::size_t k = 0; k + 1 < segments.size(); ++k) {
@@ -203,8 +193,9 @@ LaneRoute defer_lane_changes(const RoadMap& map, LaneRoute route, double distanc
     };
     if (!beside(lane.left_forward_neighbours) && !beside(lane.right_forward_neighbours)) continue;
     // Keep a metre of the entered lane, so the segment after the change is not empty.
-    double shift = std::min({distance - (leaving.s_end - leaving.s_begin), lane.length() - leaving.s_end,
-                             entering.s_end - entering.s_begin - 1.0});
+    double shift =
+        std::min({distance - (leaving.s_end - leaving.s_begin), lane.length() - leaving.s_end,
+                  entering.s_end - entering.s_begin - 1.0});
     if (shift <= 0) continue;
     leaving.s_end += shift;
     entering.s_begin += shift;

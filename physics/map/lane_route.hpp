@@ -26,6 +26,17 @@ struct LaneRoute {
   int lane_changes = 0;
 };
 
+// Where a successor link leaves `from` and enters `to`: usually from's end and to's start, but a
+// closed ring (roundabout) is one lane whose entries and exits join it part-way along.
+struct LinkPoints {
+  double exit_s = 0;
+  double entry_s = 0;
+};
+LinkPoints link_points(const RoadMap& map, LaneIndex from, LaneIndex to);
+
+// Lane ends closer than this are joined end to start (Apollo's joints are within millimetres).
+inline constexpr double kJointTolerance = 0.5;
+
 struct RouteOptions {
   // Extra cost of a lane change in metres, so that a route keeps its lane when it can.
   double lane_change_cost = 20;

@@ -28,23 +28,26 @@ scenfuzz_ego_config plugin_config(const SimulationSetup& setup, double dt, std::
   config.dt = dt;
   config.seed = seed;
   const ActorClass& body = setup.ego_body;
-  config.vehicle = {body.length,       body.width,           body.wheelbase,
-                    body.max_speed,    body.max_acceleration, body.max_deceleration,
+  config.vehicle = {body.length,
+                    body.width,
+                    body.wheelbase,
+                    body.max_speed,
+                    body.max_acceleration,
+                    body.max_deceleration,
                     body.max_steering_angle};
-  config.target_x = setup.ego_target ? setup.ego_target->position.x
-                                     : std::numeric_limits<double>::quiet_NaN();
-  config.target_y = setup.ego_target ? setup.ego_target->position.y
-                                     : std::numeric_limits<double>::quiet_NaN();
+  config.target_x =
+      setup.ego_target ? setup.ego_target->position.x : std::numeric_limits<double>::quiet_NaN();
+  config.target_y =
+      setup.ego_target ? setup.ego_target->position.y : std::numeric_limits<double>::quiet_NaN();
   return config;
 }
 
-void fill_observation(const RouteTracker& route, const KinematicState& ego,
-                      double t, std::span<const WorldObject> perceived,
-                      std::span<const SignalColour> lights, bool has_target,
-                      scenfuzz_observation& observation) {
+void fill_observation(const RouteTracker& route, const KinematicState& ego, double t,
+                      std::span<const WorldObject> perceived, std::span<const SignalColour> lights,
+                      bool has_target, scenfuzz_observation& observation) {
   constexpr double infinity = std::numeric_limits<double>::infinity();
-  observation.ego = {t,         ego.x,        ego.y,        ego.heading, ego.speed,
-                     ego.acceleration, ego.yaw_rate, ego.steering_angle};
+  observation.ego = {
+      t, ego.x, ego.y, ego.heading, ego.speed, ego.acceleration, ego.yaw_rate, ego.steering_angle};
 
   std::vector<const WorldObject*> nearest;
   nearest.reserve(perceived.size());
@@ -59,11 +62,13 @@ void fill_observation(const RouteTracker& route, const KinematicState& ego,
   observation.object_count = static_cast<std::uint32_t>(count);
   for (std::size_t i = 0; i < count; ++i) {
     const WorldObject& o = *nearest[i];
-    observation.objects[i] = {o.id, object_kind(o.kind), o.x, o.y, o.heading, o.speed, o.length, o.width};
+    observation.objects[i] = {o.id,   object_kind(o.kind), o.x, o.y, o.heading, o.speed, o.length,
+                              o.width};
   }
 
   std::uint32_t points = 0;
-  for (double s = route.progress(); !route.empty() && s <= route.length() && points < SCENFUZZ_ROUTE_POINTS;
+  for (double s = route.progress();
+       !route.empty() && s <= route.length() && points < SCENFUZZ_ROUTE_POINTS;
        s += kRoutePointSpacing, ++points) {
     MapPoint p = route.path().point_at(s);
     observation.route[points] = {p.x, p.y, route.path().heading_at(s), route.speed_limit_at(s)};
@@ -78,7 +83,8 @@ void fill_observation(const RouteTracker& route, const KinematicState& ego,
     double ahead = feature.s - route.progress();
     if (ahead < 0) continue;
     if (feature.kind == FeatureKind::traffic_light && observation.light == SCENFUZZ_LIGHT_NONE) {
-      SignalColour colour = feature.index < lights.size() ? lights[feature.index] : SignalColour::green;
+      SignalColour colour =
+          feature.index < lights.size() ? lights[feature.index] : SignalColour::green;
       observation.light = colour == SignalColour::red      ? SCENFUZZ_LIGHT_RED
                           : colour == SignalColour::yellow ? SCENFUZZ_LIGHT_YELLOW
                                                            : SCENFUZZ_LIGHT_GREEN;

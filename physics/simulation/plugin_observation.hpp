@@ -17,9 +17,8 @@ scenfuzz_ego_config plugin_config(const SimulationSetup& setup, double dt, std::
 
 // Fills `observation` for time t: the ego's state, the perceived objects nearest first, the route
 // ahead every 2 m, the distance to the target, the next traffic light and stop sign.
-void fill_observation(const RouteTracker& route, const KinematicState& ego,
-                      double t, std::span<const WorldObject> perceived,
-                      std::span<const SignalColour> lights, bool has_target,
-                      scenfuzz_observation& observation);
+void fill_observation(const RouteTracker& route, const KinematicState& ego, double t,
+                      std::span<const WorldObject> perceived, std::span<const SignalColour> lights,
+                      bool has_target, scenfuzz_observation& observation);
 
 }  // namespace scenfuzz

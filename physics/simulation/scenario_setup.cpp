@@ -52,8 +52,8 @@ std::optional<double> reference_heading(Context& context, const Direction& direc
                                                           "' on map '" + context.map.name() + "'");
         return std::nullopt;
       }
-      double s = std::clamp(evaluate(direction.s, context.values), 0.0,
-                            context.map.lane(*lane).length());
+      double s =
+          std::clamp(evaluate(direction.s, context.values), 0.0, context.map.lane(*lane).length());
       return lane_heading_at(context.map, *lane, s);
     }
     case Direction::Kind::ego:
@@ -90,8 +90,8 @@ std::optional<MapPose> place_state(Context& context, const State& state) {
   if (!placed) return std::nullopt;
   if (placed->overshoot > 0.01)
     context.diagnostics.warning(state.position.location,
-                                "s lies " + format_number(placed->overshoot) +
-                                    " m outside lane '" + state.position.lane +
+                                "s lies " + format_number(placed->overshoot) + " m outside lane '" +
+                                    state.position.lane +
                                     "'; the lane's end is used, as Apollo does");
   MapPose pose = placed->pose;
   if (!state.heading) {
@@ -120,8 +120,8 @@ std::optional<double> speed_of(Context& context, const State& state, double fall
   if (!state.speed) return fallback;
   double speed = evaluate(*state.speed, context.values);
   if (!std::isfinite(speed) || speed < 0) {
-    context.diagnostics.error(state.speed->location, "a speed must be a finite number >= 0, not " +
-                                                         format_number(speed));
+    context.diagnostics.error(state.speed->location,
+                              "a speed must be a finite number >= 0, not " + format_number(speed));
     return std::nullopt;
   }
   return speed;
@@ -129,15 +129,15 @@ std::optional<double> speed_of(Context& context, const State& state, double fall
 
 ActorClass body_of(Context& context, const Actor& actor, ActorCategory fallback) {
   ActorCategory category = fallback;
-  if (actor.type) {
+  if (actor.type && !actor.type->model.empty()) {  // a pedestrian's type may give only a height
     auto known = category_for_model(actor.type->model);
     if (known) {
       category = *known;
     } else {
-      context.diagnostics.warning(actor.type->location,
-                                  "unknown vehicle model '" + actor.type->model + "'; simulated as a " +
-                                      std::string(actor_class(fallback).name) +
-                                      " (docs/simulation.md lists the known models)");
+      context.diagnostics.warning(
+          actor.type->location, "unknown vehicle model '" + actor.type->model +
+                                    "'; simulated as a " + std::string(actor_class(fallback).name) +
+                                    " (docs/simulation.md lists the known models)");
     }
   }
   ActorClass body = actor_class(category);
@@ -167,9 +167,10 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
     if (!target) return std::nullopt;
     route = find_route(context.map, start, *target);
     if (!route) {
-      context.diagnostics.error(actor.target->location,
-                                "no route over the lanes of map '" + context.map.name() +
-                                    "' leads from " + actor.name + "'s initial position to this target");
+      context.diagnostics.error(actor.target->location, "no route over the lanes of map '" +
+                                                            context.map.name() + "' leads from " +
+                                                            actor.name +
+                                                            "'s initial position to this target");
       return std::nullopt;
     }
   } else {
@@ -200,7 +201,8 @@ std::optional<Trajectory> straight_walk(Context& context, const Actor& actor, co
   }
   if (speed <= 0 || distance(start.position, end) < 0.01) return standing_at(start);
   std::vector<MapPoint> points{start.position, end};
-  return Trajectory(Polyline(points), {{0, speed}}, actor_class(ActorCategory::pedestrian).max_deceleration);
+  return Trajectory(Polyline(points), {{0, speed}},
+                    actor_class(ActorCategory::pedestrian).max_deceleration);
 }
 
 // Through the waypoints in order (then the target): OMPL paths for vehicles, straight legs for
@@ -243,15 +245,17 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
     request.turning_radius = body.min_turning_radius();
     request.seed = actor_seed(context.seed, actor_index);
     if (obstacles.body_count() > 0)
-      request.is_free = [&](const MapPose& pose) { return !obstacles.touches_static(geometry, pose); };
+      request.is_free = [&](const MapPose& pose) {
+        return !obstacles.touches_static(geometry, pose);
+      };
     try {
       PlannedPath planned = plan_path(request);
       for (const MapPose& pose : planned.poses) points.push_back(pose.position);
       for (std::size_t index : planned.waypoint_at) waypoint_s.push_back(planned.s[index]);
     } catch (const PlanningError& error) {
-      context.diagnostics.error(actor.motion.location.line > 0 ? actor.motion.location : actor.location,
-                                "cannot plan " + actor.name + "'s path through its waypoints: " +
-                                    error.what());
+      context.diagnostics.error(
+          actor.motion.location.line > 0 ? actor.motion.location : actor.location,
+          "cannot plan " + actor.name + "'s path through its waypoints: " + error.what());
       return std::nullopt;
     }
   }
@@ -266,14 +270,16 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
 }
 
 std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
-                                           std::size_t actor_index, const CollisionWorld& obstacles) {
+                                           std::size_t actor_index,
+                                           const CollisionWorld& obstacles) {
   bool pedestrian = actor.kind == ActorKind::pedestrian;
   ScriptedActor scripted;
   scripted.name = actor.name;
   scripted.kind = pedestrian ? TraceActorKind::pedestrian : TraceActorKind::vehicle;
-  scripted.body = body_of(context, actor, pedestrian ? ActorCategory::pedestrian
+  scripted.body = body_of(context, actor,
+                          pedestrian                         ? ActorCategory::pedestrian
                           : actor.kind == ActorKind::cyclist ? ActorCategory::bicycle
-                                                              : ActorCategory::car);
+                                                             : ActorCategory::car);
   auto start = place_state(context, actor.initial);
   if (!start) return std::nullopt;
   context.initial_headings[actor.name] = start->heading;
@@ -329,7 +335,8 @@ BodyGeometry obstacle_geometry(Context& context, const Obstacle& obstacle) {
   // Without a shape, an obstacle is a 1 m cube: about a pallet or a large box on the road.
   if (!obstacle.shape) return {BodyShape::box, 1, 1, 1};
   std::vector<double> d;
-  for (const Value& value : obstacle.shape->dimensions) d.push_back(evaluate(value, context.values));
+  for (const Value& value : obstacle.shape->dimensions)
+    d.push_back(evaluate(value, context.values));
   auto at = [&](std::size_t i, double fallback) {
     return i < d.size() && std::isfinite(d[i]) && d[i] > 0 ? d[i] : fallback;
   };
@@ -367,8 +374,9 @@ void prepare_lights(Context& context, SimulationSetup& setup) {
     auto light = std::find_if(lights.begin(), lights.end(),
                               [&](const TrafficLight& l) { return l.id == setting.id; });
     if (light == lights.end()) {
-      context.diagnostics.error(setting.location, "map '" + context.map.name() +
-                                                      "' has no traffic light '" + setting.id + "'");
+      context.diagnostics.error(
+          setting.location,
+          "map '" + context.map.name() + "' has no traffic light '" + setting.id + "'");
       continue;
     }
     setup.lights.push_back({static_cast<std::uint32_t>(light - lights.begin()), *colour});
@@ -386,9 +394,12 @@ Conditions conditions_of(Context& context) {
   for (const WeatherComponent& component : environment->weather) {
     double intensity = std::clamp(evaluate(component.intensity, context.values), 0.0, 1.0);
     if (std::isnan(intensity)) intensity = 0;
-    if (component.kind == "fog") conditions.fog = intensity;
-    else if (component.kind == "rain") conditions.rain = intensity;
-    else if (component.kind == "snow") conditions.snow = intensity;
+    if (component.kind == "fog")
+      conditions.fog = intensity;
+    else if (component.kind == "rain")
+      conditions.rain = intensity;
+    else if (component.kind == "snow")
+      conditions.snow = intensity;
   }
   return conditions;
 }
@@ -465,7 +476,8 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
     auto lane = map.find_lane(limit.lane);
     if (!lane) {
-      diagnostics.error(limit.location, "unknown lane '" + limit.lane + "' on map '" + map.name() + "'");
+      diagnostics.error(limit.location,
+                        "unknown lane '" + limit.lane + "' on map '" + map.name() + "'");
       continue;
     }
     setup.speed_limits.emplace_back(*lane, evaluate(limit.upper, values));

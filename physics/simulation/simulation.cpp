@@ -82,8 +82,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   BodyGeometry ego_geometry = body_geometry(setup.ego_body);
   trace.actors.push_back(
       describe(setup.ego_name, TraceActorKind::ego, setup.ego_body.category, ego_geometry));
-  world.add_body(ego_geometry, {{setup.ego_initial.x, setup.ego_initial.y}, setup.ego_initial.heading},
-                 false);
+  world.add_body(ego_geometry,
+                 {{setup.ego_initial.x, setup.ego_initial.y}, setup.ego_initial.heading}, false);
   states.push_back(setup.ego_initial);
   for (const ScriptedActor& actor : setup.actors) {
     BodyGeometry geometry = body_geometry(actor.body);
@@ -94,8 +94,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   }
   std::size_t first_obstacle = trace.actors.size();
   for (const StaticObstacle& obstacle : setup.obstacles) {
-    trace.actors.push_back(describe(obstacle.name, TraceActorKind::obstacle, ActorCategory::car,
-                                    obstacle.geometry));
+    trace.actors.push_back(
+        describe(obstacle.name, TraceActorKind::obstacle, ActorCategory::car, obstacle.geometry));
     world.add_body(obstacle.geometry, obstacle.pose, true);
     KinematicState state;
     state.x = obstacle.pose.position.x;
@@ -151,8 +151,10 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       if (!collided.insert({contact.first, contact.second}).second) continue;
       trace.collisions.push_back({t, contact.first, contact.second, contact.point,
                                   contact.first_side, contact.second_side});
-      trace.events.push_back({TraceEventKind::collision, t,
-                              static_cast<std::int64_t>(trace.collisions.size() - 1), {}});
+      trace.events.push_back({TraceEventKind::collision,
+                              t,
+                              static_cast<std::int64_t>(trace.collisions.size() - 1),
+                              {}});
       ego_hit = ego_hit || contact.first == kEgo;
     }
 

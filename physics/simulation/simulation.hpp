@@ -16,15 +16,15 @@
 namespace scenfuzz {
 
 struct SimulationOptions {
-  double dt = 0.05;                 // s per step
-  std::optional<double> duration;   // overrides the scenario's
-  bool stop_at_collision = true;    // end at the first collision involving the ego
-  std::uint64_t seed = 0;           // perception noise and misses; passed to a plugin
-  PerceptionSettings perception;    // clear-weather figures, degraded by the scenario's weather
+  double dt = 0.05;                // s per step
+  std::optional<double> duration;  // overrides the scenario's
+  bool stop_at_collision = true;   // end at the first collision involving the ego
+  std::uint64_t seed = 0;          // perception noise and misses; passed to a plugin
+  PerceptionSettings perception;   // clear-weather figures, degraded by the scenario's weather
   DriverSettings driver;
-  std::string ego_plugin;           // a shared library to drive the ego; empty: the reference driver
-  double plugin_step_timeout = 2;   // s of wall time a plugin may take for one step
-  double target_reach = 2;          // m: the ego has reached its target within this distance
+  std::string ego_plugin;          // a shared library to drive the ego; empty: the reference driver
+  double plugin_step_timeout = 2;  // s of wall time a plugin may take for one step
+  double target_reach = 2;         // m: the ego has reached its target within this distance
 };
 
 Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options);

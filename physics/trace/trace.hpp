@@ -48,15 +48,15 @@ struct PerceivedActor {
 };
 
 struct TraceLight {
-  std::string id;                     // the map's traffic light id
-  std::vector<SignalColour> colour;   // one per sample
+  std::string id;                    // the map's traffic light id
+  std::vector<SignalColour> colour;  // one per sample
 };
 
 struct Collision {
   double time = 0;
-  ActorId first = 0;   // the lower actor id of the pair
+  ActorId first = 0;  // the lower actor id of the pair
   ActorId second = 0;
-  MapPoint point;      // a contact point, map frame
+  MapPoint point;  // a contact point, map frame
   BodySide first_side = BodySide::front;
   BodySide second_side = BodySide::front;
 };

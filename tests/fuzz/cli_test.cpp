@@ -572,8 +572,8 @@ TEST_F(CliMapTest, Help) {
 class CliRunTest : public CliTest {
  protected:
   static std::string corpus_file(const std::string& name) {
-    return (fs::path(SCENFUZZ_TEST_DATA_DIR).parent_path().parent_path().parent_path() /
-            "corpora" / "avunit" / name)
+    return (fs::path(SCENFUZZ_TEST_DATA_DIR).parent_path().parent_path().parent_path() / "corpora" /
+            "avunit" / name)
         .string();
   }
 };
@@ -595,8 +595,8 @@ TEST_F(CliRunTest, RunsALogicalScenarioAtTheMiddleAndWritesItsOutputs) {
   EXPECT_FALSE(has_leftover_temporary_file(out));
 
   // The concrete scenario it wrote runs as it is, and gives the same outcome.
-  const Outcome again = scenfuzz({"run", (out / "scenario.avu").string(), "--out",
-                                  (dir_ / "again").string()});
+  const Outcome again =
+      scenfuzz({"run", (out / "scenario.avu").string(), "--out", (dir_ / "again").string()});
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(slurp(out / "trace.csv"), slurp(dir_ / "again" / "trace.csv"));
 }
@@ -620,9 +620,9 @@ TEST_F(CliRunTest, ALogicalScenarioNeedsAPoint) {
 }
 
 TEST_F(CliRunTest, AnEgoPluginThatCannotLoadIsABadInput) {
-  const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu"), "--at",
-                                "mid", "--ego-plugin", (dir_ / "missing.so").string(), "--out",
-                                (dir_ / "o").string()});
+  const Outcome run =
+      scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu"), "--at", "mid",
+                "--ego-plugin", (dir_ / "missing.so").string(), "--out", (dir_ / "o").string()});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("missing.so"), std::string::npos) << run.err;
 }

@@ -60,13 +60,15 @@ void simulate_scenario(benchmark::State& state, const std::string& name) {
     steps += static_cast<double>(trace.sample_count());
     benchmark::DoNotOptimize(trace);
   }
-  state.counters["actors"] = static_cast<double>(prepared.setup->actors.size() + 1 +
-                                                 prepared.setup->obstacles.size());
+  state.counters["actors"] =
+      static_cast<double>(prepared.setup->actors.size() + 1 + prepared.setup->obstacles.size());
   state.counters["realtime_factor"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
   state.counters["steps_per_s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
 }
 
-void BM_Straight2Actors(benchmark::State& state) { simulate_scenario(state, "straight_2_actors.avu"); }
+void BM_Straight2Actors(benchmark::State& state) {
+  simulate_scenario(state, "straight_2_actors.avu");
+}
 void BM_Crossroads10Actors(benchmark::State& state) {
   simulate_scenario(state, "crossroads_10_actors.avu");
 }

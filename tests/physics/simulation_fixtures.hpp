@@ -56,7 +56,8 @@ inline Footprint footprint_at(const Trace& trace, ActorId id, std::size_t i) {
 inline double closest_approach(const Trace& trace, ActorId a, ActorId b) {
   double closest = INFINITY;
   for (std::size_t i = 0; i < trace.sample_count(); ++i)
-    closest = std::min(closest, signed_distance(footprint_at(trace, a, i), footprint_at(trace, b, i)));
+    closest =
+        std::min(closest, signed_distance(footprint_at(trace, a, i), footprint_at(trace, b, i)));
   return closest;
 }
 

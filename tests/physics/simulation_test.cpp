@@ -22,10 +22,9 @@ std::string scenario_text(const std::string& map, const std::string& ego, const 
 }
 
 TEST(SimulationTest, StopsBehindAStoppedCarFrom20MetresPerSecond) {
-  auto run = simulate_text(scenario_text(
-      "straight", "ego", "parked", "",
-      "ego = AV((\"east_0\"->20, , 20), (\"east_0\"->480));\n"
-      "parked = Vehicle((\"east_0\"->250, , 0));\n"));
+  auto run = simulate_text(scenario_text("straight", "ego", "parked", "",
+                                         "ego = AV((\"east_0\"->20, , 20), (\"east_0\"->480));\n"
+                                         "parked = Vehicle((\"east_0\"->250, , 0));\n"));
   ASSERT_TRUE(run.trace) << run.errors;
   const Trace& trace = *run.trace;
   EXPECT_TRUE(trace.collisions.empty());
@@ -75,8 +74,8 @@ TEST(SimulationTest, YieldsToACrossingPedestrian) {
 std::string cut_in(const std::string& cutter_speed) {
   return scenario_text("straight", "ego", "cutter", "",
                        "ego = AV((\"east_0\"->50, , 25), (\"east_0\"->480));\n"
-                       "cutter = Vehicle((\"east_1\"->57.7, , " + cutter_speed +
-                           "), Waypoint((\"east_0\"->85, , " + cutter_speed +
+                       "cutter = Vehicle((\"east_1\"->57.7, , " +
+                           cutter_speed + "), Waypoint((\"east_0\"->85, , " + cutter_speed +
                            ")), (\"east_0\"->400));\n");
 }
 
