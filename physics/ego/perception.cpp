@@ -47,16 +47,21 @@ void check_settings(const PerceptionSettings& settings) {
   check_unit_interval(settings.miss_probability, "miss_probability");
 }
 
-// Uniform in [0, 1) from the top 53 bits, and standard normal by Box-Muller: both written out so
-// that a seed gives the same numbers with every standard library.
+// Uniform in [0, 1) from the top 53 bits, and standard normals by the polar method: both written
+// out so that a seed gives the same numbers with every standard library.
 double uniform(std::mt19937_64& random) { return static_cast<double>(random() >> 11) * 0x1.0p-53; }
 
-// Two independent standard normal draws (Box-Muller uses both the cosine and the sine).
+// Two independent standard normal draws by Marsaglia's polar method (Box-Muller without the
+// sine and cosine, which cost more than the rejected quarter of the draws).
 std::pair<double, double> standard_normal_pair(std::mt19937_64& random) {
-  const double u1 = 1 - uniform(random);  // (0, 1]: log stays finite
-  const double u2 = uniform(random);
-  const double radius = std::sqrt(-2 * std::log(u1));
-  return {radius * std::cos(kTwoPi * u2), radius * std::sin(kTwoPi * u2)};
+  for (;;) {
+    const double u = 2 * uniform(random) - 1;
+    const double v = 2 * uniform(random) - 1;
+    const double s = u * u + v * v;
+    if (s <= 0 || s >= 1) continue;
+    const double scale = std::sqrt(-2 * std::log(s) / s);
+    return {u * scale, v * scale};
+  }
 }
 
 double degraded_range(double clear, double factor) {
@@ -131,8 +136,9 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
   Snapshot& current = history_[history_head_];
   current.ego = ego;
   current.objects.assign(truth.begin(), truth.end());
-  std::sort(current.objects.begin(), current.objects.end(),
-            [](const WorldObject& a, const WorldObject& b) { return a.id < b.id; });
+  auto by_id = [](const WorldObject& a, const WorldObject& b) { return a.id < b.id; };
+  if (!std::is_sorted(current.objects.begin(), current.objects.end(), by_id))
+    std::sort(current.objects.begin(), current.objects.end(), by_id);
   if (!started_) {
     std::fill(history_.begin(), history_.end(), current);
     started_ = true;
@@ -186,8 +192,10 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
   for (const Track& track : tracks_) {
     WorldObject object = track.object;
     const double coasted = object.speed * (time_ - track.last_seen);
-    object.x += coasted * std::cos(object.heading);
-    object.y += coasted * std::sin(object.heading);
+    if (coasted != 0) {  // most tracks were detected this step
+      object.x += coasted * std::cos(object.heading);
+      object.y += coasted * std::sin(object.heading);
+    }
     output_.push_back(object);
   }
   time_ += dt_;

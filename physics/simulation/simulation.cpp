@@ -61,6 +61,22 @@ void append_perceived(PerceivedActor& column, const WorldObject* seen) {
   column.speed.push_back(seen ? seen->speed : nan);
 }
 
+// Room for every sample the run can take, so that recording never reallocates mid-run.
+void reserve_samples(Trace& trace, std::size_t samples) {
+  trace.time.reserve(samples);
+  for (TraceActor& actor : trace.actors)
+    for (auto* column : {&actor.x, &actor.y, &actor.heading, &actor.speed, &actor.acceleration,
+                         &actor.yaw_rate, &actor.s})
+      column->reserve(samples);
+  for (TraceActor& actor : trace.actors) actor.lane.reserve(samples);
+  for (PerceivedActor& perceived : trace.perceived) {
+    perceived.detected.reserve(samples);
+    for (auto* column : {&perceived.x, &perceived.y, &perceived.heading, &perceived.speed})
+      column->reserve(samples);
+  }
+  for (TraceLight& light : trace.lights) light.colour.reserve(samples);
+}
+
 void end_with(Trace& trace, EndReason reason, TraceEventKind kind, double time,
               std::string message = {}) {
   trace.end = reason;
@@ -136,6 +152,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
 
   const double duration = options.duration.value_or(setup.duration);
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
+  reserve_samples(trace, last_step + 1);
   std::set<std::pair<BodyId, BodyId>> collided;
   scenfuzz_observation observation{};
 
