@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 namespace scenfuzz {
@@ -54,36 +55,51 @@ struct PathDirection {
   double curvature = 0;  // rad/m, positive turning left
 };
 
-// The heading at s, continuous along the path (see kHeadingBlendDistance), and its derivative.
-PathDirection direction_at(const Polyline& path, double s) {
-  s = std::clamp(s, 0.0, path.length());
-  std::size_t segment = path.segment_at(s);
-  double heading = segment_heading(path, segment);
+// The heading at s on `segment`, continuous along the path (see kHeadingBlendDistance), and its
+// derivative. `heading_of(k)` is segment k's heading.
+template <typename HeadingOf>
+PathDirection direction_on(const Polyline& path, std::size_t segment, double s,
+                           const HeadingOf& heading_of) {
+  double heading = heading_of(segment);
   double from_start = s - path.arc_lengths()[segment];
   double to_end = path.arc_lengths()[segment + 1] - s;
   if (segment > 0) {
     double blend = blend_distance(path, segment);
     if (from_start < blend) {
-      double turn = angle_difference(heading, segment_heading(path, segment - 1));
+      double turn = angle_difference(heading, heading_of(segment - 1));
       return {wrap_angle(heading - 0.5 * turn * (1 - from_start / blend)), turn / (2 * blend)};
     }
   }
   if (segment + 1 < path.segment_count()) {
     double blend = blend_distance(path, segment + 1);
     if (to_end < blend) {
-      double turn = angle_difference(segment_heading(path, segment + 1), heading);
+      double turn = angle_difference(heading_of(segment + 1), heading);
       return {wrap_angle(heading + 0.5 * turn * (1 - to_end / blend)), turn / (2 * blend)};
     }
   }
   return {heading, 0};
 }
 
-KinematicState state_on_path(const Polyline& path, double s, double speed, double acceleration) {
-  MapPoint point = path.point_at(s);
-  PathDirection direction = direction_at(path, s);
+PathDirection direction_at(const Polyline& path, double s) {
+  s = std::clamp(s, 0.0, path.length());
+  return direction_on(path, path.segment_at(s), s,
+                      [&](std::size_t segment) { return segment_heading(path, segment); });
+}
+
+// The state at arc length s, with the path's segment headings computed once beforehand (this is
+// every scripted actor's every step).
+KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
+                             double speed, double acceleration) {
+  s = std::clamp(s, 0.0, path.length());
+  std::size_t segment = path.segment_at(s);
+  const MapPoint& a = path.points()[segment];
+  const MapPoint& b = path.points()[segment + 1];
+  double t = (s - path.arc_lengths()[segment]) / segment_length(path, segment);
+  PathDirection direction =
+      direction_on(path, segment, s, [&](std::size_t k) { return headings[k]; });
   KinematicState state;
-  state.x = point.x;
-  state.y = point.y;
+  state.x = a.x + t * (b.x - a.x);
+  state.y = a.y + t * (b.y - a.y);
   state.heading = direction.heading;
   state.speed = speed;
   state.acceleration = acceleration;
@@ -137,6 +153,8 @@ Trajectory::Trajectory(Polyline path, std::vector<SpeedPoint> speeds, double sto
   }
 
   standing_pose_ = {path_.points().front(), direction_at(path_, 0).heading};
+  for (std::size_t segment = 0; segment < path_.segment_count(); ++segment)
+    segment_headings_.push_back(segment_heading(path_, segment));
   double time = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i > 0) {
@@ -167,7 +185,7 @@ KinematicState Trajectory::state_at(double t) const {
     return state;
   }
   t = std::max(t, 0.0);
-  if (t >= knot_time_.back()) return state_on_path(path_, path_.length(), 0, 0);
+  if (t >= knot_time_.back()) return state_on_path(path_, segment_headings_, path_.length(), 0, 0);
   // The interval [knot i, knot i + 1) containing t; a knot at infinite time is never reached.
   auto after = std::upper_bound(knot_time_.begin(), knot_time_.end(), t);
   std::size_t i = static_cast<std::size_t>(after - knot_time_.begin()) - 1;
@@ -180,7 +198,7 @@ KinematicState Trajectory::state_at(double t) const {
   double speed = std::max(0.0, v0 + acceleration * elapsed);
   double s =
       std::min(knot_s_[i] + v0 * elapsed + 0.5 * acceleration * elapsed * elapsed, knot_s_[i + 1]);
-  return state_on_path(path_, s, speed, acceleration);
+  return state_on_path(path_, segment_headings_, s, speed, acceleration);
 }
 
 namespace {

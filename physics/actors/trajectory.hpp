@@ -37,6 +37,7 @@ class Trajectory {
 
  private:
   Polyline path_;
+  std::vector<double> segment_headings_;  // of each path segment, for state_at
   MapPose standing_pose_;  // where an actor without a path stays
   // Knots of the piecewise constant-acceleration profile: arc length, speed and time at each.
   std::vector<double> knot_s_, knot_speed_, knot_time_;

@@ -9,10 +9,18 @@ namespace scenfuzz {
 namespace {
 
 constexpr std::size_t kSearchSegments = 3;  // on either side of the previous one
-// Lanes are metres wide: an actor off every lane that has moved less than this is still off.
+// An actor off every lane is looked up again after moving at least this far, however near a lane.
 constexpr double kOffLaneRecheck = 0.25;
 
 }  // namespace
+
+double widest_half_lane(const RoadMap& map) {
+  double widest = 0;
+  for (const Lane& lane : map.lanes())
+    for (const auto* side : {&lane.left_width, &lane.right_width})
+      for (const WidthSample& sample : *side) widest = std::max(widest, sample.width);
+  return widest;
+}
 
 LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) {
   if (lane_ >= 0) {
@@ -38,7 +46,7 @@ LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) 
       return {lane_, best.s};
     }
   }
-  if (off_lanes_ && distance(point, off_lanes_at_) < kOffLaneRecheck) return {};
+  if (off_lanes_ && distance(point, off_lanes_at_) < off_lanes_reach_) return {};
   // Most off-lane actors are pedestrians on pavements: the nearest centre line alone (several
   // times cheaper than the heading-aware query) says whether they are on any lane at all.
   auto nearest = project_to_lane(map, point);
@@ -47,6 +55,8 @@ LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) 
     lane_ = -1;
     off_lanes_ = true;
     off_lanes_at_ = point;
+    double nearest_centre = nearest ? nearest->distance : 0;
+    off_lanes_reach_ = std::max(kOffLaneRecheck, nearest_centre - widest_half_lane_);
     return {};
   }
   off_lanes_ = false;

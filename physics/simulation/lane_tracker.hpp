@@ -15,15 +15,23 @@ struct LaneFix {
   double s = 0;
 };
 
+// The widest any lane of the map reaches on either side of its centre line.
+double widest_half_lane(const RoadMap& map);
+
 class LaneTracker {
  public:
+  // `widest_half_lane` of the map the actor is on.
+  explicit LaneTracker(double widest_half_lane) : widest_half_lane_(widest_half_lane) {}
+
   LaneFix update(const RoadMap& map, MapPoint point, double heading);
 
  private:
+  double widest_half_lane_;
   std::int32_t lane_ = -1;
   std::size_t segment_ = 0;
   bool off_lanes_ = false;
-  MapPoint off_lanes_at_;  // where the map last said: on no lane
+  MapPoint off_lanes_at_;       // where the map last said: on no lane
+  double off_lanes_reach_ = 0;  // how far from there no lane can begin
 };
 
 }  // namespace scenfuzz

@@ -137,7 +137,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   RouteTracker route(map, setup.ego_route, setup.speed_limits, options.driver.default_speed_limit);
   ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver);
   TrafficSignals signals(map, setup.lights);
-  std::vector<LaneTracker> lanes(actor_count);
+  std::vector<LaneTracker> lanes(actor_count, LaneTracker(widest_half_lane(map)));
 
   std::optional<PluginDriver> plugin;
   if (!options.ego_plugin.empty()) {
