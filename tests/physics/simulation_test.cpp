@@ -79,6 +79,52 @@ std::string cut_in(const std::string& cutter_speed) {
                            ")), (\"east_0\"->400));\n");
 }
 
+TEST(SimulationTest, StopsAtAStopSignThenGoesOn) {
+  // t_junction: the side road's stop line is at s = 144 on south_in_0 (y = -16).
+  SimulationOptions options;
+  options.duration = 40;
+  auto run =
+      simulate_text(scenario_text("t_junction", "ego", "", "",
+                                  "ego = AV((\"south_in_0\"->100, , 10), (\"east_out_0\"->60));\n"),
+                    options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  const TraceActor& ego = run.trace->actors[0];
+  bool stopped_at_line = false;
+  for (std::size_t i = 0; i < ego.y.size(); ++i) {
+    double front = ego.y[i] + ego.length / 2;  // driving north
+    if (ego.speed[i] < 0.2 && front > -19 && front <= -16) stopped_at_line = true;
+    if (front > -16 + 0.1) {
+      EXPECT_TRUE(stopped_at_line) << "crossed the line without stopping";
+    }
+  }
+  EXPECT_TRUE(stopped_at_line);
+  EXPECT_EQ(run.trace->end, EndReason::target_reached);
+}
+
+TEST(SimulationTest, YieldsToAPedestrianOnACrosswalk) {
+  // crossroads: north-south has green first; the south crosswalk spans -15 < y < -11.
+  SimulationOptions options;
+  options.duration = 20;
+  auto run = simulate_text(
+      scenario_text(
+          "crossroads", "ego", "", "walker",
+          "ego = AV((\"south_in_0\"->100, , 10), (\"north_out_0\"->60));\n"
+          "walker = Pedestrian(((11, -13), 180 deg, 1.5), uniform(((11, -13), 180 deg, 1.5)));\n"),
+      options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  const TraceActor& ego = trace.actors[0];
+  const TraceActor& walker = trace.actors[1];
+  for (std::size_t i = 0; i < ego.y.size(); ++i) {
+    if (std::abs(walker.x[i]) < 10) {
+      EXPECT_LT(ego.y[i] + ego.length / 2, -15.0)
+          << "entered the crosswalk at t = " << trace.time[i];
+    }
+  }
+  EXPECT_GT(ego.y.back(), -15.0) << "and went on once it was clear";
+}
+
 TEST(SimulationTest, ACutInWithAThreeMetreGapAt25MetresPerSecondCollides) {
   // Closing at 10 m/s from 3 m: even full braking (8 m/s^2) needs 6.25 m.
   auto run = simulate_text(cut_in("15"));
