@@ -387,8 +387,14 @@ Conditions conditions_of(Context& context) {
   Conditions conditions;
   const auto& environment = context.scenario.environment;
   double time_of_day = 12 * 3600;
-  if (environment && environment->time_of_day)
+  if (environment && environment->time_of_day) {
     time_of_day = evaluate(*environment->time_of_day, context.values);
+    if (!std::isfinite(time_of_day)) {
+      context.diagnostics.error(environment->time_of_day->location,
+                                "the time of day is not a finite number");
+      time_of_day = 12 * 3600;
+    }
+  }
   conditions.darkness = darkness_at(time_of_day);
   if (!environment) return conditions;
   for (const WeatherComponent& component : environment->weather) {
@@ -467,8 +473,14 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   std::size_t index = 0;
   for (const auto* group : {&scenario.vehicles, &scenario.pedestrians}) {
     for (const Actor& actor : *group) {
-      auto scripted = prepare_actor(context, actor, ++index, obstacles);
-      if (scripted) setup.actors.push_back(std::move(*scripted));
+      try {
+        auto scripted = prepare_actor(context, actor, ++index, obstacles);
+        if (scripted) setup.actors.push_back(std::move(*scripted));
+      } catch (const std::exception& error) {
+        // Inputs are checked above; this is the net under what they missed, so that one odd
+        // scenario costs its evaluation, not the run.
+        diagnostics.error(actor.location, "cannot prepare " + actor.name + ": " + error.what());
+      }
     }
   }
 
