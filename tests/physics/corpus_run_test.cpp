@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <random>
 
 #include "../support/shared_dir.hpp"
 #include "simulation_fixtures.hpp"
@@ -56,6 +58,42 @@ TEST(CorpusRunTest, EverySeedScenarioRunsAtTheMiddleOfItsSpace) {
   auto files = scenario_files(repository() / "corpora" / "avunit");
   ASSERT_GE(files.size(), 17u);
   for (const fs::path& file : files) EXPECT_TRUE(runs(file, search_path)) << file;
+}
+
+// Every seed at random points of its space: whatever the point, a run ends normally and every
+// recorded number is finite (or NaN only where the ego did not perceive an actor).
+TEST(CorpusRunTest, SeedsRunAtRandomPointsWithFiniteTraces) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();
+  MapSearchPath search_path{{test::shared_dir() / "maps" / "apollo"}};
+  std::mt19937_64 random(2026);
+  for (const fs::path& file : scenario_files(repository() / "corpora" / "avunit")) {
+    SCOPED_TRACE(file.string());
+    auto source = read_source_file(file.string());
+    ASSERT_TRUE(source);
+    avunit::ParseResult parsed = avunit::parse(*source);
+    ASSERT_TRUE(parsed.ok());
+    ParameterSpace space = parameter_space(parsed.scenario);
+    RoadMap map =
+        load_scenario_map(parsed.scenario.map, search_path,
+                          decode(space, std::vector<double>(space.dimensions.size(), 0.5)));
+    for (int point = 0; point < 3; ++point) {
+      std::vector<double> unit(space.dimensions.size());
+      for (double& u : unit) u = static_cast<double>(random() >> 11) * 0x1.0p-53;
+      std::vector<double> values = decode(space, unit);
+      Diagnostics diagnostics;
+      auto setup = prepare_simulation(parsed.scenario, values, map, random(), diagnostics);
+      ASSERT_TRUE(setup) << format_diagnostics(*source, diagnostics);
+      SimulationOptions options;
+      options.seed = random();
+      Trace trace = simulate(map, *setup, options);
+      ASSERT_GT(trace.sample_count(), 0u);
+      for (const TraceActor& actor : trace.actors)
+        for (const auto* column : {&actor.x, &actor.y, &actor.heading, &actor.speed,
+                                   &actor.acceleration, &actor.yaw_rate, &actor.s})
+          for (double value : *column) ASSERT_TRUE(std::isfinite(value)) << actor.name;
+      ASSERT_FALSE(trace.events.empty()) << "a run ends with an event";
+    }
+  }
 }
 
 TEST(CorpusRunTest, TheSharedExamplesRunOnTheRealApolloMaps) {
