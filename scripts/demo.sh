@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Build scenfuzz on a fresh Debian 12 machine and show what it does today: check a logical
-# scenario and print its parameter space.
+# scenario, print its parameter space, show a map, and simulate a scenario.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -29,3 +29,11 @@ sed '0,/range(/s//rnage(/' "$scenario" >"$broken"
 status=0
 run check "$broken" || status=$?
 echo "(exit status $status)"
+
+# A map, and a simulation of a logical scenario at the middle of its space (built-in map, so no
+# shared data needed): what happened, and the trace and picture it wrote.
+run map crossroads
+out=$(mktemp -d)
+trap 'rm -f "$broken"; rm -rf "$out"' EXIT
+run run corpora/avunit/red_light_runner_crossroads.avu --at mid --out "$out"
+ls "$out"
