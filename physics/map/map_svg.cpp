@@ -1,6 +1,7 @@
-// render_map_svg: one standalone SVG document per map. Drawing is in metres (one user unit is a
-// metre) with the y axis flipped so north is up; every element carries a class and the styles
-// live once in a <style> sheet, which keeps a city map of a few thousand lanes to a few MB.
+// render_map_svg and render_map_svg_layer. Drawing is in metres (one user unit is a metre) with the
+// y axis flipped so north is up; every element carries a class and the styles live once in a
+// <style> sheet, which keeps a city map of a few thousand lanes to a few MB. A layer leaves out
+// what lies outside its frame, so that a small part of a city map stays small and quick to draw.
 #include "physics/map/map_svg.hpp"
 
 #include <algorithm>
@@ -69,15 +70,6 @@ constexpr std::array styles{
           "dominant-baseline:central"},
 };
 
-// Coordinates relative to the top-left corner of the drawing: SVG viewers hold coordinates as
-// 32-bit floats, which at UTM magnitudes (4e6 m) would snap points to half a metre.
-struct Frame {
-  MapPoint origin;  // map coordinates of the drawing's top-left corner
-  double width = 0;
-  double map_height = 0;  // the legend strip follows below
-  double metres_per_pixel = 1;
-};
-
 std::string_view boundary_class(BoundaryType type) {
   switch (type) {
     case BoundaryType::dotted_white: return "boundary-dotted-white";
@@ -125,13 +117,13 @@ void append_number(std::string& out, double value) {
   out += text;
 }
 
-void append_point(std::string& out, const Frame& frame, MapPoint point) {
+void append_point(std::string& out, const SvgFrame& frame, MapPoint point) {
   append_number(out, point.x - frame.origin.x);
   out += ',';
   append_number(out, frame.origin.y - point.y);
 }
 
-void append_points_attribute(std::string& out, const Frame& frame,
+void append_points_attribute(std::string& out, const SvgFrame& frame,
                              std::span<const MapPoint> points) {
   out += " points=\"";
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -141,7 +133,7 @@ void append_points_attribute(std::string& out, const Frame& frame,
   out += '"';
 }
 
-void append_shape(std::string& out, const Frame& frame, std::string_view element,
+void append_shape(std::string& out, const SvgFrame& frame, std::string_view element,
                   std::string_view css_class, std::span<const MapPoint> points) {
   if (points.size() < 2) return;
   out += '<';
@@ -153,12 +145,12 @@ void append_shape(std::string& out, const Frame& frame, std::string_view element
   out += "/>\n";
 }
 
-void append_polyline(std::string& out, const Frame& frame, std::string_view css_class,
+void append_polyline(std::string& out, const SvgFrame& frame, std::string_view css_class,
                      std::span<const MapPoint> points) {
   append_shape(out, frame, "polyline", css_class, points);
 }
 
-void append_polygon(std::string& out, const Frame& frame, std::string_view css_class,
+void append_polygon(std::string& out, const SvgFrame& frame, std::string_view css_class,
                     std::span<const MapPoint> points) {
   append_shape(out, frame, "polygon", css_class, points);
 }
@@ -199,7 +191,7 @@ std::vector<double> arrow_positions(const Lane& lane, const std::optional<LaneLa
   return positions;
 }
 
-void append_arrows(std::string& out, const Frame& frame, const Lane& lane,
+void append_arrows(std::string& out, const SvgFrame& frame, const Lane& lane,
                    const std::optional<LaneLabel>& label) {
   out += "<path class=\"arrow\" d=\"";
   bool first = true;
@@ -219,7 +211,8 @@ void append_arrows(std::string& out, const Frame& frame, const Lane& lane,
   out += "\"/>\n";
 }
 
-void append_label(std::string& out, const Frame& frame, const Lane& lane, const LaneLabel& label) {
+void append_label(std::string& out, const SvgFrame& frame, const Lane& lane,
+                  const LaneLabel& label) {
   const double middle = lane.length() / 2;
   // SVG rotates clockwise with y down; the lane's heading is counter-clockwise with y up.
   double degrees = -lane.centre_line.heading_at(middle) * 180 / std::numbers::pi;
@@ -240,7 +233,7 @@ void append_label(std::string& out, const Frame& frame, const Lane& lane, const 
   out += "</text>\n";
 }
 
-void append_circle(std::string& out, const Frame& frame, std::string_view css_class,
+void append_circle(std::string& out, const SvgFrame& frame, std::string_view css_class,
                    MapPoint centre, double radius) {
   out += "<circle class=\"";
   out += css_class;
@@ -289,16 +282,20 @@ double distance_to_polyline(MapPoint point, const std::vector<MapPoint>& points)
 // dashes out of step; drawing it once keeps the markings readable and the file smaller. A lane
 // always draws its right boundary, so its left one is left to a forward neighbour whose right
 // boundary lies on it, or, between opposite directions, to the lane that comes first. Lanes
-// either side of a median are neighbours too, but their boundaries do not coincide.
-bool left_boundary_drawn_by_neighbour(const RoadMap& map, LaneIndex index) {
+// either side of a median are neighbours too, but their boundaries do not coincide. Only a
+// neighbour that is itself drawn (`drawn`, by lane index) can take the boundary over.
+bool left_boundary_drawn_by_neighbour(const RoadMap& map, LaneIndex index,
+                                      const std::vector<bool>& drawn) {
   constexpr double coincident = 0.3;  // metres
   const Lane& lane = map.lane(index);
   if (lane.left_boundary.size() < 2) return false;
   const MapPoint middle = halfway_along(lane.left_boundary);
   for (const LaneIndex neighbour : lane.left_forward_neighbours)
-    if (distance_to_polyline(middle, map.lane(neighbour).right_boundary) < coincident) return true;
+    if (drawn[neighbour] &&
+        distance_to_polyline(middle, map.lane(neighbour).right_boundary) < coincident)
+      return true;
   for (const LaneIndex neighbour : lane.left_reverse_neighbours)
-    if (neighbour < index &&
+    if (neighbour < index && drawn[neighbour] &&
         distance_to_polyline(middle, map.lane(neighbour).left_boundary) < coincident)
       return true;
   return false;
@@ -341,7 +338,7 @@ bool in_junction(const RoadMap& map, const Lane& lane) {
 
 // Inside a junction only curbs are drawn: intersections carry no painted lane lines, and the
 // criss-crossing boundaries of the turning lanes would hide everything else there.
-void append_boundary(std::string& out, const Frame& frame, std::set<BoundaryKey>& drawn,
+void append_boundary(std::string& out, const SvgFrame& frame, std::set<BoundaryKey>& drawn,
                      bool junction_lane, BoundaryType type, const std::vector<MapPoint>& points) {
   if (junction_lane && type != BoundaryType::curb) return;
   if (points.size() < 2 || !drawn.insert(boundary_key(type, points)).second) return;
@@ -458,10 +455,10 @@ void append_key_line(std::string& out, std::string_view css_class, double x, dou
   out += "\"/>\n";
 }
 
-void append_legend(std::string& out, const Frame& frame, const LegendLayout& layout) {
+void append_legend(std::string& out, const SvgFrame& frame, const LegendLayout& layout) {
   const double scale = layout.metres_per_unit;
   out += "<g class=\"legend\" transform=\"translate(0 ";
-  append_number(out, frame.map_height);
+  append_number(out, frame.height);
   out += ") scale(";
   // Six significant digits: the scale can be far below a centimetre per unit.
   std::array<char, 32> buffer{};
@@ -538,7 +535,48 @@ void append_legend(std::string& out, const Frame& frame, const LegendLayout& lay
   out += "</g>\n";
 }
 
-void append_header(std::string& out, const RoadMap& map, const Frame& frame, double total_height) {
+// The crosswalk pattern and the style sheet; with `legend`, also the styles of the legend and of
+// its samples.
+void append_defs(std::string& out, bool legend) {
+  out += "<defs>\n";
+  out +=
+      "<pattern id=\"crosswalk-stripes\" patternUnits=\"userSpaceOnUse\" width=\"1.2\" "
+      "height=\"1.2\" patternTransform=\"rotate(45)\"><rect width=\"0.6\" height=\"1.2\" "
+      "fill=\"#fff\"/></pattern>\n";
+  out += "<style>\n";
+  out += "polyline,path{fill:none;stroke-linejoin:round}\n";
+  for (const Style& style : styles) {
+    out += '.';
+    out += style.name;
+    if (legend) {
+      out += ",.key-";
+      out += style.name;
+    }
+    out += '{';
+    out += style.declarations;
+    out += "}\n";
+  }
+  out += ".background{fill:#f2f2ee}\n";
+  if (legend) {
+    out += ".legend-background{fill:#fff;fill-opacity:.9;stroke:#808080;stroke-width:.1}\n";
+    out += ".legend-text{font-family:sans-serif;font-size:";
+    append_number(out, legend_font_size);
+    out += "px;fill:#000;dominant-baseline:central}\n";
+    out += ".scale-bar{stroke:#000;stroke-width:.2}\n";
+  }
+  out += "</style>\n</defs>\n";
+}
+
+void append_background(std::string& out, const SvgFrame& frame) {
+  out += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"";
+  append_number(out, frame.width);
+  out += "\" height=\"";
+  append_number(out, frame.height);
+  out += "\"/>\n";
+}
+
+void append_header(std::string& out, const RoadMap& map, const SvgFrame& frame,
+                   double total_height) {
   const double pixels_per_metre = 1 / frame.metres_per_pixel;
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
@@ -557,104 +595,147 @@ void append_header(std::string& out, const RoadMap& map, const Frame& frame, dou
   append_number(out, frame.origin.x);
   out += " + svg x, map y = ";
   append_number(out, frame.origin.y);
-  out += " - svg y</desc>\n<defs>\n";
-  out +=
-      "<pattern id=\"crosswalk-stripes\" patternUnits=\"userSpaceOnUse\" width=\"1.2\" "
-      "height=\"1.2\" patternTransform=\"rotate(45)\"><rect width=\"0.6\" height=\"1.2\" "
-      "fill=\"#fff\"/></pattern>\n";
-  out += "<style>\n";
-  out += "polyline,path{fill:none;stroke-linejoin:round}\n";
-  for (const Style& style : styles) {
-    out += '.';
-    out += style.name;
-    out += ",.key-";
-    out += style.name;
-    out += '{';
-    out += style.declarations;
-    out += "}\n";
-  }
-  out += ".background{fill:#f2f2ee}\n";
-  out += ".legend-background{fill:#fff;fill-opacity:.9;stroke:#808080;stroke-width:.1}\n";
-  out += ".legend-text{font-family:sans-serif;font-size:";
-  append_number(out, legend_font_size);
-  out += "px;fill:#000;dominant-baseline:central}\n";
-  out += ".scale-bar{stroke:#000;stroke-width:.2}\n";
-  out += "</style>\n</defs>\n";
-  out += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"";
-  append_number(out, frame.width);
-  out += "\" height=\"";
-  append_number(out, frame.map_height);
-  out += "\"/>\n";
+  out += " - svg y</desc>\n";
 }
 
-}  // namespace
+// Whether something with these bounds may show in `region`, judged by bounding box; without a
+// region, everything is drawn.
+bool reaches(const std::optional<MapBounds>& region, const MapBounds& bounds) {
+  if (!region) return true;
+  return !bounds.empty() && bounds.min.x <= region->max.x && bounds.max.x >= region->min.x &&
+         bounds.min.y <= region->max.y && bounds.max.y >= region->min.y;
+}
 
-std::string render_map_svg(const RoadMap& map, const SvgOptions& options) {
-  const MapBounds bounds = drawing_bounds(map);
-  const double extent = std::max({bounds.max.x - bounds.min.x, bounds.max.y - bounds.min.y, 1.0});
-  const double margin = std::max(5.0, 0.03 * extent);
-  Frame frame;
-  frame.origin = {bounds.min.x - margin, bounds.max.y + margin};
-  frame.width = bounds.max.x - bounds.min.x + 2 * margin;
-  frame.map_height = bounds.max.y - bounds.min.y + 2 * margin;
-  frame.metres_per_pixel = options.pixels_per_metre > 0
-                               ? 1 / options.pixels_per_metre
-                               : std::max(frame.width, frame.map_height) / default_image_pixels;
-  const LegendLayout legend = legend_layout(frame.width, frame.metres_per_pixel);
+void include_all(MapBounds& bounds, std::span<const MapPoint> points) {
+  for (const MapPoint point : points) bounds.include(point);
+}
 
-  std::string out;
-  out.reserve(1024 + map.lanes().size() * 2048);
-  append_header(out, map, frame, frame.map_height + legend.height_in_metres());
+bool reaches(const std::optional<MapBounds>& region, std::span<const MapPoint> points) {
+  MapBounds bounds;
+  include_all(bounds, points);
+  return reaches(region, bounds);
+}
+
+// A lane's surface spans both its boundaries, so it is judged by their common bounding box.
+bool lane_reaches(const std::optional<MapBounds>& region, const Lane& lane) {
+  MapBounds bounds;
+  include_all(bounds, lane.left_boundary);
+  include_all(bounds, lane.right_boundary);
+  include_all(bounds, lane.centre_line.points());
+  return reaches(region, bounds);
+}
+
+// The lanes and road furniture that reach `region` (all of them without one), as a <g> element.
+void append_map_drawing(std::string& out, const RoadMap& map, const SvgFrame& frame, bool labels,
+                        const std::optional<MapBounds>& region) {
+  const std::vector<Lane>& lanes = map.lanes();
+  std::vector<bool> drawn(lanes.size());
+  for (std::size_t i = 0; i < lanes.size(); ++i) drawn[i] = lane_reaches(region, lanes[i]);
 
   // Painter's order: areas first, markings over them, text last.
   out += "<g class=\"map\">\n";
   std::vector<MapPoint> surface;
-  for (const Lane& lane : map.lanes()) {
-    surface.assign(lane.left_boundary.begin(), lane.left_boundary.end());
-    surface.insert(surface.end(), lane.right_boundary.rbegin(), lane.right_boundary.rend());
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    if (!drawn[i]) continue;
+    surface.assign(lanes[i].left_boundary.begin(), lanes[i].left_boundary.end());
+    surface.insert(surface.end(), lanes[i].right_boundary.rbegin(), lanes[i].right_boundary.rend());
     append_polygon(out, frame, "lane", surface);
   }
   for (const Junction& junction : map.junctions())
-    append_polygon(out, frame, "junction", junction.outline);
+    if (reaches(region, junction.outline)) append_polygon(out, frame, "junction", junction.outline);
   for (const Crosswalk& crosswalk : map.crosswalks())
-    append_polygon(out, frame, "crosswalk", crosswalk.outline);
+    if (reaches(region, crosswalk.outline))
+      append_polygon(out, frame, "crosswalk", crosswalk.outline);
 
   std::set<BoundaryKey> drawn_boundaries;
-  for (std::size_t i = 0; i < map.lanes().size(); ++i) {
-    const Lane& lane = map.lanes()[i];
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    if (!drawn[i]) continue;
+    const Lane& lane = lanes[i];
     const bool junction_lane = in_junction(map, lane);
-    if (!left_boundary_drawn_by_neighbour(map, static_cast<LaneIndex>(i)))
+    if (!left_boundary_drawn_by_neighbour(map, static_cast<LaneIndex>(i), drawn))
       append_boundary(out, frame, drawn_boundaries, junction_lane, lane.left_boundary_type,
                       lane.left_boundary);
     append_boundary(out, frame, drawn_boundaries, junction_lane, lane.right_boundary_type,
                     lane.right_boundary);
   }
 
-  std::vector<std::optional<LaneLabel>> labels(map.lanes().size());
-  if (options.labels)
-    for (std::size_t i = 0; i < labels.size(); ++i) labels[i] = lane_label(map.lanes()[i]);
-  for (std::size_t i = 0; i < map.lanes().size(); ++i) {
-    const Lane& lane = map.lanes()[i];
-    append_polyline(out, frame, "centre", lane.centre_line.points());
-    append_arrows(out, frame, lane, labels[i]);
+  std::vector<std::optional<LaneLabel>> lane_labels(lanes.size());
+  if (labels)
+    for (std::size_t i = 0; i < lanes.size(); ++i)
+      if (drawn[i]) lane_labels[i] = lane_label(lanes[i]);
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    if (!drawn[i]) continue;
+    append_polyline(out, frame, "centre", lanes[i].centre_line.points());
+    append_arrows(out, frame, lanes[i], lane_labels[i]);
   }
 
   for (const Sign& sign : map.signs())
     for (const auto& line : sign.stop_lines)
-      append_polyline(out, frame, sign.kind == SignKind::stop ? "stop-sign-line" : "yield-line",
-                      line);
+      if (reaches(region, line))
+        append_polyline(out, frame, sign.kind == SignKind::stop ? "stop-sign-line" : "yield-line",
+                        line);
   for (const TrafficLight& light : map.traffic_lights()) {
-    for (const auto& line : light.stop_lines) append_polyline(out, frame, "stop-line", line);
+    for (const auto& line : light.stop_lines)
+      if (reaches(region, line)) append_polyline(out, frame, "stop-line", line);
     for (const MapPoint head : light.heads)
-      append_circle(out, frame, "signal", head, signal_head_radius);
+      if (reaches(region, std::span(&head, 1)))
+        append_circle(out, frame, "signal", head, signal_head_radius);
   }
 
-  for (std::size_t i = 0; i < map.lanes().size(); ++i)
-    if (labels[i]) append_label(out, frame, map.lanes()[i], *labels[i]);
+  for (std::size_t i = 0; i < lanes.size(); ++i)
+    if (lane_labels[i]) append_label(out, frame, lanes[i], *lane_labels[i]);
   out += "</g>\n";
+}
 
+}  // namespace
+
+MapBounds SvgFrame::region() const {
+  MapBounds bounds;
+  bounds.include({origin.x, origin.y - height});
+  bounds.include({origin.x + width, origin.y});
+  return bounds;
+}
+
+SvgFrame map_svg_frame(const MapBounds& region, double margin, double pixels_per_metre,
+                       double fit_pixels) {
+  MapBounds bounds = region;
+  if (bounds.empty()) bounds.include({0, 0});
+  SvgFrame frame;
+  frame.origin = {bounds.min.x - margin, bounds.max.y + margin};
+  frame.width = bounds.max.x - bounds.min.x + 2 * margin;
+  frame.height = bounds.max.y - bounds.min.y + 2 * margin;
+  const double longer_side = std::max(frame.width, frame.height);
+  if (pixels_per_metre > 0)
+    frame.metres_per_pixel = 1 / pixels_per_metre;
+  else if (longer_side > 0 && fit_pixels > 0)
+    frame.metres_per_pixel = longer_side / fit_pixels;
+  return frame;
+}
+
+std::string render_map_svg(const RoadMap& map, const SvgOptions& options) {
+  const MapBounds bounds = drawing_bounds(map);
+  const double extent = std::max({bounds.max.x - bounds.min.x, bounds.max.y - bounds.min.y, 1.0});
+  const SvgFrame frame = map_svg_frame(bounds, std::max(5.0, 0.03 * extent),
+                                       options.pixels_per_metre, default_image_pixels);
+  const LegendLayout legend = legend_layout(frame.width, frame.metres_per_pixel);
+
+  std::string out;
+  out.reserve(1024 + map.lanes().size() * 2048);
+  append_header(out, map, frame, frame.height + legend.height_in_metres());
+  append_defs(out, true);
+  append_background(out, frame);
+  append_map_drawing(out, map, frame, options.labels, std::nullopt);
   append_legend(out, frame, legend);
   out += "</svg>\n";
+  return out;
+}
+
+std::string render_map_svg_layer(const RoadMap& map, const SvgFrame& frame,
+                                 const SvgOptions& options) {
+  std::string out;
+  append_defs(out, false);
+  append_background(out, frame);
+  append_map_drawing(out, map, frame, options.labels, frame.region());
   return out;
 }
 

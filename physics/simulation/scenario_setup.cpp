@@ -156,11 +156,12 @@ std::uint64_t actor_seed(std::uint64_t seed, std::size_t actor) {
   return z ^ (z >> 31);
 }
 
-Trajectory standing_at(const MapPose& pose) { return Trajectory::standing(pose); }
-
 // A vehicle that follows lanes: to its target over the lane graph, or along the lanes ahead.
 std::optional<Trajectory> lane_following(Context& context, const Actor& actor, const MapPose& start,
                                          double speed, const ActorClass& body) {
+  // The lane the actor starts in, and how far off its centre line (kept along the way).
+  auto start_lane = project_to_lane(context.map, start.position, start.heading);
+  if (!start_lane) return Trajectory::standing(start);
   std::optional<LaneRoute> route;
   if (actor.target) {
     auto target = place_state(context, *actor.target);
@@ -174,14 +175,11 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
       return std::nullopt;
     }
   } else {
-    auto lane = project_to_lane(context.map, start.position, start.heading);
-    if (!lane) return standing_at(start);
-    route = route_ahead(context.map, LanePosition{lane->lane, lane->s, 0},
+    route = route_ahead(context.map, LanePosition{start_lane->lane, start_lane->s, 0},
                         speed * context.duration + kPathEndMargin);
   }
-  if (route->segments.empty() || route->length < 0.5) return standing_at(start);
-  auto projection = project_to_lane(context.map, start.position, start.heading);
-  double lateral = projection ? projection->lateral : 0.0;
+  if (route->segments.empty() || route->length < 0.5) return Trajectory::standing(start);
+  double lateral = start_lane->lateral;
   Polyline path = route_path(context.map, *route, lateral);
   return Trajectory(std::move(path), {{0, speed}}, body.comfortable_deceleration);
 }
@@ -199,7 +197,7 @@ std::optional<Trajectory> straight_walk(Context& context, const Actor& actor, co
     end = {start.position.x + reach * std::cos(start.heading),
            start.position.y + reach * std::sin(start.heading)};
   }
-  if (speed <= 0 || distance(start.position, end) < 0.01) return standing_at(start);
+  if (speed <= 0 || distance(start.position, end) < 0.01) return Trajectory::standing(start);
   std::vector<MapPoint> points{start.position, end};
   return Trajectory(Polyline(points), {{0, speed}},
                     actor_class(ActorCategory::pedestrian).max_deceleration);
@@ -228,7 +226,7 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
     poses.push_back(*pose);
     speeds.push_back(*waypoint_speed);
   }
-  if (poses.size() < 2) return standing_at(start);
+  if (poses.size() < 2) return Trajectory::standing(start);
 
   std::vector<MapPoint> points;
   std::vector<double> waypoint_s;

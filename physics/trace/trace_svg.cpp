@@ -1,16 +1,13 @@
-// render_trace_svg. The roads come from render_map_svg, drawn for a copy of the map cut down to
-// the lanes and furniture near the actors (a city map drawn whole is several MB) and embedded as
-// a nested <svg> placed by the map drawing's own coordinate note. Sizes of marks and text are
+// render_trace_svg. The roads are render_map_svg_layer's drawing of the map in the picture's own
+// frame, and the trace is drawn over them in the same coordinates. Sizes of marks and text are
 // given in pixels and converted to metres, so they read the same at any scale.
 #include "physics/trace/trace_svg.hpp"
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <charconv>
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <set>
 #include <span>
 #include <string_view>
@@ -50,15 +47,8 @@ constexpr std::array other_colours{std::string_view("#e07000"), std::string_view
                                    std::string_view("#0097a7"), std::string_view("#c2185b"),
                                    std::string_view("#7f8c00"), std::string_view("#d4a017")};
 
-// Drawing coordinates are relative to the top-left corner, y down (see map_svg.cpp for why).
-struct Frame {
-  MapPoint origin;
-  double width = 0;
-  double map_height = 0;  // the legend strip follows below
-  double metres_per_pixel = 1;
-
-  double pixels(double count) const { return count * metres_per_pixel; }
-};
+// `count` pixels in metres, the drawing's unit.
+double pixels(const SvgFrame& frame, double count) { return count * frame.metres_per_pixel; }
 
 void append_escaped(std::string& out, std::string_view text) {
   for (const char c : text) {
@@ -111,7 +101,7 @@ std::string number_text(double value, int decimals) {
   return text;
 }
 
-void append_point(std::string& out, const Frame& frame, MapPoint point) {
+void append_point(std::string& out, const SvgFrame& frame, MapPoint point) {
   append_number(out, point.x - frame.origin.x);
   out += ',';
   append_number(out, frame.origin.y - point.y);
@@ -156,145 +146,7 @@ std::string_view actor_colour(const Trace& trace, std::size_t id) {
   return other_colours[(id - 1) % other_colours.size()];
 }
 
-// ---- the region and the cut-down map ----
-
-bool overlaps(const MapBounds& region, std::span<const MapPoint> points) {
-  MapBounds bounds;
-  for (const MapPoint point : points) bounds.include(point);
-  return !bounds.empty() && bounds.min.x <= region.max.x && bounds.max.x >= region.min.x &&
-         bounds.min.y <= region.max.y && bounds.max.y >= region.min.y;
-}
-
-bool any_overlaps(const MapBounds& region, const std::vector<std::vector<MapPoint>>& lines) {
-  return std::ranges::any_of(lines, [&](const auto& line) { return overlaps(region, line); });
-}
-
-// The lanes and road furniture of `map` that reach into `region`, as a description that
-// build_road_map accepts: links to lanes left out are dropped, the rest kept so that the drawing
-// still recognises neighbours' shared boundaries.
-MapDescription describe_map_region(const RoadMap& map, const MapBounds& region) {
-  MapDescription description;
-  description.name = map.name();
-  description.source = map.source();
-  description.projection = map.projection();
-
-  const std::vector<Lane>& lanes = map.lanes();
-  std::vector<bool> kept(lanes.size(), false);
-  std::vector<bool> junction_kept(map.junctions().size(), false);
-  for (std::size_t i = 0; i < lanes.size(); ++i) {
-    kept[i] = overlaps(region, lanes[i].centre_line.points()) ||
-              overlaps(region, lanes[i].left_boundary) || overlaps(region, lanes[i].right_boundary);
-    if (kept[i] && lanes[i].junction) junction_kept[*lanes[i].junction] = true;
-  }
-  auto kept_ids = [&](const std::vector<LaneIndex>& indices) {
-    std::vector<std::string> ids;
-    for (const LaneIndex index : indices)
-      if (kept[index]) ids.push_back(lanes[index].id);
-    return ids;
-  };
-  for (std::size_t i = 0; i < lanes.size(); ++i) {
-    if (!kept[i]) continue;
-    const Lane& lane = lanes[i];
-    LaneDescription& copy = description.lanes.emplace_back();
-    copy.id = lane.id;
-    copy.centre_line = lane.centre_line.points();
-    copy.left_boundary = lane.left_boundary;
-    copy.right_boundary = lane.right_boundary;
-    copy.left_width = lane.left_width;
-    copy.right_width = lane.right_width;
-    copy.left_boundary_type = lane.left_boundary_type;
-    copy.right_boundary_type = lane.right_boundary_type;
-    copy.speed_limit = lane.speed_limit;
-    copy.turn = lane.turn;
-    copy.successors = kept_ids(lane.successors);
-    copy.predecessors = kept_ids(lane.predecessors);
-    copy.left_forward_neighbours = kept_ids(lane.left_forward_neighbours);
-    copy.right_forward_neighbours = kept_ids(lane.right_forward_neighbours);
-    copy.left_reverse_neighbours = kept_ids(lane.left_reverse_neighbours);
-    copy.right_reverse_neighbours = kept_ids(lane.right_reverse_neighbours);
-    if (lane.junction) copy.junction = map.junctions()[*lane.junction].id;
-  }
-  for (std::size_t i = 0; i < map.junctions().size(); ++i) {
-    const Junction& junction = map.junctions()[i];
-    if (junction_kept[i] || overlaps(region, junction.outline))
-      description.junctions.push_back({junction.id, junction.outline});
-  }
-  for (const TrafficLight& light : map.traffic_lights())
-    if (overlaps(region, light.heads) || any_overlaps(region, light.stop_lines))
-      description.traffic_lights.push_back(
-          {light.id, light.heads, light.stop_lines, {}, light.plan});
-  for (const Sign& sign : map.signs())
-    if (any_overlaps(region, sign.stop_lines))
-      description.signs.push_back({sign.id, sign.kind, sign.stop_lines, {}});
-  for (const Crosswalk& crosswalk : map.crosswalks())
-    if (overlaps(region, crosswalk.outline))
-      description.crosswalks.push_back({crosswalk.id, crosswalk.outline, {}, {}});
-  return description;
-}
-
-std::optional<double> number_after(std::string_view text, std::string_view marker,
-                                   std::size_t& position) {
-  const std::size_t found = text.find(marker, position);
-  if (found == std::string_view::npos) return std::nullopt;
-  const char* begin = text.data() + found + marker.size();
-  double value = 0;
-  const auto [end, error] = std::from_chars(begin, text.data() + text.size(), value);
-  if (error != std::errc()) return std::nullopt;
-  position = static_cast<std::size_t>(end - text.data());
-  return value;
-}
-
-// The roads of `region`, as a nested <svg> element in `frame`'s coordinates; empty when no lane
-// reaches into the region.
-std::string embedded_map(const RoadMap& map, const MapBounds& region, const Frame& frame,
-                         bool lane_labels) {
-  MapDescription description = describe_map_region(map, region);
-  if (description.lanes.empty()) return {};
-  const RoadMap cut = build_road_map(std::move(description));
-  SvgOptions options;
-  options.labels = lane_labels;
-  options.pixels_per_metre = 1 / frame.metres_per_pixel;
-  const std::string document = render_map_svg(cut, options);
-
-  // Where the map drawing puts its origin, and its size, from its root element and its <desc>.
-  const std::string_view text = document;
-  std::size_t position = text.find("<svg ");
-  const std::size_t root_end = text.find('>', position);
-  std::size_t cursor = position;
-  const std::optional<double> width = number_after(text, "viewBox=\"0 0 ", cursor);
-  const std::optional<double> height = number_after(text, " ", cursor);
-  cursor = root_end;
-  const std::optional<double> origin_x = number_after(text, "map x = ", cursor);
-  const std::optional<double> origin_y = number_after(text, "map y = ", cursor);
-  assert(position != std::string_view::npos && root_end != std::string_view::npos && width &&
-         height && origin_x && origin_y && "render_map_svg's header changed");
-  if (position == std::string_view::npos || root_end == std::string_view::npos || !width ||
-      !height || !origin_x || !origin_y)
-    return {};
-
-  std::string out = "<svg class=\"trace-map\"";
-  append_attribute(out, "x", *origin_x - frame.origin.x);
-  append_attribute(out, "y", frame.origin.y - *origin_y);
-  append_attribute(out, "width", *width);
-  append_attribute(out, "height", *height);
-  out += " viewBox=\"0 0 ";
-  append_number(out, *width);
-  out += ' ';
-  append_number(out, *height);
-  out += "\">";
-  // The map's own legend describes road markings the trace's legend has no room for.
-  std::string_view body = text.substr(root_end + 1);
-  const std::size_t legend = body.find("<g class=\"legend\"");
-  const std::size_t legend_end =
-      legend == std::string_view::npos ? legend : body.find("</g>\n", legend);
-  if (legend_end != std::string_view::npos) {
-    out += body.substr(0, legend);
-    out += body.substr(legend_end + 5);
-  } else {
-    out += body;
-  }
-  return out;
-}
+// ---- the region ----
 
 MapBounds visited_region(const RoadMap& map, const Trace& trace) {
   MapBounds bounds;
@@ -366,10 +218,10 @@ std::string title_text(const Trace& trace) {
   return title;
 }
 
-void append_legend(std::string& out, const Frame& frame, const std::vector<LegendEntry>& entries,
+void append_legend(std::string& out, const SvgFrame& frame, const std::vector<LegendEntry>& entries,
                    const LegendLayout& layout, const std::string& title) {
   out += "<g class=\"trace-legend\" transform=\"translate(0 ";
-  append_number(out, frame.map_height);
+  append_number(out, frame.height);
   out += ") scale(";
   std::array<char, 32> buffer{};
   const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
@@ -424,7 +276,7 @@ struct PathDrawing {
   std::string lines;
 };
 
-void append_path_points(std::string& out, const Frame& frame, std::span<const MapPoint> points) {
+void append_path_points(std::string& out, const SvgFrame& frame, std::span<const MapPoint> points) {
   out += " points=\"";
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i > 0) out += ' ';
@@ -433,7 +285,7 @@ void append_path_points(std::string& out, const Frame& frame, std::span<const Ma
   out += "\"/>\n";
 }
 
-void flush_path(PathDrawing& drawing, const Frame& frame, std::vector<MapPoint>& points,
+void flush_path(PathDrawing& drawing, const SvgFrame& frame, std::vector<MapPoint>& points,
                 std::string_view colour, double opacity) {
   if (points.size() >= 2) {
     // A pale casing keeps the path visible over lane lines of its own colour.
@@ -451,7 +303,7 @@ void flush_path(PathDrawing& drawing, const Frame& frame, std::vector<MapPoint>&
 
 // The path in path_shades slices of the run's time, each one more opaque; a gap in the samples
 // (NaN) breaks it.
-void append_path(PathDrawing& drawing, const Frame& frame, const Trace& trace, std::size_t id) {
+void append_path(PathDrawing& drawing, const SvgFrame& frame, const Trace& trace, std::size_t id) {
   const TraceActor& actor = trace.actors[id];
   const std::string_view colour = actor_colour(trace, id);
   constexpr double min_step = 0.01;  // metres: a standing actor adds no points
@@ -500,8 +352,8 @@ MapPoint offset(MapPoint point, double heading, double ahead, double left) {
           point.y + ahead * std::sin(heading) + left * std::cos(heading)};
 }
 
-void append_body(std::string& out, const Frame& frame, const TraceActor& actor, std::size_t sample,
-                 std::string_view colour, double fraction, bool colliding) {
+void append_body(std::string& out, const SvgFrame& frame, const TraceActor& actor,
+                 std::size_t sample, std::string_view colour, double fraction, bool colliding) {
   const MapPoint centre = position(actor, sample);
   if (!finite(centre)) return;
   const double heading = sample < actor.heading.size() && std::isfinite(actor.heading[sample])
@@ -553,7 +405,7 @@ void append_body(std::string& out, const Frame& frame, const TraceActor& actor, 
   out += "\"/>\n";
 }
 
-void append_text(std::string& out, const Frame& frame, std::string_view css_class, MapPoint at,
+void append_text(std::string& out, const SvgFrame& frame, std::string_view css_class, MapPoint at,
                  double dx_pixels, double dy_pixels, std::string_view text,
                  std::string_view colour = {}) {
   out += "<text class=\"";
@@ -564,8 +416,8 @@ void append_text(std::string& out, const Frame& frame, std::string_view css_clas
     out += colour;
     out += '"';
   }
-  append_attribute(out, "x", at.x - frame.origin.x + frame.pixels(dx_pixels));
-  append_attribute(out, "y", frame.origin.y - at.y + frame.pixels(dy_pixels));
+  append_attribute(out, "x", at.x - frame.origin.x + pixels(frame, dx_pixels));
+  append_attribute(out, "y", frame.origin.y - at.y + pixels(frame, dy_pixels));
   out += '>';
   append_escaped(out, text);
   out += "</text>\n";
@@ -582,30 +434,32 @@ std::string collision_label(const Trace& trace, const Collision& collision) {
          std::string(body_side_name(collision.second_side));
 }
 
-void append_collisions(std::string& out, const Frame& frame, const Trace& trace) {
-  const double line_height = frame.pixels(collision_font_pixels * 1.3);
+void append_collisions(std::string& out, const SvgFrame& frame, const Trace& trace) {
+  const double line_height = pixels(frame, collision_font_pixels * 1.3);
   for (std::size_t i = 0; i < trace.collisions.size(); ++i) {
     const Collision& collision = trace.collisions[i];
     if (!finite(collision.point)) continue;
     append_star(out, collision.point.x - frame.origin.x, frame.origin.y - collision.point.y,
-                frame.pixels(collision_star_pixels));
+                pixels(frame, collision_star_pixels));
     // Labels of collisions at nearly the same place stack instead of overprinting.
     int earlier_nearby = 0;
     for (std::size_t j = 0; j < i; ++j)
-      if (distance(trace.collisions[j].point, collision.point) < frame.pixels(40)) ++earlier_nearby;
+      if (distance(trace.collisions[j].point, collision.point) < pixels(frame, 40))
+        ++earlier_nearby;
     append_text(out, frame, "trace-collision-label", collision.point, collision_star_pixels + 3,
                 collision_font_pixels / 2 + earlier_nearby * line_height / frame.metres_per_pixel,
                 collision_label(trace, collision));
   }
 }
 
-void append_style(std::string& out, const Frame& frame) {
-  const auto metres = [&](double pixel_count) { return number_text(frame.pixels(pixel_count), 4); };
+void append_style(std::string& out, const SvgFrame& frame) {
+  const auto metres = [&](double pixel_count) {
+    return number_text(pixels(frame, pixel_count), 4);
+  };
   const std::string halo =
       "paint-order:stroke;stroke:#fff;stroke-linejoin:round;stroke-width:" + metres(halo_pixels) +
       "px";
   out += "<defs>\n<style>\n";
-  out += ".trace-background{fill:#f2f2ee}\n";
   out += ".trace-path{fill:none;stroke-linecap:butt;stroke-linejoin:round;stroke-width:" +
          metres(path_width_pixels) + "}\n";
   out +=
@@ -638,14 +492,8 @@ void append_style(std::string& out, const Frame& frame) {
 
 std::string render_trace_svg(const RoadMap& map, const Trace& trace,
                              const TraceSvgOptions& options) {
-  const MapBounds region = visited_region(map, trace);
-  Frame frame;
-  frame.origin = {region.min.x, region.max.y};
-  frame.width = region.max.x - region.min.x;
-  frame.map_height = region.max.y - region.min.y;
-  frame.metres_per_pixel = options.pixels_per_metre > 0
-                               ? 1 / options.pixels_per_metre
-                               : std::max(frame.width, frame.map_height) / default_image_pixels;
+  const SvgFrame frame =
+      map_svg_frame(visited_region(map, trace), 0, options.pixels_per_metre, default_image_pixels);
 
   std::vector<LegendEntry> entries;
   for (std::size_t id = 0; id < trace.actors.size(); ++id)
@@ -657,7 +505,7 @@ std::string render_trace_svg(const RoadMap& map, const Trace& trace,
       {"paths darken with time; bodies every " + number_text(options.snapshot_interval, 2) + " s",
        "#b0b0b0"});
   const LegendLayout legend = legend_layout(entries, frame.width / frame.metres_per_pixel);
-  const double total_height = frame.map_height + frame.pixels(legend.height);
+  const double total_height = frame.height + pixels(frame, legend.height);
   const std::string title = title_text(trace);
 
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
@@ -677,11 +525,7 @@ std::string render_trace_svg(const RoadMap& map, const Trace& trace,
   append_number(out, frame.origin.y);
   out += " - svg y</desc>\n";
   append_style(out, frame);
-  out += "<rect class=\"trace-background\" x=\"0\" y=\"0\"";
-  append_attribute(out, "width", frame.width);
-  append_attribute(out, "height", frame.map_height);
-  out += "/>\n";
-  out += embedded_map(map, region, frame, options.lane_labels);
+  out += render_map_svg_layer(map, frame, {.labels = options.lane_labels});
 
   // Painter's order: paths, then bodies over them, then collisions and text on top.
   out += "<g class=\"trace-paths\">\n";

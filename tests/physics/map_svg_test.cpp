@@ -1,6 +1,7 @@
 // render_map_svg on small hand-made maps: a standalone, well-formed document; one drawing
 // element per lane and per piece of road furniture, each with its class; labels only when asked
-// and XML-escaped; every drawn point inside the viewBox, north up.
+// and XML-escaped; every drawn point inside the viewBox, north up. render_map_svg_layer on the
+// built-in crossroads: a fragment with only what reaches its frame.
 #include "physics/map/map_svg.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "physics/map/builtin_maps.hpp"
 #include "physics/map/map_description.hpp"
 #include "physics/map/road_map.hpp"
 
@@ -473,6 +475,80 @@ TEST(MapSvg, CityMapStaysReasonablySized) {
   EXPECT_EQ(count_class(svg, "label"), 1600u);
   EXPECT_LT(svg.size(), 8'000'000u);
   EXPECT_EQ(xml_error(svg), "");
+}
+
+// The bounding box of each `<polygon class="lane"` in `svg`, in drawing coordinates.
+std::vector<MapBounds> lane_boxes(std::string_view svg) {
+  std::vector<MapBounds> boxes;
+  constexpr std::string_view lane = "<polygon class=\"lane\" points=\"";
+  for (std::size_t at = svg.find(lane); at != std::string_view::npos; at = svg.find(lane, at + 1)) {
+    const std::size_t begin = at + lane.size();
+    const auto numbers = numbers_in(svg.substr(begin, svg.find('"', begin) - begin));
+    MapBounds& box = boxes.emplace_back();
+    for (std::size_t i = 0; i + 1 < numbers.size(); i += 2)
+      box.include({numbers[i], numbers[i + 1]});
+  }
+  return boxes;
+}
+
+// A frame on the crossroads' west arm, far from the junction, draws that arm's lanes only.
+TEST(MapSvg, LayerDrawsOnlyWhatReachesItsFrame) {
+  const RoadMap map = build_road_map(generate_builtin_map("crossroads", {}));
+  MapBounds region;
+  region.include({-130, -20});
+  region.include({-110, 20});
+  const SvgFrame frame = map_svg_frame(region, 5, 0, 800);
+  EXPECT_DOUBLE_EQ(frame.origin.x, -135);
+  EXPECT_DOUBLE_EQ(frame.origin.y, 25);
+  EXPECT_DOUBLE_EQ(frame.width, 30);
+  EXPECT_DOUBLE_EQ(frame.height, 50);
+  EXPECT_DOUBLE_EQ(frame.metres_per_pixel, 50.0 / 800);
+
+  const std::string layer = render_map_svg_layer(map, frame, {.labels = true});
+  EXPECT_EQ(layer.find("<svg"), std::string::npos);
+  EXPECT_EQ(layer.find("<?xml"), std::string::npos);
+  EXPECT_EQ(layer.find("legend"), std::string::npos);
+  EXPECT_EQ(layer.find("key-"), std::string::npos);
+  EXPECT_EQ(xml_error("<svg>" + layer + "</svg>"), "");
+
+  const std::vector<MapBounds> boxes = lane_boxes(layer);
+  EXPECT_EQ(boxes.size(), 4u);  // two lanes each way
+  EXPECT_EQ(count_class(layer, "label"), boxes.size());
+  for (const MapBounds& box : boxes) {
+    EXPECT_LE(box.min.x, frame.width);
+    EXPECT_GE(box.max.x, 0);
+    EXPECT_LE(box.min.y, frame.height);
+    EXPECT_GE(box.max.y, 0);
+  }
+  EXPECT_EQ(count_class(layer, "junction"), 0u);
+  EXPECT_EQ(count_class(layer, "signal"), 0u);
+  EXPECT_EQ(count_class(render_map_svg(map), "lane"), map.lanes().size());
+}
+
+// Framed on the whole map, the layer is the standalone drawing without its document and legend.
+TEST(MapSvg, LayerOfTheWholeMapMatchesTheDocument) {
+  const RoadMap map = build_road_map(small_map());
+  const std::string document = render_map_svg(map, {.labels = true});
+  const ViewBox box = view_box(document);
+  const std::size_t origin = document.find("map x = ");
+  ASSERT_NE(origin, std::string::npos);
+  const auto numbers = numbers_in(document.substr(origin, document.find("</desc>") - origin));
+  ASSERT_EQ(numbers.size(), 2u);
+  MapBounds region;
+  region.include({numbers[0], numbers[1]});
+  const std::string layer =
+      render_map_svg_layer(map, map_svg_frame(region, 0, 1, 0), {.labels = true});
+  // A frame of no size at the drawing's corner, in its margin, reaches nothing; one around the
+  // map reaches everything, drawn exactly as in the document.
+  EXPECT_EQ(count_class(layer, "lane"), 0u);
+  region.include({numbers[0] + box.width, numbers[1] - box.height});
+  const std::string whole =
+      render_map_svg_layer(map, map_svg_frame(region, 0, 1, 0), {.labels = true});
+  for (const std::string_view css_class :
+       {"lane", "junction", "crosswalk", "centre", "arrow", "stop-line", "signal", "label"})
+    EXPECT_EQ(count_class(whole, css_class), count_class(document, css_class)) << css_class;
+  const std::string_view drawing = map_part(document);
+  EXPECT_NE(drawing.find(whole.substr(whole.find("<g class=\"map\">"))), std::string_view::npos);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // render_trace_svg on hand-made traces over the built-in crossroads: a well-formed document with
 // escaped names, the collision marked and labelled, bodies at the asked instants, and a viewBox
-// that covers the actors but not the whole map.
+// that covers the actors but not the whole map, whose roads alone are drawn.
 #include "physics/trace/trace_svg.hpp"
 
 #include <gtest/gtest.h>
@@ -149,7 +149,7 @@ TEST(TraceSvg, IsAWellFormedDocumentWithEscapedNames) {
   EXPECT_EQ(xml_problem(svg), "");
   EXPECT_NE(svg.find(">npc&lt;1&gt; &amp; co</text>"), std::string::npos);
   EXPECT_EQ(svg.find("npc<1>"), std::string::npos);
-  EXPECT_EQ(count(svg, "<svg "), 2u);  // the picture and the roads nested in it
+  EXPECT_EQ(count(svg, "<svg "), 1u);  // the roads are drawn in the picture's own frame
   EXPECT_NE(svg.find("class=\"lane\""), std::string::npos);
   EXPECT_EQ(svg.find("class=\"legend\""), std::string::npos);  // the map's own legend is left out
 }
@@ -223,6 +223,35 @@ TEST(TraceSvg, DrawsOnlyTheLanesNearTheActors) {
   EXPECT_EQ(count(svg, "<polygon class=\"lane\""), 1u);
 }
 
+// A city-sized map (1600 lanes of 60 m on a 40 x 40 grid) draws only the block the actors are in:
+// the picture stays a few tens of kB where the whole map is a few MB.
+TEST(TraceSvg, CityMapPictureStaysSmall) {
+  MapDescription description;
+  description.name = "grid";
+  description.source = "test";
+  for (int row = 0; row < 40; ++row)
+    for (int column = 0; column < 40; ++column) {
+      LaneDescription lane;
+      lane.id = "lane_" + std::to_string(row) + "_" + std::to_string(column);
+      for (int step = 0; step <= 30; ++step)
+        lane.centre_line.push_back({column * 70.0 + step * 2.0, row * 20.0 - 5.25});
+      description.lanes.push_back(std::move(lane));
+    }
+  const RoadMap grid = build_road_map(std::move(description));
+  Trace trace = crossing_trace();
+  for (TraceActor& each : trace.actors)
+    for (double& x : each.x) x += 1400;
+  trace.collisions.front().point.x += 1400;
+  TraceSvgOptions options;
+  options.lane_labels = true;
+  const std::string svg = render_trace_svg(grid, trace, options);
+  EXPECT_EQ(xml_problem(svg), "");
+  const std::size_t lanes = count(svg, "<polygon class=\"lane\"");
+  EXPECT_GT(lanes, 0u);
+  EXPECT_LT(lanes, 30u);
+  EXPECT_LT(svg.size(), 100'000u);
+}
+
 TEST(TraceSvg, ScaleAndTitle) {
   TraceSvgOptions options;
   options.pixels_per_metre = 4;
@@ -242,12 +271,12 @@ TEST(TraceSvg, ActorsOffTheMapAndEmptyTracesStillDraw) {
   far_away.collisions.clear();
   const std::string svg = render_trace_svg(crossroads(), far_away);
   EXPECT_EQ(xml_problem(svg), "");
-  EXPECT_EQ(svg.find("class=\"trace-map\""), std::string::npos);  // no road there
-  EXPECT_EQ(count(svg, "<polygon class=\"trace-box"), 6u);        // 0, 5 and 7 s
+  EXPECT_EQ(count(svg, "<polygon class=\"lane\""), 0u);     // no road there
+  EXPECT_EQ(count(svg, "<polygon class=\"trace-box"), 6u);  // 0, 5 and 7 s
 
   const std::string empty = render_trace_svg(crossroads(), Trace{});
   EXPECT_EQ(xml_problem(empty), "");
-  EXPECT_NE(empty.find("class=\"trace-map\""), std::string::npos);  // the whole map, then
+  EXPECT_EQ(count(empty, "<polygon class=\"lane\""), crossroads().lanes().size());  // all of it
 }
 
 }  // namespace
