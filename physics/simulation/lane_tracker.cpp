@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace scenfuzz {
 namespace {
@@ -22,28 +23,71 @@ double widest_half_lane(const RoadMap& map) {
   return widest;
 }
 
+namespace {
+
+// What looking for a point on one lane found.
+struct LaneLook {
+  std::optional<LaneFix> fix;  // within the lane's width, beside its centre line
+  std::size_t segment = 0;     // of the nearest point
+  bool past_end = false;       // the point lies beyond the lane's end
+};
+
+// Looks for `point` on `lane` among the segments around `segment` (the whole lane when the
+// nearest is at the edge of that window).
+LaneLook look_on(const RoadMap& map, LaneIndex lane, std::size_t segment, MapPoint point) {
+  const Polyline& centre = map.lane(lane).centre_line;
+  std::size_t first = segment > kSearchSegments ? segment - kSearchSegments : 0;
+  std::size_t last = std::min(segment + kSearchSegments, centre.segment_count() - 1);
+  PolylineProjection best = centre.project_to_segment(point, first);
+  for (std::size_t k = first + 1; k <= last; ++k) {
+    PolylineProjection candidate = centre.project_to_segment(point, k);
+    if (candidate.distance < best.distance) best = candidate;
+  }
+  bool at_window_edge = (best.segment == first && first > 0) ||
+                        (best.segment == last && last + 1 < centre.segment_count());
+  if (at_window_edge) best = centre.project(point);
+  // Beyond an end of the lane, the nearest point is the end point and lies off the normal.
+  bool beside = best.distance <= std::abs(best.lateral) + 1e-9;
+  LaneLook look;
+  look.segment = best.segment;
+  look.past_end = !beside && best.s >= centre.length() - 1e-9;
+  double width = best.lateral >= 0 ? lane_left_width_at(map, lane, best.s)
+                                   : lane_right_width_at(map, lane, best.s);
+  if (beside && std::abs(best.lateral) <= width)
+    look.fix = LaneFix{static_cast<std::int32_t>(lane), best.s};
+  return look;
+}
+
+}  // namespace
+
 LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) {
   if (lane_ >= 0) {
     const auto lane = static_cast<LaneIndex>(lane_);
-    const Polyline& centre = map.lane(lane).centre_line;
-    std::size_t first = segment_ > kSearchSegments ? segment_ - kSearchSegments : 0;
-    std::size_t last = std::min(segment_ + kSearchSegments, centre.segment_count() - 1);
-    PolylineProjection best = centre.project_to_segment(point, first);
-    for (std::size_t segment = first + 1; segment <= last; ++segment) {
-      PolylineProjection candidate = centre.project_to_segment(point, segment);
-      if (candidate.distance < best.distance) best = candidate;
+    LaneLook here = look_on(map, lane, segment_, point);
+    if (here.fix) {
+      segment_ = here.segment;
+      return *here.fix;
     }
-    // Nearest at the edge of the window: it may lie further along; look at the whole lane.
-    bool at_window_edge = (best.segment == first && first > 0) ||
-                          (best.segment == last && last + 1 < centre.segment_count());
-    if (at_window_edge) best = centre.project(point);
-    // Beyond an end of the lane, the nearest point is the end point and lies off the normal.
-    bool beside = best.distance <= std::abs(best.lateral) + 1e-9;
-    double width = best.lateral >= 0 ? lane_left_width_at(map, lane, best.s)
-                                     : lane_right_width_at(map, lane, best.s);
-    if (beside && std::abs(best.lateral) <= width) {
-      segment_ = best.segment;
-      return {lane_, best.s};
+    // Driven off the end: almost always onto a successor. Among those that contain the point
+    // (a junction's connectors overlap where they begin), the one heading most like the actor.
+    if (here.past_end) {
+      std::optional<LaneLook> chosen;
+      double chosen_difference = 0;
+      for (LaneIndex successor : map.lane(lane).successors) {
+        LaneLook there = look_on(map, successor, 0, point);
+        if (!there.fix) continue;
+        double difference = std::abs(
+            angle_difference(heading, map.lane(successor).centre_line.heading_at(there.fix->s)));
+        if (!chosen || difference < chosen_difference - 1e-9) {
+          chosen = there;
+          chosen_difference = difference;
+        }
+      }
+      if (chosen) {
+        lane_ = chosen->fix->lane;
+        segment_ = chosen->segment;
+        return *chosen->fix;
+      }
     }
   }
   if (off_lanes_ && distance(point, off_lanes_at_) < off_lanes_reach_) return {};

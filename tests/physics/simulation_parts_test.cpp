@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "physics/actors/trajectory.hpp"
 #include "physics/ego/route_tracker.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/lane_route.hpp"
@@ -43,6 +44,27 @@ TEST(LaneTracker, AgreesWithTheMapAlongADriveAcrossLanesAndOffTheRoad) {
     EXPECT_EQ(fix.lane, static_cast<std::int32_t>(truth->lane)) << "x " << x << " y " << y;
     EXPECT_NEAR(fix.s, truth->s, 1e-9);
   }
+}
+
+TEST(LaneTracker, FollowsALeftTurnThroughTheJunctionLaneByLane) {
+  const RoadMap map = load_map("crossroads", kNoSearchPath);
+  auto route = find_route(map, LanePosition{lane(map, "west_in_1"), 100, 0},
+                          LanePosition{lane(map, "north_out_1"), 50, 0});
+  ASSERT_TRUE(route);
+  ASSERT_EQ(route->segments.size(), 3u);
+  const Polyline path = route_path(map, *route);
+  LaneTracker tracker(widest_half_lane(map));
+  std::size_t on_segment = 0;
+  for (double s = 0; s <= path.length(); s += 0.5) {
+    LaneFix fix = tracker.update(map, path.point_at(s), path.heading_at(s));
+    ASSERT_GE(fix.lane, 0) << "s " << s;
+    // The lanes come in the route's order: never back, never one that is not on the route.
+    while (on_segment < route->segments.size() &&
+           static_cast<std::int32_t>(route->segments[on_segment].lane) != fix.lane)
+      ++on_segment;
+    ASSERT_LT(on_segment, route->segments.size()) << map.lane(static_cast<LaneIndex>(fix.lane)).id;
+  }
+  EXPECT_EQ(on_segment, 2u) << "it ended on north_out_1";
 }
 
 TEST(RouteTracker, FindsTheLightsAndCrosswalksOnTheWayAndTheSpeedLimit) {
