@@ -270,7 +270,10 @@ int scenfuzz_ego_step(void* state, const scenfuzz_observation* observation,
   }
   stop = fmin(stop, observation->distance_to_target + 0.5 * self->config.vehicle.length +
                         STOP_MARGIN); /* the target is where the centre stops */
-  if (observation->route_point_count < SCENFUZZ_ROUTE_POINTS) { /* the route ends here */
+  if (!isfinite(observation->distance_to_target) &&
+      observation->route_point_count < SCENFUZZ_ROUTE_POINTS) {
+    /* No target, and the lanes end within sight: stop the front bumper at their end. (With a
+     * target the route ends there, and the target stop above already places the centre.) */
     stop = fmin(stop, arc[observation->route_point_count - 1]);
   }
   acceleration = fmin(acceleration, stop_at(self, speed, stop));

@@ -257,6 +257,17 @@ TEST(SimulationTest, TheExamplePluginDrivesAScenario) {
   EXPECT_GT(closest_approach(trace, 0, 1), 1.0) << "behind the slower lead";
 }
 
+TEST(SimulationTest, TheExamplePluginReachesItsTarget) {
+  SimulationOptions options;
+  options.ego_plugin = SCENFUZZ_EXAMPLE_EGO_PLUGIN;
+  auto run = simulate_text(scenario_text("straight", "ego", "", "",
+                                         "ego = AV((\"east_0\"->10, , 10), (\"east_0\"->150));\n"),
+                           options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  EXPECT_EQ(run.trace->end, EndReason::target_reached);
+  EXPECT_NEAR(run.trace->actors[0].x.back(), 150, 2.0);
+}
+
 TEST(SimulationTest, ACrashingPluginEndsOnlyItsOwnRun) {
   SimulationOptions options;
   options.ego_plugin = std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/libcrashing.so";
