@@ -21,6 +21,7 @@ enum class TermKind {
   word,         // an enumeration word such as `green` or `left`, in `name`
   signal,       // named signal `name`, with `operands` as its arguments (possibly none)
   object,       // a trace projection: `source` of actor `name` (empty for the ego)
+  column,       // a numeric column `name` (x, y, speed, ...) of operands[0], an object term
   position,     // a point on the map, in `position`
   vector,       // a 2-D vector (velocity, acceleration): operands are two number terms
   add,

@@ -14,6 +14,7 @@
 #include "physics/collision/footprint.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/simulation/simulation.hpp"
+#include "physics/trace/trace_footprint.hpp"
 #include "sampler/parameter_space.hpp"
 
 namespace scenfuzz::test {
@@ -43,13 +44,6 @@ inline SimulatedRun simulate_file(const SourceFile& file, SimulationOptions opti
 
 inline SimulatedRun simulate_text(const std::string& text, SimulationOptions options = {}) {
   return simulate_file(SourceFile("inline.avu", text), options);
-}
-
-// The footprint of actor `id` at sample `i`.
-inline Footprint footprint_at(const Trace& trace, ActorId id, std::size_t i) {
-  const TraceActor& a = trace.actors[id];
-  bool round = a.shape != BodyShape::box;
-  return {{a.x[i], a.y[i]}, a.heading[i], a.length / 2, a.width / 2, round};
 }
 
 // The smallest footprint distance between two actors over the trace.

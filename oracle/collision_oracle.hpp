@@ -1,0 +1,25 @@
+// The oracle for scenarios without specs: no collision of the ego. Its robustness is the smallest
+// footprint distance between the ego and any other body over the run, negative (minus the
+// penetration depth) on contact.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "physics/trace/trace.hpp"
+
+namespace scenfuzz {
+
+// At every sample, the footprint distance from the ego to the nearest other body (vehicles,
+// pedestrians, obstacles); +inf when the ego is alone.
+std::vector<double> ego_clearance(const Trace& trace);
+
+struct CollisionVerdict {
+  double robustness = 0;   // min of ego_clearance; +inf when the ego is alone
+  std::size_t sample = 0;  // where the minimum is (the first such sample)
+  ActorId other = kEgo;    // the body nearest there; kEgo when the ego is alone
+};
+
+CollisionVerdict collision_verdict(const Trace& trace);
+
+}  // namespace scenfuzz

@@ -1,0 +1,74 @@
+// Quantitative STL semantics over sampled signals (DESIGN.md "Semantics", RTAMT's discrete-time
+// conventions): the robustness of a formula at every sample, computed bottom-up with one
+// linear-time pass per operator (monotone-deque windows for bounded G and F, a backward pass for
+// unbounded U, the Donze-Ferrere-Maler decomposition for bounded U).
+//
+// The oracle knows numbers, enumeration words, times of day, arithmetic and the operators; what a
+// named signal means (a CSV column, `dis(a, b)` over a simulated trace, ...) comes from a
+// SignalSource.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lang/spec.hpp"
+
+namespace scenfuzz {
+
+// A spec that cannot be judged on the data it meets (an unknown column, a signal the oracle
+// cannot compute, a value that is not a number): the message and the place in the spec.
+class OracleError : public std::runtime_error {
+ public:
+  OracleError(SourceLocation location, const std::string& message)
+      : std::runtime_error(message), location_(location) {}
+  const SourceLocation& location() const { return location_; }
+
+ private:
+  SourceLocation location_;
+};
+
+// A numeric signal: one value per sample. `discrete` marks flags and enumerations: a comparison
+// whose two sides are both discrete has robustness +1 when true and -1 when false.
+struct SignalValues {
+  std::vector<double> values;
+  bool discrete = false;
+};
+
+// Gives a TermKind::signal or TermKind::column term (with its arguments: `dis(a, b)`, `speed`,
+// a CSV column `x`, `ego_state.speed`) its value at every sample. Must return time.size() finite
+// values, or throw OracleError naming the term's location.
+using LeafSignal = std::function<SignalValues(const SpecTerm& term)>;
+
+struct SignalSource {
+  std::span<const double> time;         // sample times in seconds, strictly increasing
+  LeafSignal leaf;                      // named signals
+  std::span<const double> parameters;  // values of the search parameters a term's Value reads
+};
+
+// The numeric value of `term` at every sample: numbers, times of day (seconds since midnight),
+// enumeration words (LawBreaker's codes: red 1, yellow 2, green 3, off/forward 0, left 1,
+// right 2; discrete), arithmetic, and leaves through `source.leaf`. Throws OracleError.
+SignalValues term_signal(const SpecTerm& term, const SignalSource& source);
+
+// The robustness of `formula` at every sample of `source.time` (+inf and -inf where the
+// semantics give them). Throws OracleError.
+std::vector<double> robustness_signal(const Formula& formula, const SignalSource& source);
+
+// Why a formula has the robustness it has at a sample: following min and max down the formula,
+// the atom (comparison or predicate) and the sample whose value it is.
+struct RobustnessWitness {
+  double robustness = 0;          // of the whole formula at the sample asked about
+  const Formula* atom = nullptr;  // the responsible atom; null when the value is an infinity
+                                  // that no atom gives (an empty window, X at the last sample)
+  std::size_t sample = 0;         // where the atom has that value
+};
+
+// The robustness at `sample` (0: the spec's verdict) and its witness. Throws OracleError.
+RobustnessWitness explain_robustness(const Formula& formula, const SignalSource& source,
+                                     std::size_t sample = 0);
+
+}  // namespace scenfuzz
