@@ -38,6 +38,10 @@ struct SignalValues {
   bool discrete = false;
 };
 
+// A sample j is in the window [a, b] of sample i when a <= t_j - t_i <= b up to this slack
+// (seconds), so that sample times such as 0.1 + 0.2 fall where they are meant to.
+inline constexpr double kWindowTolerance = 1e-9;
+
 // Gives a TermKind::signal or TermKind::column term (with its arguments: `dis(a, b)`, `speed`,
 // a CSV column `x`, `ego_state.speed`) its value at every sample. Must return time.size() finite
 // values, or throw OracleError naming the term's location.

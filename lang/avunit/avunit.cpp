@@ -25,4 +25,14 @@ ParseResult parse(const SourceFile& file) {
   return result;
 }
 
+FormulaParseResult parse_formula(const SourceFile& file) {
+  FormulaParseResult result;
+  std::vector<Token> tokens = tokenize(file, result.diagnostics);
+  if (result.diagnostics.has_errors()) return result;
+  std::optional<Syntax> syntax = parse_lone_expression(tokens, result.diagnostics);
+  if (!syntax) return result;
+  result.formula = elaborate_lone_formula(*syntax, result.diagnostics);
+  return result;
+}
+
 }  // namespace scenfuzz::avunit

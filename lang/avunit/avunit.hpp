@@ -2,6 +2,7 @@
 // a ScenarioTemplate, and print a template back as AVUnit.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 
@@ -20,6 +21,15 @@ struct ParseResult {
 
 // Parses and resolves a whole file. Never throws on bad input: every problem is a diagnostic.
 ParseResult parse(const SourceFile& file);
+
+struct FormulaParseResult {
+  std::optional<Formula> formula;  // set when there are no errors
+  Diagnostics diagnostics;
+};
+
+// A whole file that is one STL formula in AVUnit's syntax (`scenfuzz stl --spec`): names that are
+// not AVUnit built-ins are signals of that name (`x`, `ego.speed`), for the caller to resolve.
+FormulaParseResult parse_formula(const SourceFile& file);
 
 // Canonical AVUnit for a template: parse(print(t)) gives back a template equal to t.
 std::string print(const ScenarioTemplate& scenario);

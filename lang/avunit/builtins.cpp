@@ -69,6 +69,9 @@ constexpr std::array<std::string_view, 7> kEnumerationWords = {"red",     "yello
 constexpr std::array<std::string_view, 6> kWaypointFunctions = {"Waypoint", "waypoint", "W",
                                                                 "WP",       "w",        "wp"};
 
+constexpr std::array<std::string_view, 7> kTraceColumns = {
+    "x", "y", "heading", "speed", "acceleration", "yaw_rate", "s"};
+
 template <std::size_t N>
 bool contains(const std::array<std::string_view, N>& words, std::string_view word) {
   return std::find(words.begin(), words.end(), word) != words.end();
@@ -82,6 +85,14 @@ SignalClass signal_class(std::string_view name) {
   if (contains(kDistancePredicates, name)) return SignalClass::distance_predicate;
   if (contains(kValueSignals, name)) return SignalClass::value;
   return SignalClass::none;
+}
+
+bool is_trace_column(std::string_view name) { return contains(kTraceColumns, name); }
+
+std::string trace_column_list() {
+  std::string list;
+  for (std::string_view column : kTraceColumns) (list += list.empty() ? "" : ", ") += column;
+  return list;
 }
 
 bool is_color_word(std::string_view word) { return contains(kColors, word); }

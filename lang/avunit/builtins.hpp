@@ -19,6 +19,10 @@ enum class SignalClass {
 // `name` may be dotted: "trafficLightAhead.color".
 SignalClass signal_class(std::string_view name);
 
+// The numeric columns of a trace projection: `trace[ego].speed`, `npc_truth.x`.
+bool is_trace_column(std::string_view name);  // x y heading speed acceleration yaw_rate s
+std::string trace_column_list();              // "x, y, heading, ..." for messages
+
 bool is_color_word(std::string_view word);         // red green blue black white
 bool is_vehicle_kind_word(std::string_view word);  // car bus Van truck bicycle ...
 bool is_shape_word(std::string_view word);         // sphere box cone cylinder

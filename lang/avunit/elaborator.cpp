@@ -149,6 +149,16 @@ class Elaborator {
   Elaborator(Diagnostics& diagnostics, SourceLanguage language)
       : diagnostics_(diagnostics), language_(language) {}
 
+  // A lone formula whose unknown names are signals (`scenfuzz stl`: columns of a CSV file).
+  std::optional<Formula> lone_formula(const Syntax& syntax) {
+    free_signals_ = true;
+    Item item = evaluate(syntax);
+    if (item.kind == ItemKind::error) return std::nullopt;
+    std::optional<Formula> formula = need_formula(item);
+    if (diagnostics_.has_errors()) return std::nullopt;
+    return formula;
+  }
+
   ScenarioTemplate run(const std::vector<Statement>& statements) {
     for (const Statement& statement : statements) {
       if (diagnostics_.too_many_errors()) break;
@@ -350,6 +360,7 @@ class Elaborator {
                     "'" + name + "' is a function of two arguments: write '" + name + "(a, b)'");
       case SignalClass::none: break;
     }
+    if (free_signals_) return signal_item(name, {}, syntax.location);
     return fail(syntax.location, "'" + name + "' is not defined" + suggestion(name));
   }
 
@@ -364,9 +375,20 @@ class Elaborator {
   }
 
   Item member(const Syntax& syntax) {
+    const Syntax& object = syntax.children[0];
+    if (object.kind == SyntaxKind::index ||
+        (object.kind == SyntaxKind::identifier && variables_.count(object.text))) {
+      Item base = evaluate(object);
+      if (base.kind == ItemKind::error) return base;
+      if (base.kind == ItemKind::projection) return projection_column(syntax, base);
+      return fail(syntax.location, "'." + syntax.text +
+                                       "' can only follow a trace projection (trace[ego]." +
+                                       syntax.text + ") or a signal name such as "
+                                       "'trafficLightAhead'");
+    }
     // Dotted signal names: trafficLightAhead.direction.color.
     std::string dotted = syntax.text;
-    const Syntax* base = &syntax.children[0];
+    const Syntax* base = &object;
     while (base->kind == SyntaxKind::member) {
       dotted = base->text + "." + dotted;
       base = &base->children[0];
@@ -377,9 +399,25 @@ class Elaborator {
                                        "'trafficLightAhead'");
     dotted = base->text + "." + dotted;
     SignalClass kind = signal_class(dotted);
+    if (free_signals_ && kind == SignalClass::none) return signal_item(dotted, {}, syntax.location);
     if (kind != SignalClass::flag && kind != SignalClass::value)
       return fail(syntax.location, "unknown signal '" + dotted + "'" + suggestion(dotted));
     return signal_item(dotted, {}, syntax.location);
+  }
+
+  // trace[ego].speed, npc_truth.x: a numeric column of a projection.
+  Item projection_column(const Syntax& syntax, const Item& projection) {
+    if (!is_trace_column(syntax.text))
+      return fail(syntax.location, "a trace projection has no column '" + syntax.text +
+                                       "'; its columns are " + trace_column_list());
+    std::optional<SpecTerm> object = need_term(projection);
+    if (!object) return make_item(ItemKind::error, syntax.location);
+    SpecTerm term;
+    term.kind = TermKind::column;
+    term.name = syntax.text;
+    term.operands.push_back(std::move(*object));
+    term.location = syntax.location;
+    return make_item(ItemKind::term, syntax.location, std::move(term));
   }
 
   Item binary(const Syntax& syntax) {
@@ -1508,7 +1546,9 @@ class Elaborator {
       const SpecTerm& term = std::get<SpecTerm>(item.payload);
       SignalClass kind =
           term.kind == TermKind::signal ? signal_class(term.name) : SignalClass::none;
-      if (kind == SignalClass::flag || kind == SignalClass::distance_predicate) {
+      bool free_flag = free_signals_ && term.kind == TermKind::signal && term.operands.empty() &&
+                       kind == SignalClass::none;
+      if (kind == SignalClass::flag || kind == SignalClass::distance_predicate || free_flag) {
         Formula formula;
         formula.kind = FormulaKind::predicate;
         formula.terms.push_back(term);
@@ -1642,6 +1682,7 @@ class Elaborator {
 
   Diagnostics& diagnostics_;
   SourceLanguage language_;
+  bool free_signals_ = false;  // unknown names are signals (lone formulas)
   std::map<std::string, Item> variables_;
   std::vector<Parameter> parameters_;
   std::vector<std::shared_ptr<const ScenarioParts>> scenarios_;
@@ -1656,6 +1697,10 @@ class Elaborator {
 ScenarioTemplate elaborate(const std::vector<Statement>& statements, SourceLanguage language,
                            Diagnostics& diagnostics) {
   return Elaborator(diagnostics, language).run(statements);
+}
+
+std::optional<Formula> elaborate_lone_formula(const Syntax& syntax, Diagnostics& diagnostics) {
+  return Elaborator(diagnostics, SourceLanguage::avunit).lone_formula(syntax);
 }
 
 }  // namespace scenfuzz::avunit

@@ -3,6 +3,7 @@
 // the executed scenario and its specifications, and names each parameter by where it sits.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "lang/avunit/syntax.hpp"
@@ -13,5 +14,9 @@ namespace scenfuzz::avunit {
 
 ScenarioTemplate elaborate(const std::vector<Statement>& statements, SourceLanguage language,
                            Diagnostics& diagnostics);
+
+// A lone formula: AVUnit's formula syntax where a name that is neither a built-in nor defined is
+// a signal of that name (dotted names too: `ego.speed`), and such a signal alone is a flag.
+std::optional<Formula> elaborate_lone_formula(const Syntax& syntax, Diagnostics& diagnostics);
 
 }  // namespace scenfuzz::avunit

@@ -35,6 +35,19 @@ class Parser {
   Parser(const std::vector<Token>& tokens, Diagnostics& diagnostics)
       : tokens_(tokens), diagnostics_(diagnostics) {}
 
+  // A whole input that is one expression (a formula given on the command line).
+  std::optional<Syntax> lone_expression() {
+    try {
+      nesting_ = 0;
+      Syntax result = expression(kImplies);
+      if (!at(TokenKind::end_of_file))
+        fail(peek().location, "expected the end of the formula, found " + describe(peek()));
+      return result;
+    } catch (const SyntaxError&) {
+      return std::nullopt;
+    }
+  }
+
   std::vector<Statement> run() {
     std::vector<Statement> statements;
     while (!at(TokenKind::end_of_file) && !diagnostics_.too_many_errors()) {
@@ -560,6 +573,11 @@ class Parser {
 std::vector<Statement> parse_statements(const std::vector<Token>& tokens,
                                         Diagnostics& diagnostics) {
   return Parser(tokens, diagnostics).run();
+}
+
+std::optional<Syntax> parse_lone_expression(const std::vector<Token>& tokens,
+                                            Diagnostics& diagnostics) {
+  return Parser(tokens, diagnostics).lone_expression();
 }
 
 }  // namespace scenfuzz::avunit

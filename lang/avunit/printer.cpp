@@ -359,6 +359,7 @@ class Printer {
         if (term.source == ObjectSource::ego) return trace_ + "[ego]";
         return trace_ + (term.source == ObjectSource::truth ? "[truth][" : "[perception][") +
                term.name + "]";
+      case TermKind::column: return term_text(term.operands[0]) + "." + term.name;
       case TermKind::position: return position_text(*term.position);
       case TermKind::vector:
         return "(" + term_text(term.operands[0]) + ", " + term_text(term.operands[1]) + ")";
