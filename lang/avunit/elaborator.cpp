@@ -350,6 +350,8 @@ class Elaborator {
       item.word = name;
       return item;
     }
+    // A lone formula's bare names are its data's columns, built-in names included.
+    if (free_signals_) return signal_item(name, {}, syntax.location);
     switch (signal_class(name)) {
       case SignalClass::flag:
       case SignalClass::value: return signal_item(name, {}, syntax.location);
@@ -360,7 +362,6 @@ class Elaborator {
                     "'" + name + "' is a function of two arguments: write '" + name + "(a, b)'");
       case SignalClass::none: break;
     }
-    if (free_signals_) return signal_item(name, {}, syntax.location);
     return fail(syntax.location, "'" + name + "' is not defined" + suggestion(name));
   }
 
