@@ -24,8 +24,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
            "\nRun with --help for more information.\n";
   });
   app.footer(
-      "Exit status: 0 success, 1 bad command line, 2 a scenario or map file cannot be read or "
-      "has errors.");
+      "Exit status: 0 success, 1 a specification is violated (run, stl), 2 a bad command line or "
+      "a scenario, map or trace file that cannot be read or has errors.");
 
   std::vector<std::string> check_files;
   CLI::App* check = app.add_subcommand(
@@ -66,8 +66,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   RunCommandOptions run_options;
   CLI::App* run_command = app.add_subcommand(
       "run",
-      "Simulate a scenario: print the collisions and whether the ego reached its target; write "
-      "the trace (CSV, JSON), a bird's-eye SVG and the concrete scenario");
+      "Simulate a scenario: print the collisions, whether the ego reached its target and the "
+      "robustness of every spec (exit 1 when one is violated); write the trace (CSV, JSON), a "
+      "bird's-eye SVG and the concrete scenario");
   run_command->add_option("FILE", run_options.path, "AVUnit or scenest scenario file")
       ->required()
       ->type_name("");
@@ -104,6 +105,29 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
                         "Keep simulating after the ego's first collision");
   run_command->add_flag("--json", run_options.json, "Print the summary as JSON");
 
+  StlCommandOptions stl_options;
+  CLI::App* stl = app.add_subcommand(
+      "stl",
+      "Evaluate an STL formula on a CSV log: print its robustness at the first sample (or at "
+      "every sample with --signal); exit 0 when satisfied, 1 when violated");
+  stl->add_option("--spec", stl_options.spec,
+                  "The formula, in AVUnit's syntax; its names are the log's columns: "
+                  "'G[0:5](x > 0.5 & F[0:2](y < 0.1))'")
+      ->required()
+      ->type_name("FORMULA");
+  stl->add_option("--trace", stl_options.trace_path,
+                  "CSV log: a header row naming the columns, one of them 'time' (seconds, "
+                  "strictly increasing), then one row of numbers per sample")
+      ->required()
+      ->type_name("FILE.csv");
+  stl->add_flag("--signal", stl_options.signal,
+                "Print the robustness at every sample as CSV (time,robustness)");
+  stl->footer(
+      "Prints the robustness as a plain number (inf and -inf for infinities); for a violated "
+      "formula, a note on stderr names the atom responsible and the time. Exit status: 0 "
+      "satisfied (robustness >= 0), 1 violated (< 0), 2 a bad command line, or a formula or "
+      "log that cannot be read or has errors.");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -115,6 +139,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   if (space->parsed()) return run_space(space_file, space_json, out, err);
   if (map->parsed()) return run_map(map_options, out, err);
   if (run_command->parsed()) return run_run(run_options, out, err);
+  if (stl->parsed()) return run_stl(stl_options, out, err);
   return kExitUsage;  // unreachable: a subcommand is required
 }
 

@@ -7,7 +7,8 @@ namespace scenfuzz {
 
 // Exit codes of every subcommand.
 inline constexpr int kExitSuccess = 0;
-inline constexpr int kExitUsage = 1;     // bad command line
+inline constexpr int kExitViolated = 1;  // a spec is violated (run, stl) / findings (the search)
+inline constexpr int kExitUsage = 2;     // bad command line
 inline constexpr int kExitBadInput = 2;  // a scenario or map file cannot be read or has errors
 inline constexpr int kExitInternal = 3;  // a bug: an unexpected exception
 

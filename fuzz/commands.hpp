@@ -49,6 +49,18 @@ struct RunCommandOptions {
 // what happened to `out` and writes the trace and a picture into the output folder.
 int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& err);
 
+struct StlCommandOptions {
+  std::string spec;        // --spec: one STL formula in AVUnit's syntax
+  std::string trace_path;  // --trace: a CSV log with a `time` column
+  bool signal = false;     // --signal: the robustness at every sample, as CSV
+};
+
+// `scenfuzz stl`: prints the formula's robustness on the CSV log at its first sample (or, with
+// --signal, `time,robustness` for every sample) to `out`; for a violated formula, a note on `err`
+// naming the responsible atom and time. Returns kExitSuccess when the robustness is >= 0,
+// kExitViolated when < 0, kExitBadInput for a bad formula or log (diagnostics on `err`).
+int run_stl(const StlCommandOptions& options, std::ostream& out, std::ostream& err);
+
 // Reads a scenario file, or prints `scenfuzz: error: cannot read 'path': <reason>` to `err`.
 std::optional<SourceFile> read_input(const std::string& path, std::ostream& err);
 

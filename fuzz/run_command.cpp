@@ -13,6 +13,8 @@
 #include "fuzz/commands.hpp"
 #include "lang/avunit/avunit.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/judge.hpp"
+#include "oracle/robustness.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/simulation/simulation.hpp"
 #include "physics/trace/trace_export.hpp"
@@ -40,6 +42,41 @@ std::string describe_collision(const Trace& trace, const Collision& collision) {
          std::string(body_side_name(collision.second_side)) + " at (" +
          format_number(std::round(collision.point.x * 100) / 100) + ", " +
          format_number(std::round(collision.point.y * 100) / 100) + ")";
+}
+
+// JSON has no infinities: they are written as the strings "inf" and "-inf".
+nlohmann::json robustness_json(double robustness) {
+  if (std::isinf(robustness)) return robustness > 0 ? "inf" : "-inf";
+  return robustness;
+}
+
+std::string place_of(const SourceFile& file, const SourceLocation& location) {
+  return file.path() + ":" + std::to_string(location.line) + ":" + std::to_string(location.column);
+}
+
+std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict) {
+  std::string text = "spec " + verdict.name + ": robustness " + format_number(verdict.robustness);
+  if (!verdict.violated()) return text + " (satisfied)";
+  text += " at " + format_number(std::round(verdict.time * 1000) / 1000) + " s, violated";
+  if (verdict.atom.known())
+    text += " by '" + verdict.atom_text + "' (" + place_of(file, verdict.atom) + ")";
+  else if (!verdict.atom_text.empty())
+    text += ": " + verdict.atom_text;
+  return text;
+}
+
+nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdict>& verdicts) {
+  nlohmann::json specs = nlohmann::json::array();
+  for (const SpecVerdict& verdict : verdicts) {
+    nlohmann::json spec = {{"name", verdict.name},
+                           {"robustness", robustness_json(verdict.robustness)},
+                           {"violated", verdict.violated()},
+                           {"time", verdict.time},
+                           {"atom", verdict.atom_text}};
+    if (verdict.atom.known()) spec["atom_location"] = place_of(file, verdict.atom);
+    specs.push_back(spec);
+  }
+  return specs;
 }
 
 nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
@@ -123,6 +160,19 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     return kExitBadInput;
   }
 
+  std::vector<SpecVerdict> verdicts;
+  try {
+    verdicts = judge_trace(scenario, values, trace, *map, *file);
+  } catch (const OracleError& error) {
+    Diagnostics oracle_diagnostics;
+    oracle_diagnostics.error(error.location(), error.what());
+    err << format_diagnostics(*file, oracle_diagnostics);
+    return kExitBadInput;
+  }
+  bool violated = false;
+  for (const SpecVerdict& verdict : verdicts) violated = violated || verdict.violated();
+  const int exit_code = violated ? kExitViolated : kExitSuccess;
+
   std::vector<std::string> written;
   if (!options.out_dir.empty()) {
     std::error_code error;
@@ -152,8 +202,10 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   }
 
   if (options.json) {
-    out << summary_json(trace, space, values, written).dump(2) << "\n";
-    return kExitSuccess;
+    nlohmann::json summary = summary_json(trace, space, values, written);
+    summary["specs"] = verdicts_json(*file, verdicts);
+    out << summary.dump(2) << "\n";
+    return exit_code;
   }
   out << "map " << trace.map_name << ", seed " << trace.seed << ", dt " << format_number(trace.dt)
       << " s\n";
@@ -169,8 +221,9 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
       << "\n";
   for (const TraceEvent& event : trace.events)
     if (event.kind == TraceEventKind::ego_failure) out << "ego failure: " << event.message << "\n";
+  for (const SpecVerdict& verdict : verdicts) out << describe_verdict(*file, verdict) << "\n";
   for (const std::string& path : written) out << "wrote " << path << "\n";
-  return kExitSuccess;
+  return exit_code;
 }
 
 }  // namespace scenfuzz

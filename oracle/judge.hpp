@@ -17,12 +17,12 @@ namespace scenfuzz {
 inline constexpr const char* kNoCollisionSpec = "no_collision";
 
 struct SpecVerdict {
-  std::string name;    // the spec's name, or kNoCollisionSpec
+  std::string name;       // the spec's name, or kNoCollisionSpec
   double robustness = 0;  // at t = 0; +inf/-inf possible
-  double time = 0;     // when the responsible atom has that value (the collision oracle: when
-                       // the ego is nearest to another body)
-  SourceLocation atom;  // the responsible atom in the file; unknown for the collision oracle
-                        // and for an infinity no atom gives
+  double time = 0;        // when the responsible atom has that value (the collision oracle: when
+                          // the ego is nearest to another body)
+  SourceLocation atom;    // the responsible atom in the file; unknown for the collision oracle
+                          // and for an infinity no atom gives
   std::string atom_text;  // that atom as written, or for the collision oracle which bodies
 
   bool violated() const { return robustness < 0; }

@@ -48,8 +48,8 @@ inline constexpr double kWindowTolerance = 1e-9;
 using LeafSignal = std::function<SignalValues(const SpecTerm& term)>;
 
 struct SignalSource {
-  std::span<const double> time;         // sample times in seconds, strictly increasing
-  LeafSignal leaf;                      // named signals
+  std::span<const double> time;        // sample times in seconds, strictly increasing
+  LeafSignal leaf;                     // named signals
   std::span<const double> parameters;  // values of the search parameters a term's Value reads
 };
 

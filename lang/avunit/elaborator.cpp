@@ -358,6 +358,8 @@ class Elaborator {
       case SignalClass::distance_predicate:
         return fail(syntax.location, "'" + name + "' needs a distance: write '" + name + "(2)'");
       case SignalClass::function:
+        // scenest's `acc` is also the ego's acceleration, the function's name without a call.
+        if (name == "acc") return signal_item(name, {}, syntax.location);
         return fail(syntax.location,
                     "'" + name + "' is a function of two arguments: write '" + name + "(a, b)'");
       case SignalClass::none: break;
@@ -384,7 +386,8 @@ class Elaborator {
       if (base.kind == ItemKind::projection) return projection_column(syntax, base);
       return fail(syntax.location, "'." + syntax.text +
                                        "' can only follow a trace projection (trace[ego]." +
-                                       syntax.text + ") or a signal name such as "
+                                       syntax.text +
+                                       ") or a signal name such as "
                                        "'trafficLightAhead'");
     }
     // Dotted signal names: trafficLightAhead.direction.color.
@@ -793,9 +796,9 @@ class Elaborator {
       return std::nullopt;
     }
     if (*lower == *upper) {
-      diagnostics_.error(where,
-                         "empty range: both bounds are " + bound(*lower) + "; write the constant "
-                                                                           "instead");
+      diagnostics_.error(where, "empty range: both bounds are " + bound(*lower) +
+                                    "; write the constant "
+                                    "instead");
       return std::nullopt;
     }
     Parameter parameter;

@@ -294,12 +294,19 @@ class Parser {
     if (!at(TokenKind::left_bracket)) return std::nullopt;
     IntervalSyntax interval;
     interval.location = take().location;
-    // Whatever its digits, a time token here is two bounds: `[0:60]` is 0 to 60 seconds.
-    if (at(TokenKind::time) && peek().text.size() <= 5 &&
-        peek(1).kind == TokenKind::right_bracket) {
+    // Whatever its digits, a time token here is two bounds: `[0:60]` is 0 to 60 seconds, and
+    // `[-1:10]` is -1 to 10.
+    auto two_bounds = [&](std::size_t ahead) {
+      const Token& token = peek(ahead);
+      return token.kind == TokenKind::time && token.text.find(':') == token.text.rfind(':') &&
+             peek(ahead + 1).kind == TokenKind::right_bracket;
+    };
+    const bool signed_time = (at(TokenKind::minus) || at(TokenKind::plus)) && two_bounds(1);
+    if (two_bounds(0) || signed_time) {
+      const double sign = signed_time && take().kind == TokenKind::minus ? -1.0 : 1.0;
       const Token& time = take();
       std::size_t colon = time.text.find(':');
-      interval.lower = std::stod(time.text.substr(0, colon));
+      interval.lower = sign * std::stod(time.text.substr(0, colon));
       interval.upper = std::stod(time.text.substr(colon + 1));
     } else {
       interval.lower = interval_bound();
@@ -495,8 +502,8 @@ class Parser {
         return node;
       case TokenKind::time:
         if (token.invalid_time)
-          fail(token.location, "invalid time of day '" + token.text +
-                                   "': expected hours 0-24 and minutes 00-59");
+          fail(token.location,
+               "invalid time of day '" + token.text + "': expected hours 0-24 and minutes 00-59");
         node.kind = SyntaxKind::time;
         node.number = token.number;
         node.text = token.text;

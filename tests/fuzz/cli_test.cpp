@@ -139,11 +139,11 @@ TEST_F(CliTest, EverySubcommandHasHelp) {
   EXPECT_NE(space.out.find("--json"), std::string::npos) << space.out;
 }
 
-TEST_F(CliTest, UsageErrorsExitWithOne) {
+TEST_F(CliTest, UsageErrorsExitWithTwo) {
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
            {}, {"frobnicate"}, {"check"}, {"space"}, {"space", "--bogus", "x.avu"}}) {
     const Outcome run = scenfuzz(args);
-    EXPECT_EQ(run.exit_code, 1) << "args: " << ::testing::PrintToString(args);
+    EXPECT_EQ(run.exit_code, 2) << "args: " << ::testing::PrintToString(args);
     EXPECT_NE(run.err.find("scenfuzz: error:"), std::string::npos) << run.err;
   }
 }
@@ -553,7 +553,7 @@ TEST_F(CliMapTest, MissingNameOrBadOptionsExitWithOne) {
                                              {"map", "--bogus", "crossroads"},
                                              {"map", "crossroads", "straight"}}) {
     const Outcome run = scenfuzz(args);
-    EXPECT_EQ(run.exit_code, 1) << "args: " << ::testing::PrintToString(args);
+    EXPECT_EQ(run.exit_code, 2) << "args: " << ::testing::PrintToString(args);
     EXPECT_NE(run.err.find("scenfuzz: error:"), std::string::npos) << run.err;
   }
 }
@@ -582,7 +582,12 @@ TEST_F(CliRunTest, RunsALogicalScenarioAtTheMiddleAndWritesItsOutputs) {
   const fs::path out = dir_ / "run";
   const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu"), "--at",
                                 "mid", "--out", out.string()});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // At the middle the ego waits behind the wreck: its reach-the-target spec is violated.
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.out.find("spec spec1: robustness -"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("violated by 'dis(ego_state, ego_target_position) <= 2.0' ("),
+            std::string::npos)
+      << run.out;
   EXPECT_NE(run.out.find("map straight"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("simulated "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("ego reached its target: "), std::string::npos) << run.out;
@@ -597,15 +602,26 @@ TEST_F(CliRunTest, RunsALogicalScenarioAtTheMiddleAndWritesItsOutputs) {
   // The concrete scenario it wrote runs as it is, and gives the same outcome.
   const Outcome again =
       scenfuzz({"run", (out / "scenario.avu").string(), "--out", (dir_ / "again").string()});
-  ASSERT_EQ(again.exit_code, 0) << again.err;
+  ASSERT_EQ(again.exit_code, 1) << again.err;
   EXPECT_EQ(slurp(out / "trace.csv"), slurp(dir_ / "again" / "trace.csv"));
+  auto verdict_line = [](const std::string& printed) {
+    const std::size_t start = printed.find("spec spec1:");
+    return printed.substr(start, printed.find(" at ", start) - start);
+  };
+  EXPECT_EQ(verdict_line(run.out), verdict_line(again.out));
 }
 
 TEST_F(CliRunTest, JsonSummary) {
   const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu"), "--at",
                                 "random", "--seed", "7", "--json", "--out", (dir_ / "o").string()});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ASSERT_NE(run.exit_code, 2) << run.err;
   const auto summary = nlohmann::json::parse(run.out);
+  ASSERT_EQ(summary["specs"].size(), 1u);
+  const auto& spec = summary["specs"][0];
+  EXPECT_EQ(spec["name"], "spec1");
+  EXPECT_EQ(spec["violated"], run.exit_code == 1);
+  EXPECT_EQ(spec["violated"], spec["robustness"].get<double>() < 0);
+  EXPECT_TRUE(spec["atom_location"].get<std::string>().ends_with(":45:19") || !spec["violated"]);
   EXPECT_EQ(summary["map"], "straight");
   EXPECT_EQ(summary["seed"], 7);
   EXPECT_TRUE(summary["collisions"].is_array());
@@ -615,7 +631,7 @@ TEST_F(CliRunTest, JsonSummary) {
 
 TEST_F(CliRunTest, ALogicalScenarioNeedsAPoint) {
   const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu")});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("--at mid"), std::string::npos) << run.err;
 }
 

@@ -123,6 +123,16 @@ TEST(Semantics, IntervalsInBothNotationsAndBracedOperands) {
   EXPECT_EQ(formula.operands[0].operands[0].terms[1].value.constant, 1.0);
 }
 
+TEST(Semantics, ANegativeLowerBoundBeforeTwoDigitsIsStillTwoBounds) {
+  // `-1:10` lexes as a minus and the time 1:10; inside brackets it is the interval -1 to 10.
+  for (const char* text : {"G[-1:10](x > 0)", "G[+1:10](x > 0)", "G[-10:10](x > 0)"}) {
+    avunit::FormulaParseResult parsed = avunit::parse_formula(SourceFile("--spec", text));
+    ASSERT_TRUE(parsed.formula) << text;
+    const double lower = text[2] == '-' ? -std::stod(std::string(text).substr(3)) : 1.0;
+    EXPECT_EQ(parsed.formula->interval, (TimeInterval{lower, 10})) << text;
+  }
+}
+
 TEST(Semantics, HeadingsKeepTheirUnitAndReference) {
   auto result = parse_ok(
       "ego = AV((\"l\"->0, -15 deg), (\"l\"->100, 0.5 pi rad related to EGO));\n"

@@ -1,0 +1,164 @@
+// Judging whole runs: every spec of every corpus seed evaluated on its simulated trace, a violated
+// spec reported with its atom and time, and the collision oracle for a scenario without specs.
+#include "oracle/judge.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "../support/shared_dir.hpp"
+#include "lang/avunit/avunit.hpp"
+#include "oracle/robustness.hpp"
+#include "physics/map/map_source.hpp"
+#include "physics/simulation/simulation.hpp"
+#include "sampler/parameter_space.hpp"
+
+namespace scenfuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path repository() { return SCENFUZZ_SOURCE_DIR; }
+
+struct JudgedRun {
+  std::optional<Trace> trace;
+  std::vector<SpecVerdict> verdicts;
+  std::string errors;
+};
+
+// Parses, simulates at `unit_point` (the middle when empty) and judges.
+JudgedRun judge_file(const SourceFile& file, std::vector<double> unit_point = {},
+                     const MapSearchPath& search_path = map_search_path({})) {
+  JudgedRun run;
+  const avunit::ParseResult parsed = avunit::parse(file);
+  run.errors = format_diagnostics(file, parsed.diagnostics);
+  if (!parsed.ok()) return run;
+  const ParameterSpace space = parameter_space(parsed.scenario);
+  if (unit_point.empty()) unit_point.assign(space.dimensions.size(), 0.5);
+  const std::vector<double> values = decode(space, unit_point);
+  const RoadMap map = load_scenario_map(parsed.scenario.map, search_path, values);
+  Diagnostics diagnostics;
+  auto setup = prepare_simulation(parsed.scenario, values, map, 1, diagnostics);
+  run.errors += format_diagnostics(file, diagnostics);
+  if (!setup) return run;
+  run.trace = simulate(map, *setup, {});
+  try {
+    run.verdicts = judge_trace(parsed.scenario, values, *run.trace, map, file);
+  } catch (const OracleError& error) {
+    Diagnostics oracle;
+    oracle.error(error.location(), error.what());
+    run.errors += format_diagnostics(file, oracle);
+  }
+  return run;
+}
+
+JudgedRun judge_text(const std::string& text) { return judge_file(SourceFile("inline.avu", text)); }
+
+std::vector<fs::path> corpus_files() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(repository() / "corpora" / "avunit"))
+    if (entry.path().extension() == ".avu") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(JudgeTest, EverySpecOfEveryCorpusSeedIsJudgedOnItsTrace) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();  // four seeds drive on san_francisco
+  const MapSearchPath search_path{{test::shared_dir() / "maps" / "apollo"}};
+  const std::vector<fs::path> files = corpus_files();
+  ASSERT_GE(files.size(), 17u);
+  std::mt19937_64 random(5);
+  std::size_t judged = 0;
+  for (const fs::path& path : files) {
+    SCOPED_TRACE(path.filename().string());
+    const std::optional<SourceFile> file = read_source_file(path.string());
+    ASSERT_TRUE(file);
+    const avunit::ParseResult parsed = avunit::parse(*file);
+    ASSERT_TRUE(parsed.ok());
+    const std::size_t dimensions = parameter_space(parsed.scenario).dimensions.size();
+    // The middle of the space and one random point.
+    std::vector<double> random_point(dimensions);
+    for (double& u : random_point) u = std::uniform_real_distribution<double>(0, 1)(random);
+    for (const std::vector<double>& point : {std::vector<double>{}, random_point}) {
+      const JudgedRun run = judge_file(*file, point, search_path);
+      ASSERT_TRUE(run.trace) << run.errors;
+      ASSERT_EQ(run.errors, "");
+      ASSERT_EQ(run.verdicts.size(), parsed.scenario.specs.size());
+      for (std::size_t i = 0; i < run.verdicts.size(); ++i) {
+        const SpecVerdict& verdict = run.verdicts[i];
+        EXPECT_EQ(verdict.name, parsed.scenario.specs[i].name);
+        EXPECT_FALSE(std::isnan(verdict.robustness)) << verdict.name;
+        if (std::isfinite(verdict.robustness)) {
+          EXPECT_TRUE(verdict.atom.known()) << verdict.name;
+          EXPECT_FALSE(verdict.atom_text.empty()) << verdict.name;
+        }
+        EXPECT_GE(verdict.time, 0.0);
+        EXPECT_LE(verdict.time, run.trace->time.back());
+        ++judged;
+      }
+    }
+  }
+  EXPECT_GE(judged, 2 * 17u);
+}
+
+constexpr const char* kRearEnd = R"(
+ego = AV((("east_0" -> 20.0), , 20.0), (("east_0" -> 400.0), , ));
+npc = Vehicle(("east_0" -> 60.0, , 0.0));
+scenario = CreateScenario{load("straight"); ego; {npc}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+npc_truth = trace[truth][npc];
+gap = G (dis(ego_state, npc_truth) >= 20.0);
+keeps_moving = G (ego_state.speed > 1.0);
+trace |= gap;
+trace |= keeps_moving;
+)";
+
+TEST(JudgeTest, AViolatedSpecNamesItsAtomAndTime) {
+  const JudgedRun run = judge_text(kRearEnd);
+  ASSERT_TRUE(run.trace) << run.errors;
+  ASSERT_EQ(run.errors, "");
+  ASSERT_EQ(run.verdicts.size(), 2u);
+  // The ego brakes behind a stopped car: it gets closer than 20 m, and it stops.
+  const SpecVerdict& gap = run.verdicts[0];
+  EXPECT_EQ(gap.name, "gap");
+  EXPECT_TRUE(gap.violated());
+  EXPECT_EQ(gap.atom_text, "dis(ego_state, npc_truth) >= 20.0");
+  EXPECT_GT(gap.time, 0.0);
+  const SpecVerdict& moving = run.verdicts[1];
+  EXPECT_EQ(moving.name, "keeps_moving");
+  EXPECT_TRUE(moving.violated());
+  EXPECT_DOUBLE_EQ(moving.robustness, -1.0);  // speed 0 at the stop
+  EXPECT_EQ(moving.atom_text, "ego_state.speed > 1.0");
+}
+
+TEST(JudgeTest, WithoutSpecsTheCollisionOracleJudges) {
+  // A stopped car 5 m ahead of an ego at 20 m/s: it cannot stop in time.
+  const JudgedRun crash = judge_text(R"(
+ego = AV((("east_0" -> 20.0), , 20.0), (("east_0" -> 400.0), , ));
+npc = Vehicle(("east_0" -> 30.0, , 0.0));
+scenario = CreateScenario{load("straight"); ego; {npc}; {}; {};};
+)");
+  ASSERT_TRUE(crash.trace) << crash.errors;
+  ASSERT_EQ(crash.verdicts.size(), 1u);
+  EXPECT_EQ(crash.verdicts[0].name, kNoCollisionSpec);
+  EXPECT_FALSE(crash.trace->collisions.empty());
+  EXPECT_LE(crash.verdicts[0].robustness, 0.0);
+  EXPECT_EQ(crash.verdicts[0].atom_text, "the ego and npc");
+
+  const JudgedRun safe = judge_text(R"(
+ego = AV((("east_0" -> 20.0), , 20.0), (("east_0" -> 400.0), , ));
+npc = Vehicle(("east_0" -> 150.0, , 0.0));
+scenario = CreateScenario{load("straight"); ego; {npc}; {}; {};};
+)");
+  ASSERT_TRUE(safe.trace) << safe.errors;
+  ASSERT_EQ(safe.verdicts.size(), 1u);
+  EXPECT_TRUE(safe.trace->collisions.empty());
+  EXPECT_GT(safe.verdicts[0].robustness, 0.0);
+}
+
+}  // namespace
+}  // namespace scenfuzz
