@@ -49,36 +49,133 @@ Windows windows_of(std::span<const double> time, const std::optional<TimeInterva
   return windows;
 }
 
-// Sliding-window minimum (Prefer = std::less) or maximum (std::greater) over monotone windows,
-// with a monotone deque of candidate indices: each index enters and leaves once.
-template <class Prefer>
-Signal sliding_extreme(const Signal& x, const std::vector<std::size_t>& begin,
-                       const std::vector<std::size_t>& end, double empty, Prefer prefer) {
-  const std::size_t n = begin.size();
-  Signal out(n);
-  std::vector<std::size_t> queue(x.size());
+// The windows of samples 0, 1, 2, ... in turn, without storing them: the two-pointer walk of
+// windows_of.
+class WindowCursor {
+ public:
+  WindowCursor(std::span<const double> time, const TimeInterval& interval)
+      : time_(time),
+        lower_(interval.lower - kWindowTolerance),
+        upper_(interval.upper + kWindowTolerance) {}
+
+  // The window [begin, end) of sample i; called with i = 0, 1, 2, ...
+  std::pair<std::size_t, std::size_t> operator()(std::size_t i) {
+    const std::size_t n = time_.size();
+    while (begin_ < n && time_[begin_] - time_[i] < lower_) ++begin_;
+    if (end_ < begin_) end_ = begin_;
+    while (end_ < n && time_[end_] - time_[i] <= upper_) ++end_;
+    return {begin_, end_};
+  }
+
+ private:
+  std::span<const double> time_;
+  double lower_, upper_;
+  std::size_t begin_ = 0, end_ = 0;
+};
+
+// Sliding-window minimum (Prefer = std::less) or maximum (std::greater) over monotone windows
+// (`window(i)` gives sample i's [begin, end), both non-decreasing in i), with a monotone deque of
+// candidate indices: each index enters and leaves once.
+template <class Window, class Prefer>
+void sliding_extreme(const Signal& x, Window window, double empty, Prefer prefer, Signal& out,
+                     std::vector<std::size_t>& queue) {
+  const std::size_t n = x.size();
+  queue.resize(n);
   std::size_t head = 0, tail = 0, next = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    for (; next < end[i]; ++next) {
+    const auto [begin, end] = window(i);
+    for (; next < end; ++next) {
       // A candidate no better than the newcomer can never be the extreme again.
       while (tail > head && !prefer(x[queue[tail - 1]], x[next])) --tail;
       queue[tail++] = next;
     }
-    while (head < tail && queue[head] < begin[i]) ++head;
+    while (head < tail && queue[head] < begin) ++head;
     out[i] = head < tail ? x[queue[head]] : empty;
   }
-  return out;
 }
 
-Signal window_min(const Signal& x, const std::vector<std::size_t>& begin,
-                  const std::vector<std::size_t>& end) {
-  return sliding_extreme(x, begin, end, kInfinity, std::less<double>());
+// Window offsets that hold for every sample: sample i's window is [i + first, i + last] clipped
+// to the trace (empty when last < first). Uniformly sampled traces have them.
+struct Offsets {
+  std::ptrdiff_t first = 0, last = -1;
+};
+
+// The interval's windows as constant offsets, when the windows the definition gives (walked by a
+// WindowCursor) are exactly those; nullopt otherwise (uneven sampling, windows wider than the
+// trace), where the deque handles them.
+std::optional<Offsets> constant_offsets(std::span<const double> time,
+                                        const TimeInterval& interval) {
+  const auto n = static_cast<std::ptrdiff_t>(time.size());
+  if (n == 0) return std::nullopt;
+  WindowCursor probe(time, interval);
+  const std::ptrdiff_t middle = n / 2;
+  std::pair<std::size_t, std::size_t> window;
+  for (std::ptrdiff_t i = 0; i <= middle; ++i) window = probe(static_cast<std::size_t>(i));
+  const Offsets offsets{static_cast<std::ptrdiff_t>(window.first) - middle,
+                        static_cast<std::ptrdiff_t>(window.second) - middle - 1};
+  auto clipped = [n](std::ptrdiff_t index) { return std::clamp<std::ptrdiff_t>(index, 0, n); };
+  WindowCursor check(time, interval);
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const auto [begin, end] = check(static_cast<std::size_t>(i));
+    if (offsets.last < offsets.first) {
+      if (begin != end) return std::nullopt;
+    } else if (static_cast<std::ptrdiff_t>(begin) != clipped(i + offsets.first) ||
+               static_cast<std::ptrdiff_t>(end) != clipped(i + offsets.last + 1)) {
+      return std::nullopt;
+    }
+  }
+  return offsets;
 }
 
-Signal window_max(const Signal& x, const std::vector<std::size_t>& begin,
-                  const std::vector<std::size_t>& end) {
-  return sliding_extreme(x, begin, end, -kInfinity, std::greater<double>());
+// Sliding extreme over constant offsets by van Herk / Gil-Werman: the samples padded with the
+// identity are cut into blocks of the window's width w; every window spans the suffix of one
+// block and the prefix of the next, so out[i] = extreme(suffix[i], prefix[i + w - 1]). Three
+// branch-free passes, whatever the width.
+template <class Extreme>
+void van_herk_extreme(const Signal& x, Offsets offsets, double identity, Extreme extreme,
+                      Signal& out, Signal& padded, Signal& suffix) {
+  const auto n = static_cast<std::ptrdiff_t>(x.size());
+  // Indices outside the trace are the identity, so offsets beyond +-n change nothing.
+  const std::ptrdiff_t first = std::max(offsets.first, -n);
+  const std::ptrdiff_t last = std::min(offsets.last, n);
+  if (last < first || n == 0) {
+    std::fill(out.begin(), out.end(), identity);
+    return;
+  }
+  const std::ptrdiff_t width = last - first + 1;
+  const std::ptrdiff_t m = n + width - 1;  // padded[k] is x[k + first]
+  padded.assign(static_cast<std::size_t>(m), identity);
+  const std::ptrdiff_t copy_begin = std::max<std::ptrdiff_t>(0, -first);
+  const std::ptrdiff_t copy_end = std::min(m, n - first);
+  if (copy_begin < copy_end)
+    std::copy(x.begin() + (copy_begin + first), x.begin() + (copy_end + first),
+              padded.begin() + copy_begin);
+  suffix.resize(static_cast<std::size_t>(m));
+  for (std::ptrdiff_t block = 0; block < m; block += width) {
+    const std::ptrdiff_t end = std::min(block + width, m);
+    double running = identity;
+    for (std::ptrdiff_t k = end; k-- > block;)
+      suffix[static_cast<std::size_t>(k)] = running =
+          extreme(running, padded[static_cast<std::size_t>(k)]);
+  }
+  for (std::ptrdiff_t block = 0; block < m; block += width) {
+    const std::ptrdiff_t end = std::min(block + width, m);
+    double running = identity;
+    for (std::ptrdiff_t k = block; k < end; ++k) {
+      running = extreme(running, padded[static_cast<std::size_t>(k)]);
+      const std::ptrdiff_t i = k - (width - 1);
+      if (i >= 0)
+        out[static_cast<std::size_t>(i)] = extreme(suffix[static_cast<std::size_t>(i)], running);
+    }
+  }
 }
+
+struct Minimum {
+  double operator()(double a, double b) const { return std::min(a, b); }
+};
+struct Maximum {
+  double operator()(double a, double b) const { return std::max(a, b); }
+};
 
 Signal suffix_min(Signal x) {
   for (std::size_t i = x.size(); i-- > 1;) x[i - 1] = std::min(x[i - 1], x[i]);
@@ -91,15 +188,12 @@ Signal suffix_max(Signal x) {
 }
 
 // p U q over the rest of the trace: r(i) = max(q(i), min(p(i), r(i + 1))), r(n) = -inf.
-Signal unbounded_until(const Signal& p, const Signal& q) {
-  const std::size_t n = p.size();
-  Signal r(n);
+void unbounded_until(const Signal& p, const Signal& q, Signal& r) {
   double later = -kInfinity;
-  for (std::size_t i = n; i-- > 0;) {
+  for (std::size_t i = p.size(); i-- > 0;) {
     later = std::max(q[i], std::min(p[i], later));
     r[i] = later;
   }
-  return r;
 }
 
 // p U[a:b] q. The samples of the window at or after i split off as (Donze, Ferrere, Maler, CAV
@@ -107,25 +201,26 @@ Signal unbounded_until(const Signal& p, const Signal& q) {
 //   max_{j in W} min(q(j), min p[i, j)) = min(min p[i, f), max_{j in W} q(j), (p U q)(f)),
 // where the untimed until may look past W only when the window's best q bounds it. Samples of
 // the window before i (a negative lower bound) contribute q(j) alone: min p[i, j) is empty.
-Signal bounded_until(const Signal& p, const Signal& q, const Windows& windows) {
+void bounded_until(const Signal& p, const Signal& q, const Windows& windows, Signal& r) {
   const std::size_t n = p.size();
-  const Signal untimed = unbounded_until(p, q);
-  std::vector<std::size_t> first(n), self(n), past_end(n);
+  Signal untimed(n), p_before_window(n), q_in_window(n), q_in_past(n);
+  std::vector<std::size_t> queue;
+  unbounded_until(p, q, untimed);
+  auto first = [&](std::size_t i) { return std::max(windows.begin[i], i); };
+  sliding_extreme(
+      p, [&](std::size_t i) { return std::pair(i, first(i)); }, kInfinity, std::less<double>(),
+      p_before_window, queue);
+  sliding_extreme(
+      q, [&](std::size_t i) { return std::pair(first(i), windows.end[i]); }, -kInfinity,
+      std::greater<double>(), q_in_window, queue);
+  sliding_extreme(
+      q, [&](std::size_t i) { return std::pair(windows.begin[i], std::min(windows.end[i], i)); },
+      -kInfinity, std::greater<double>(), q_in_past, queue);
   for (std::size_t i = 0; i < n; ++i) {
-    first[i] = std::max(windows.begin[i], i);
-    self[i] = i;
-    past_end[i] = std::min(windows.end[i], i);
-  }
-  const Signal p_before_window = window_min(p, self, first);
-  const Signal q_in_window = window_max(q, first, windows.end);
-  const Signal q_in_past = window_max(q, windows.begin, past_end);
-  Signal r(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double from_first = first[i] < n ? untimed[first[i]] : -kInfinity;
+    const double from_first = first(i) < n ? untimed[first(i)] : -kInfinity;
     const double future = std::min({p_before_window[i], q_in_window[i], from_first});
     r[i] = std::max(q_in_past[i], future);
   }
-  return r;
 }
 
 double enumeration_code(const std::string& word) {
@@ -137,7 +232,16 @@ double enumeration_code(const std::string& word) {
 
 std::string format_time(double seconds) { return format_number(seconds); }
 
-// Evaluates formulas bottom-up; optionally keeps every node's signal for explanations.
+// A term's value: a signal, or one number for every sample (constants are never spread out).
+struct Operand {
+  Signal values;
+  double scalar = 0;
+  bool is_scalar = false;
+  bool discrete = false;
+};
+
+// Evaluates formulas bottom-up; optionally keeps every node's signal for explanations. Buffers
+// freed by one node are reused by the next, so a formula costs few allocations.
 class Evaluator {
  public:
   Evaluator(const SignalSource& source, bool keep) : source_(source), keep_(keep) {}
@@ -148,12 +252,36 @@ class Evaluator {
     return result;
   }
 
-  SignalValues term(const SpecTerm& t) {
-    const std::size_t n = source_.time.size();
+  SignalValues term_values(const SpecTerm& t) {
+    Operand operand = term(t);
+    if (operand.is_scalar) operand.values.assign(size(), operand.scalar);
+    return {std::move(operand.values), operand.discrete};
+  }
+
+  const Signal& kept(const Formula& f) const { return kept_.at(&f); }
+
+ private:
+  std::size_t size() const { return source_.time.size(); }
+
+  Signal acquire() {
+    if (spare_.empty()) return Signal(size());
+    Signal buffer = std::move(spare_.back());
+    spare_.pop_back();
+    buffer.resize(size());
+    return buffer;
+  }
+
+  void release(Signal&& buffer) {
+    if (buffer.capacity() >= size()) spare_.push_back(std::move(buffer));
+  }
+
+  static Operand scalar(double value, bool discrete) { return {{}, value, true, discrete}; }
+
+  Operand term(const SpecTerm& t) {
     switch (t.kind) {
       case TermKind::number:
-      case TermKind::time_of_day: return {Signal(n, evaluate(t.value, source_.parameters)), false};
-      case TermKind::word: return {Signal(n, enumeration_code(t.name)), true};
+      case TermKind::time_of_day: return scalar(evaluate(t.value, source_.parameters), false);
+      case TermKind::word: return scalar(enumeration_code(t.name), true);
       case TermKind::signal:
       case TermKind::column: return leaf(t);
       case TermKind::object:
@@ -163,21 +291,27 @@ class Evaluator {
                           "not a number: a trace projection, position or vector "
                           "is an argument of dis, vel, spd, acc or diff");
       case TermKind::negate: {
-        Signal x = term(t.operands[0]).values;
-        for (double& v : x) v = -v;
-        return {std::move(x), false};
+        Operand x = term(t.operands[0]);
+        x.discrete = false;
+        x.scalar = -x.scalar;
+        for (double& v : x.values) v = -v;
+        return x;
       }
       default: break;
     }
-    Signal a = term(t.operands[0]).values;
-    const Signal b = term(t.operands[1]).values;
-    for (std::size_t i = 0; i < n; ++i) a[i] = arithmetic(t.kind, a[i], b[i]);
-    return {std::move(a), false};
+    Operand a = term(t.operands[0]);
+    Operand b = term(t.operands[1]);
+    if (a.is_scalar && b.is_scalar) return scalar(arithmetic(t.kind, a.scalar, b.scalar), false);
+    Operand result{a.is_scalar ? std::move(b.values) : std::move(a.values), 0, false, false};
+    for (std::size_t i = 0; i < size(); ++i)
+      result.values[i] = arithmetic(t.kind, a.is_scalar ? a.scalar : result.values[i],
+                                    b.is_scalar   ? b.scalar
+                                    : a.is_scalar ? result.values[i]
+                                                  : b.values[i]);
+    if (!a.is_scalar && !b.is_scalar) release(std::move(b.values));
+    return result;
   }
 
-  const Signal& kept(const Formula& f) const { return kept_.at(&f); }
-
- private:
   static double arithmetic(TermKind kind, double a, double b) {
     switch (kind) {
       case TermKind::add: return a + b;
@@ -188,47 +322,55 @@ class Evaluator {
     }
   }
 
-  SignalValues leaf(const SpecTerm& t) {
+  Operand leaf(const SpecTerm& t) {
     if (!source_.leaf) throw OracleError(t.location, "no signal source for '" + t.name + "'");
     SignalValues values = source_.leaf(t);
-    assert(values.values.size() == source_.time.size());
-    return values;
+    assert(values.values.size() == size());
+    return {std::move(values.values), 0, false, values.discrete};
   }
 
-  // A side of a comparison, checked to be a number everywhere.
-  SignalValues side(const SpecTerm& t, const Formula& comparison) {
-    SignalValues values = term(t);
-    for (std::size_t i = 0; i < values.values.size(); ++i)
-      if (std::isnan(values.values[i]))
-        throw OracleError(comparison.location,
-                          "this comparison meets a value that is not a "
-                          "number at t = " +
-                              format_time(source_.time[i]) + " s");
-    return values;
+  [[noreturn]] void not_a_number(const Formula& comparison, std::size_t sample) {
+    throw OracleError(comparison.location,
+                      "this comparison meets a value that is not a number at t = " +
+                          format_time(source_.time[sample]) + " s");
+  }
+
+  // r[i] = robustness(a[i], b[i]) written over a buffer of one side, with a NaN check folded in.
+  template <class Robustness>
+  Signal combine(const Formula& f, Operand& a, Operand& b, Robustness robustness) {
+    Signal r = !a.is_scalar ? std::move(a.values) : !b.is_scalar ? std::move(b.values) : acquire();
+    const double* left = a.is_scalar ? nullptr : r.data();
+    const double* right = b.is_scalar ? nullptr : (a.is_scalar ? r.data() : b.values.data());
+    std::size_t first_nan = size();
+    for (std::size_t i = 0; i < size(); ++i) {
+      const double x = left ? left[i] : a.scalar, y = right ? right[i] : b.scalar;
+      if ((std::isnan(x) || std::isnan(y)) && first_nan == size()) first_nan = i;
+      r[i] = robustness(x, y);
+    }
+    if (!a.is_scalar && !b.is_scalar) release(std::move(b.values));
+    if (first_nan < size()) not_a_number(f, first_nan);
+    return r;
   }
 
   Signal comparison(const Formula& f) {
-    const SignalValues left = side(f.terms[0], f);
-    const SignalValues right = side(f.terms[1], f);
-    const std::size_t n = left.values.size();
-    Signal r(n);
-    const bool discrete = left.discrete && right.discrete;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double a = left.values[i], b = right.values[i];
-      if (discrete) {
-        r[i] = holds(f.compare, a, b) ? 1.0 : -1.0;
-        continue;
-      }
-      switch (f.compare) {
-        case CompareOp::less:
-        case CompareOp::less_equal: r[i] = b - a; break;
-        case CompareOp::greater:
-        case CompareOp::greater_equal: r[i] = a - b; break;
-        case CompareOp::equal: r[i] = -std::abs(a - b); break;
-        case CompareOp::not_equal: r[i] = std::abs(a - b); break;
-      }
+    Operand a = term(f.terms[0]);
+    Operand b = term(f.terms[1]);
+    if (a.discrete && b.discrete) {
+      const CompareOp op = f.compare;
+      return combine(f, a, b, [op](double x, double y) { return holds(op, x, y) ? 1.0 : -1.0; });
     }
-    return r;
+    switch (f.compare) {
+      case CompareOp::less:
+      case CompareOp::less_equal: return combine(f, a, b, [](double x, double y) { return y - x; });
+      case CompareOp::greater:
+      case CompareOp::greater_equal:
+        return combine(f, a, b, [](double x, double y) { return x - y; });
+      case CompareOp::equal:
+        return combine(f, a, b, [](double x, double y) { return -std::abs(x - y); });
+      case CompareOp::not_equal:
+        return combine(f, a, b, [](double x, double y) { return std::abs(x - y); });
+    }
+    return {};
   }
 
   static bool holds(CompareOp op, double a, double b) {
@@ -246,14 +388,35 @@ class Evaluator {
   // `hornOn`: +1 where set, -1 where not. `stoplineAhead(2)`: 2 - the distance.
   Signal predicate(const Formula& f) {
     const SpecTerm& signal = f.terms[0];
-    Signal values = side(signal, f).values;
+    Operand value = term(signal);
     if (signal.operands.size() == 1) {
-      const Signal distance = side(signal.operands[0], f).values;
-      for (std::size_t i = 0; i < values.size(); ++i) values[i] = distance[i] - values[i];
-    } else {
-      for (double& v : values) v = v != 0 ? 1.0 : -1.0;
+      Operand distance = term(signal.operands[0]);
+      return combine(f, value, distance, [](double x, double d) { return d - x; });
     }
-    return values;
+    Operand unused = scalar(0, false);
+    return combine(f, value, unused, [](double x, double) { return x != 0 ? 1.0 : -1.0; });
+  }
+
+  // bounded_until's decomposition where every part is a constant-offset window too: with the
+  // window [i + lo, i + hi], p before it is [i, i + lo) and the past part [i + lo, i - 1].
+  void until_over_offsets(const Signal& p, const Signal& q, Offsets window, Signal& r) {
+    const std::size_t n = size();
+    Signal padded = acquire(), suffix = acquire(), extreme_p = acquire(), extreme_q = acquire();
+    unbounded_until(p, q, r);  // read at i + lo >= i (or at i) before r[i] is written
+    if (window.first >= 0) {
+      const auto lo = static_cast<std::size_t>(window.first);
+      van_herk_extreme(p, {0, window.first - 1}, kInfinity, Minimum(), extreme_p, padded, suffix);
+      van_herk_extreme(q, window, -kInfinity, Maximum(), extreme_q, padded, suffix);
+      for (std::size_t i = 0; i < n; ++i)
+        r[i] = std::min({extreme_p[i], extreme_q[i], i + lo < n ? r[i + lo] : -kInfinity});
+    } else {
+      van_herk_extreme(q, {window.first, std::min<std::ptrdiff_t>(window.last, -1)}, -kInfinity,
+                       Maximum(), extreme_p, padded, suffix);
+      van_herk_extreme(q, {0, window.last}, -kInfinity, Maximum(), extreme_q, padded, suffix);
+      for (std::size_t i = 0; i < n; ++i)
+        r[i] = std::max(extreme_p[i], std::min(extreme_q[i], r[i]));
+    }
+    for (Signal* buffer : {&padded, &suffix, &extreme_p, &extreme_q}) release(std::move(*buffer));
   }
 
   Signal compute(const Formula& f) {
@@ -269,12 +432,14 @@ class Evaluator {
       case FormulaKind::disjunction:
       case FormulaKind::implication: {
         Signal a = formula(f.operands[0]);
-        const Signal b = formula(f.operands[1]);
-        for (std::size_t i = 0; i < a.size(); ++i) {
-          if (f.kind == FormulaKind::conjunction) a[i] = std::min(a[i], b[i]);
-          if (f.kind == FormulaKind::disjunction) a[i] = std::max(a[i], b[i]);
-          if (f.kind == FormulaKind::implication) a[i] = std::max(-a[i], b[i]);
-        }
+        Signal b = formula(f.operands[1]);
+        if (f.kind == FormulaKind::conjunction)
+          for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::min(a[i], b[i]);
+        if (f.kind == FormulaKind::disjunction)
+          for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::max(a[i], b[i]);
+        if (f.kind == FormulaKind::implication)
+          for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::max(-a[i], b[i]);
+        release(std::move(b));
         return a;
       }
       case FormulaKind::always:
@@ -282,9 +447,24 @@ class Evaluator {
         Signal x = formula(f.operands[0]);
         const bool always = f.kind == FormulaKind::always;
         if (!f.interval) return always ? suffix_min(std::move(x)) : suffix_max(std::move(x));
-        const Windows windows = windows_of(source_.time, f.interval);
-        return always ? window_min(x, windows.begin, windows.end)
-                      : window_max(x, windows.begin, windows.end);
+        Signal out = acquire();
+        if (const std::optional<Offsets> offsets = constant_offsets(source_.time, *f.interval)) {
+          Signal padded = acquire(), suffix = acquire();
+          if (always)
+            van_herk_extreme(x, *offsets, kInfinity, Minimum(), out, padded, suffix);
+          else
+            van_herk_extreme(x, *offsets, -kInfinity, Maximum(), out, padded, suffix);
+          release(std::move(padded));
+          release(std::move(suffix));
+        } else {
+          WindowCursor window(source_.time, *f.interval);
+          if (always)
+            sliding_extreme(x, window, kInfinity, std::less<double>(), out, queue_);
+          else
+            sliding_extreme(x, window, -kInfinity, std::greater<double>(), out, queue_);
+        }
+        release(std::move(x));
+        return out;
       }
       case FormulaKind::next: {
         Signal x = formula(f.operands[0]);
@@ -294,10 +474,18 @@ class Evaluator {
         return x;
       }
       case FormulaKind::until: {
-        const Signal p = formula(f.operands[0]);
-        const Signal q = formula(f.operands[1]);
-        if (!f.interval) return unbounded_until(p, q);
-        return bounded_until(p, q, windows_of(source_.time, f.interval));
+        Signal p = formula(f.operands[0]);
+        Signal q = formula(f.operands[1]);
+        Signal r = acquire();
+        if (!f.interval)
+          unbounded_until(p, q, r);
+        else if (const std::optional<Offsets> offsets = constant_offsets(source_.time, *f.interval))
+          until_over_offsets(p, q, *offsets, r);
+        else
+          bounded_until(p, q, windows_of(source_.time, f.interval), r);
+        release(std::move(p));
+        release(std::move(q));
+        return r;
       }
     }
     return {};
@@ -306,6 +494,8 @@ class Evaluator {
   const SignalSource& source_;
   bool keep_;
   std::unordered_map<const Formula*, Signal> kept_;
+  std::vector<Signal> spare_;
+  std::vector<std::size_t> queue_;  // the sliding windows' deque
 };
 
 // Follows the value of `f` at `sample` down to the atom that gives it.
@@ -388,7 +578,7 @@ class Explainer {
 }  // namespace
 
 SignalValues term_signal(const SpecTerm& term, const SignalSource& source) {
-  return Evaluator(source, false).term(term);
+  return Evaluator(source, false).term_values(term);
 }
 
 std::vector<double> robustness_signal(const Formula& formula, const SignalSource& source) {
