@@ -107,12 +107,16 @@ std::optional<Offsets> constant_offsets(std::span<const double> time,
                                         const TimeInterval& interval) {
   const auto n = static_cast<std::ptrdiff_t>(time.size());
   if (n == 0) return std::nullopt;
-  WindowCursor probe(time, interval);
+  // The middle sample's window, found by bisection, proposes the offsets; the walk below checks
+  // them against every sample's window.
   const std::ptrdiff_t middle = n / 2;
-  std::pair<std::size_t, std::size_t> window;
-  for (std::ptrdiff_t i = 0; i <= middle; ++i) window = probe(static_cast<std::size_t>(i));
-  const Offsets offsets{static_cast<std::ptrdiff_t>(window.first) - middle,
-                        static_cast<std::ptrdiff_t>(window.second) - middle - 1};
+  const double t = time[static_cast<std::size_t>(middle)];
+  const double lower = interval.lower - kWindowTolerance, upper = interval.upper + kWindowTolerance;
+  const auto first =
+      std::partition_point(time.begin(), time.end(), [&](double tj) { return tj - t < lower; });
+  const auto last =
+      std::partition_point(first, time.end(), [&](double tj) { return tj - t <= upper; });
+  const Offsets offsets{(first - time.begin()) - middle, (last - time.begin()) - middle - 1};
   auto clipped = [n](std::ptrdiff_t index) { return std::clamp<std::ptrdiff_t>(index, 0, n); };
   WindowCursor check(time, interval);
   for (std::ptrdiff_t i = 0; i < n; ++i) {
