@@ -55,7 +55,9 @@ std::string place_of(const SourceFile& file, const SourceLocation& location) {
 }
 
 std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict) {
-  std::string text = "spec " + verdict.name + ": robustness " + format_number(verdict.robustness);
+  // Nine decimals read better than the 17 digits a double may need; --json has them all.
+  std::string text = "spec " + verdict.name + ": robustness " +
+                     format_number(std::round(verdict.robustness * 1e9) / 1e9);
   if (!verdict.violated()) return text + " (satisfied)";
   text += " at " + format_number(std::round(verdict.time * 1000) / 1000) + " s, violated";
   if (verdict.atom.known())
