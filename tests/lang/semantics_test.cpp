@@ -123,6 +123,29 @@ TEST(Semantics, IntervalsInBothNotationsAndBracedOperands) {
   EXPECT_EQ(formula.operands[0].operands[0].terms[1].value.constant, 1.0);
 }
 
+TEST(Semantics, ProjectionColumnsAndTheBareAcc) {
+  auto result = parse_ok("ego = AV((\"l\"->0), (\"l\"->100));\nnpc1 = Vehicle((\"l\"->30));\n" +
+                         kScenarioTail +
+                         "seen = t[truth][npc1];\n"
+                         "t |= G (t[ego].speed < seen.x) & G (acc < 4);\n");
+  const Formula& formula = result.scenario.specs.at(0).formula;
+  const SpecTerm& speed = formula.operands[0].operands[0].terms[0];
+  EXPECT_EQ(speed.kind, TermKind::column);
+  EXPECT_EQ(speed.name, "speed");
+  ASSERT_EQ(speed.operands.size(), 1u);
+  EXPECT_EQ(speed.operands[0].source, ObjectSource::ego);
+  const SpecTerm& x = formula.operands[0].operands[0].terms[1];
+  EXPECT_EQ(x.kind, TermKind::column);
+  EXPECT_EQ(x.operands[0].source, ObjectSource::truth);
+  EXPECT_EQ(x.operands[0].name, "npc1");
+  const SpecTerm& acc = formula.operands[1].operands[0].terms[0];
+  EXPECT_EQ(acc.kind, TermKind::signal);
+  EXPECT_EQ(acc.name, "acc");
+  EXPECT_TRUE(acc.operands.empty());
+  // The printer writes columns back so that they read the same.
+  EXPECT_EQ(parse_ok(avunit::print(result.scenario)).scenario, result.scenario);
+}
+
 TEST(Semantics, ANegativeLowerBoundBeforeTwoDigitsIsStillTwoBounds) {
   // `-1:10` lexes as a minus and the time 1:10; inside brackets it is the interval -1 to 10.
   for (const char* text : {"G[-1:10](x > 0)", "G[+1:10](x > 0)", "G[-10:10](x > 0)"}) {
