@@ -18,14 +18,56 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "which the automated driving system under test violates its specification.",
       "scenfuzz"};
   app.set_version_flag("--version", std::string("scenfuzz ") + SCENFUZZ_VERSION);
-  app.require_subcommand(1);
+  // Without a subcommand, scenfuzz searches: `scenfuzz --budget 500 base.avu`.
+  app.require_subcommand(0, 1);
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     return std::string("scenfuzz: error: ") + e.what() +
            "\nRun with --help for more information.\n";
   });
   app.footer(
-      "Exit status: 0 success, 1 a specification is violated (run, stl), 2 a bad command line or "
-      "a scenario, map or trace file that cannot be read or has errors.");
+      "Without a subcommand, scenfuzz searches FILE's parameter ranges for points that violate "
+      "its specs and writes every finding into --out. Exit status: 0 success (no finding), 1 "
+      "findings (a specification is violated, also for run and stl), 2 a bad command line or a "
+      "scenario, map or trace file that cannot be read or has errors.");
+
+  FuzzCommandOptions fuzz_options;
+  app.add_option("FILE", fuzz_options.path, "Logical scenario to search (AVUnit or scenest)")
+      ->type_name("");
+  app.add_option("--budget", fuzz_options.budget,
+                 "Simulations to spend (default 500); infeasible points are not counted")
+      ->type_name("N");
+  app.add_option("--algo", fuzz_options.algorithm,
+                 "Search: ga (default), random, halton, lhs, or nlopt:NAME (an NLopt algorithm: "
+                 "GN_ISRES, GN_CRS2_LM, GN_ESCH, GN_DIRECT_L, GN_MLSL_LDS, LN_BOBYQA, LN_COBYLA, "
+                 "LN_SBPLX, LN_NELDERMEAD, ...)")
+      ->type_name("NAME");
+  app.add_option("--seed", fuzz_options.seed,
+                 "Seed of every random choice; the same seed gives the same findings for any -j")
+      ->type_name("N");
+  app.add_option("-j,--jobs", fuzz_options.jobs, "Worker threads (default: all cores)")
+      ->type_name("N");
+  app.add_option("--time-limit", fuzz_options.time_limit, "Stop after this many seconds")
+      ->type_name("S");
+  app.add_option("--spec", fuzz_options.specs,
+                 "Target this spec (repeatable); by default every spec shares the budget")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
+  app.add_option("--out", fuzz_options.out_dir,
+                 "Folder for findings/, evaluations.csv and summary.json (default scenfuzz-out)")
+      ->type_name("DIR");
+  app.add_option("--map-path", fuzz_options.map_paths,
+                 "Folder to search for maps (repeatable; also SCENFUZZ_MAP_PATH)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  app.add_option("--ego-plugin", fuzz_options.ego_plugin,
+                 "Shared library that drives the ego (docs/ego-plugin.md)")
+      ->type_name("LIB");
+  app.add_option("--duration", fuzz_options.duration, "Simulated seconds per run")->type_name("S");
+  app.add_option("--dt", fuzz_options.dt, "Seconds per step (default 0.05)")->type_name("S");
+  app.add_flag("--continue-after-collision", fuzz_options.continue_after_collision,
+               "Keep simulating after the ego's first collision");
+  app.add_flag("--quiet", fuzz_options.quiet, "No progress and no summary");
+  app.add_flag("--json", fuzz_options.json, "Progress, findings and the summary as JSON lines");
 
   std::vector<std::string> check_files;
   CLI::App* check = app.add_subcommand(
@@ -140,7 +182,12 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   if (map->parsed()) return run_map(map_options, out, err);
   if (run_command->parsed()) return run_run(run_options, out, err);
   if (stl->parsed()) return run_stl(stl_options, out, err);
-  return kExitUsage;  // unreachable: a subcommand is required
+  if (fuzz_options.path.empty()) {
+    err << "scenfuzz: error: name a scenario to search (scenfuzz --budget 500 base.avu) or a "
+           "subcommand\nRun with --help for more information.\n";
+    return kExitUsage;
+  }
+  return run_fuzz(fuzz_options, out, err);
 }
 
 }  // namespace

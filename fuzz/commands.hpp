@@ -64,4 +64,26 @@ int run_stl(const StlCommandOptions& options, std::ostream& out, std::ostream& e
 // Reads a scenario file, or prints `scenfuzz: error: cannot read 'path': <reason>` to `err`.
 std::optional<SourceFile> read_input(const std::string& path, std::ostream& err);
 
+struct FuzzCommandOptions {
+  std::string path;
+  std::size_t budget = 500;              // --budget: simulations (infeasible points are free)
+  std::string algorithm = "ga";          // --algo
+  std::uint64_t seed = 0;                // --seed
+  std::size_t jobs = 0;                  // -j: worker threads, 0 = all cores
+  double time_limit = 0;                 // --time-limit: seconds, 0 = none
+  std::vector<std::string> specs;        // --spec: the specs to target; none = all
+  std::string out_dir = "scenfuzz-out";  // --out
+  std::vector<std::string> map_paths;    // --map-path
+  std::string ego_plugin;                // --ego-plugin
+  std::optional<double> duration;        // --duration
+  double dt = 0.05;                      // --dt
+  bool continue_after_collision = false;
+  bool quiet = false;  // --quiet: no progress, no summary
+  bool json = false;   // --json: JSON lines (progress, findings, summary) on stdout
+};
+
+// `scenfuzz [options] FILE`: searches the scenario's parameter space and writes every finding.
+// Exit status kExitSuccess (no finding), kExitViolated (findings), kExitBadInput / kExitUsage.
+int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err);
+
 }  // namespace scenfuzz

@@ -7,10 +7,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
+#include "oracle/law_manoeuvre.hpp"
+#include "oracle/law_priority.hpp"
+#include "physics/actors/actor_class.hpp"
+#include "physics/ego/perception.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/trace/trace_footprint.hpp"
 
@@ -25,6 +31,15 @@ constexpr double kRedCode = 1, kYellowCode = 2, kGreenCode = 3;
 constexpr double kNoLightCode = kGreenCode;
 // The lane graph branches at every junction; this bounds the walk on maps with many short lanes.
 constexpr std::size_t kMaxStretches = 512;
+// LawBreaker's speed limits where none is known.
+constexpr double kNoUpperLimit = 1000, kNoLowerLimit = 0;  // km/h
+// A vehicle driving against the ego: its heading more than this from the ego's lane's.
+constexpr double kOncoming = 3 * std::numbers::pi / 4;
+// isTrafficJam: this many vehicles slower than kStoppedSpeed in the junction ahead.
+constexpr std::size_t kJamVehicles = 3;
+constexpr double kStoppedSpeed = 1;  // m/s
+// Apollo's gear code for DRIVE: our vehicles never reverse.
+constexpr double kDriveGear = 1;
 
 double colour_code(SignalColour colour) {
   switch (colour) {
@@ -43,25 +58,6 @@ struct LaneStretch {
   double s_end = 0;
   double offset = 0;
 };
-
-// The lanes the ego drives on, in order, each with the sample where it enters it; samples off
-// the lanes are skipped.
-struct LaneVisits {
-  std::vector<LaneIndex> lanes;
-  std::vector<std::optional<std::size_t>> visit_at;  // per sample: index into lanes
-};
-
-LaneVisits lane_visits(const TraceActor& ego) {
-  LaneVisits visits;
-  visits.visit_at.resize(ego.lane.size());
-  for (std::size_t i = 0; i < ego.lane.size(); ++i) {
-    if (ego.lane[i] < 0) continue;
-    const auto lane = static_cast<LaneIndex>(ego.lane[i]);
-    if (visits.lanes.empty() || visits.lanes.back() != lane) visits.lanes.push_back(lane);
-    visits.visit_at[i] = visits.lanes.size() - 1;
-  }
-  return visits;
-}
 
 // The lanes ahead of the ego at sample i, from its rear bumper to `reach` metres ahead of its
 // centre; empty when it is on no lane. Where the ego's next lane in the run is a successor, only
@@ -193,17 +189,124 @@ VehicleFound nearest_vehicle(const Trace& trace, std::size_t i) {
   return found;
 }
 
-// Lanes side by side in the ego's direction: its own and its forward neighbours, transitively.
-double lane_count_of_road(const RoadMap& map, LaneIndex lane) {
-  std::vector<LaneIndex> road = {lane};
-  for (std::size_t k = 0; k < road.size(); ++k) {
-    const Lane& member = map.lane(road[k]);
+// `lanes` and the lanes side by side with them in their direction: forward neighbours,
+// transitively.
+std::vector<LaneIndex> side_by_side(const RoadMap& map, std::vector<LaneIndex> lanes) {
+  for (std::size_t k = 0; k < lanes.size(); ++k) {
+    const Lane& member = map.lane(lanes[k]);
     for (const auto* neighbours :
          {&member.left_forward_neighbours, &member.right_forward_neighbours})
       for (LaneIndex neighbour : *neighbours)
-        if (std::find(road.begin(), road.end(), neighbour) == road.end()) road.push_back(neighbour);
+        if (std::find(lanes.begin(), lanes.end(), neighbour) == lanes.end())
+          lanes.push_back(neighbour);
   }
-  return static_cast<double>(road.size());
+  return lanes;
+}
+
+double lane_count_of_road(const RoadMap& map, LaneIndex lane) {
+  return static_cast<double>(side_by_side(map, {lane}).size());
+}
+
+// The lanes of the carriageway beside a lane that runs the other way, per lane, found once.
+class OppositeLanes {
+ public:
+  explicit OppositeLanes(const RoadMap& map) : map_(map) {}
+
+  bool contains(LaneIndex lane, LaneIndex other) {
+    auto found = cache_.find(lane);
+    if (found == cache_.end()) found = cache_.emplace(lane, find(lane)).first;
+    return std::find(found->second.begin(), found->second.end(), other) != found->second.end();
+  }
+
+ private:
+  std::vector<LaneIndex> find(LaneIndex lane) const {
+    std::vector<LaneIndex> reverse;
+    for (LaneIndex member : side_by_side(map_, {lane})) {
+      const Lane& beside = map_.lane(member);
+      for (const auto* neighbours :
+           {&beside.left_reverse_neighbours, &beside.right_reverse_neighbours})
+        for (LaneIndex neighbour : *neighbours)
+          if (std::find(reverse.begin(), reverse.end(), neighbour) == reverse.end())
+            reverse.push_back(neighbour);
+    }
+    return side_by_side(map_, std::move(reverse));
+  }
+
+  const RoadMap& map_;
+  std::unordered_map<LaneIndex, std::vector<LaneIndex>> cache_;
+};
+
+// The nearest vehicle ahead that drives against the ego: on the opposite carriageway beside a
+// lane ahead (or, where that lane is in a junction, on any lane of the junction), its centre
+// beside the lane ahead of the ego's centre, heading more than kOncoming from the lane's
+// direction there (in a junction: from the ego's heading).
+VehicleFound vehicle_opposite(const Trace& trace, const RoadMap& map, const AheadView& view,
+                              OppositeLanes& opposite, std::size_t i) {
+  const double reach = kNoRoadObjectAhead + view.half_length;
+  VehicleFound found;
+  for (std::size_t k = 1; k < trace.actors.size(); ++k) {
+    const TraceActor& vehicle = trace.actors[k];
+    if (vehicle.kind != TraceActorKind::vehicle || vehicle.lane[i] < 0) continue;
+    const auto lane = static_cast<LaneIndex>(vehicle.lane[i]);
+    const MapPoint centre{vehicle.x[i], vehicle.y[i]};
+    bool oncoming = false;
+    for (const LaneStretch& stretch : view.stretches) {
+      const Lane& ahead = map.lane(stretch.lane);
+      const bool same_junction = ahead.junction && ahead.junction == map.lane(lane).junction;
+      if (!same_junction && !opposite.contains(stretch.lane, lane)) continue;
+      const PolylineProjection beside = ahead.centre_line.project(centre);
+      if (beside.s < stretch.s_begin || beside.s > stretch.s_end) continue;
+      const double along = stretch.offset + (beside.s - stretch.s_begin);
+      if (along <= 0 || along > reach) continue;
+      // Junction lanes cross one another: there the ego's own heading says which way is back.
+      const double way =
+          ahead.junction ? trace.actors[kEgo].heading[i] : ahead.centre_line.heading_at(beside.s);
+      if (std::abs(angle_difference(vehicle.heading[i], way)) > kOncoming) oncoming = true;
+    }
+    if (!oncoming) continue;
+    const double gap = footprint_gap(trace, static_cast<ActorId>(k), i);
+    if (gap < found.distance) found = {gap, vehicle.speed[i]};
+  }
+  return found;
+}
+
+bool inside_polygon(const std::vector<MapPoint>& polygon, MapPoint point) {
+  bool inside = false;
+  for (std::size_t a = 0, b = polygon.size() - 1; a < polygon.size(); b = a++) {
+    const MapPoint p = polygon[a], q = polygon[b];
+    if ((p.y > point.y) != (q.y > point.y) &&
+        point.x < p.x + (point.y - p.y) * (q.x - p.x) / (q.y - p.y))
+      inside = !inside;
+  }
+  return inside;
+}
+
+// 1 when at least kJamVehicles nearly stopped vehicles are in the junction junctionAhead
+// reports: on its lanes or with their centre inside its outline.
+double traffic_jam(const Trace& trace, const RoadMap& map, const AheadView& view, std::size_t i) {
+  std::optional<std::uint32_t> junction;
+  double nearest = 0;
+  for (const LaneStretch& stretch : view.stretches) {
+    const std::optional<std::uint32_t> here = map.lane(stretch.lane).junction;
+    if (here && (!junction || stretch.offset < nearest)) {
+      junction = here;
+      nearest = stretch.offset;
+    }
+  }
+  if (!junction) return 0;
+  const std::vector<MapPoint>& outline = map.junctions()[*junction].outline;
+  std::size_t stopped = 0;
+  for (std::size_t k = 1; k < trace.actors.size(); ++k) {
+    const TraceActor& vehicle = trace.actors[k];
+    if (vehicle.kind != TraceActorKind::vehicle || vehicle.speed[i] >= kStoppedSpeed) continue;
+    const bool on_its_lanes =
+        vehicle.lane[i] >= 0 &&
+        map.lane(static_cast<LaneIndex>(vehicle.lane[i])).junction == junction;
+    if (on_its_lanes ||
+        (outline.size() >= 3 && inside_polygon(outline, {vehicle.x[i], vehicle.y[i]})))
+      ++stopped;
+  }
+  return stopped >= kJamVehicles ? 1 : 0;
 }
 
 double weather_intensity(const ScenarioTemplate& scenario, std::span<const double> parameters,
@@ -226,6 +329,59 @@ double time_of_day(const ScenarioTemplate& scenario, std::span<const double> par
   if (!std::isfinite(seconds))
     throw OracleError(location, "the scenario's time of day is not a number");
   return seconds;
+}
+
+// The ego's speed limits on each lane, km/h: the scenario's SpeedLimit for the lane, else the
+// map's limit (a maximum only), else LawBreaker's placeholders.
+class SpeedLimits {
+ public:
+  SpeedLimits(const ScenarioTemplate& scenario, std::span<const double> parameters,
+              const RoadMap& map, const SourceLocation& location)
+      : map_(map) {
+    for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
+      const double lower = evaluate(limit.lower, parameters);
+      const double upper = evaluate(limit.upper, parameters);
+      if (!std::isfinite(lower) || !std::isfinite(upper))
+        throw OracleError(
+            location, "the scenario's speed limit on lane '" + limit.lane + "' is not a number");
+      scenario_.push_back({limit.lane, lower * kKilometresPerHourPerMetrePerSecond,
+                           upper * kKilometresPerHourPerMetrePerSecond});
+    }
+  }
+
+  // {lower, upper} on lane `lane` (-1: on no lane).
+  std::pair<double, double> on(std::int32_t lane) const {
+    if (lane < 0) return {kNoLowerLimit, kNoUpperLimit};
+    const Lane& on_map = map_.lane(static_cast<LaneIndex>(lane));
+    for (const Limit& limit : scenario_)
+      if (limit.lane == on_map.id) return {limit.lower, limit.upper};
+    if (on_map.speed_limit > 0)
+      return {kNoLowerLimit, on_map.speed_limit * kKilometresPerHourPerMetrePerSecond};
+    return {kNoLowerLimit, kNoUpperLimit};
+  }
+
+ private:
+  struct Limit {
+    std::string lane;
+    double lower = 0, upper = 0;
+  };
+  const RoadMap& map_;
+  std::vector<Limit> scenario_;
+};
+
+// How far the ego's perception sees vehicles (m) in the scenario's weather and light, as the
+// simulation degrades it from the default clear-weather range.
+double visibility(const ScenarioTemplate& scenario, std::span<const double> parameters,
+                  const SourceLocation& location) {
+  Conditions conditions;
+  auto intensity = [&](const std::string& kind) {
+    return std::clamp(weather_intensity(scenario, parameters, kind, location), 0.0, 1.0);
+  };
+  conditions.fog = intensity("fog");
+  conditions.rain = intensity("rain");
+  conditions.snow = intensity("snow");
+  conditions.darkness = darkness_at(time_of_day(scenario, parameters, location));
+  return degraded(PerceptionSettings{}, conditions).vehicle_range;
 }
 
 // A signal that looks along the ego's lanes: `compute(view, sample)` at every sample.
@@ -328,6 +484,54 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
       const auto lane = static_cast<LaneIndex>(ego.lane[i]);
       return map.lane(lane).junction ? 0.0 : lane_count_of_road(map, lane);
     }));
+  if (name == "currentLane.direction") return discrete(current_lane_direction(trace, map));
+  auto manoeuvre = [&] {
+    return ego_manoeuvre(trace, map, ego_target(scenario, parameters, trace, map));
+  };
+  if (name == "direction") return discrete(manoeuvre().direction);
+  if (name == "isLaneChanging") {
+    const EgoManoeuvre changes = manoeuvre();
+    return discrete(
+        each_sample(count, [&](std::size_t i) { return changes.lane_changing[i] ? 1.0 : 0.0; }));
+  }
+  if (name == "isTurningAround") return discrete(turning_around(trace, manoeuvre()));
+  if (name == "PriorityNPCAhead") {
+    const std::vector<double> ahead =
+        along_the_lanes(trace, map, [&](const AheadView& view, std::size_t i) {
+          return vehicle_ahead(trace, view, i).distance;
+        });
+    return discrete(priority_vehicle_ahead(trace, manoeuvre(), ahead));
+  }
+  if (name == "PriorityPedsAhead") return discrete(priority_pedestrian_ahead(trace, manoeuvre()));
+  if (name == "isTrafficJam")
+    return discrete(along_the_lanes(trace, map, [&](const AheadView& view, std::size_t i) {
+      return traffic_jam(trace, map, view, i);
+    }));
+  if (name == "NPCOpposite" || name == "NPCOpposite.speed") {
+    OppositeLanes opposite(map);
+    const bool speed = name == "NPCOpposite.speed";
+    return numeric(along_the_lanes(trace, map, [&](const AheadView& view, std::size_t i) {
+      const VehicleFound found = vehicle_opposite(trace, map, view, opposite, i);
+      return speed ? found.speed : found.distance;
+    }));
+  }
+  if (name == "speedLimit.upperLimit" || name == "speedLimit.lowerLimit") {
+    const SpeedLimits limits(scenario, parameters, map, term.location);
+    const bool upper = name == "speedLimit.upperLimit";
+    return numeric(each_sample(count, [&](std::size_t i) {
+      const auto [lower_limit, upper_limit] = limits.on(ego.lane[i]);
+      return upper ? upper_limit : lower_limit;
+    }));
+  }
+  if (name == "visibility")
+    return numeric(std::vector<double>(count, visibility(scenario, parameters, term.location)));
+  if (name == "gear") return discrete(std::vector<double>(count, kDriveGear));
+  if (name == "brake") {
+    const double full_braking = actor_class(ego.category).max_deceleration;
+    return numeric(each_sample(count, [&](std::size_t i) {
+      return std::clamp(-ego.acceleration[i] / full_braking * 100, 0.0, 100.0);
+    }));
+  }
   throw OracleError(term.location,
                     "the oracle does not compute '" + name + "' on simulated traces yet");
 }

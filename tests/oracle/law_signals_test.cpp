@@ -7,10 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
+#include "oracle/judge.hpp"
 #include "oracle/trace_signals.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "tests/oracle/trace_fixtures.hpp"
+#include "tests/support/shared_dir.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -34,11 +37,12 @@ std::string scenario_with(const std::string& environment, const std::string& spe
          specs;
 }
 
-// Puts `actor` at arc length s of `lane` at sample i, facing along it.
+// Puts `actor` at arc length s of `lane` at sample i, `lateral` metres to the left of its centre
+// line, facing along it.
 void put_on_lane(const RoadMap& map, TraceActor& actor, std::size_t i, const std::string& lane,
-                 double s) {
+                 double s, double lateral = 0) {
   const LaneIndex index = *map.find_lane(lane);
-  const MapPose pose = *lane_pose_at(map, index, s);
+  const MapPose pose = *lane_pose_at(map, index, s, lateral);
   actor.x[i] = pose.position.x;
   actor.y[i] = pose.position.y;
   actor.heading[i] = pose.heading;
@@ -47,8 +51,8 @@ void put_on_lane(const RoadMap& map, TraceActor& actor, std::size_t i, const std
 }
 
 // A trace on `map` with an ego 4 m x 2 m and the scenario's other actors parked far away.
-Trace law_trace(const RoadMap& map, std::size_t samples) {
-  Trace trace = empty_trace(samples);
+Trace law_trace(const RoadMap& map, std::size_t samples, double dt = 0.1) {
+  Trace trace = empty_trace(samples, dt);
   trace.actors.push_back(
       still_actor(trace, "ego", TraceActorKind::ego, BodyShape::box, 4, 2, 0, 0));
   for (const char* name : {"npc1", "npc2", "npc3", "npc4"})
@@ -251,11 +255,333 @@ TEST_F(LawSignalsTest, TheWayAheadFollowsTheLaneTheEgoTakesNext) {
   EXPECT_GT(undecided[0], 0);
 }
 
+// The value of the first term of the first spec of a whole scenario file `text` on `trace`.
+std::vector<double> first_term_values(const Trace& trace, const RoadMap& map,
+                                      const std::string& text) {
+  const test::ParsedScenario parsed = parse_scenario(text);
+  const TraceSignals signals(trace, parsed.scenario, parsed.parameters, map);
+  return signals.leaf(parsed.scenario.specs.at(0).formula.terms.at(0)).values;
+}
+
+TEST_F(LawSignalsTest, DirectionIsTheTurnOfTheNextJunctionLaneWithinAHundredMetres) {
+  auto direction = [&](const Trace& trace) {
+    const SignalValues values = law_values(trace, crossroads, "trace |= direction == left;\n");
+    EXPECT_TRUE(values.discrete);
+    return values.values;
+  };
+  // The junction lanes begin at s = 150 of the in lanes; the ego's front is 2 m ahead of it.
+  Trace left = law_trace(crossroads, 4);
+  put_on_lane(crossroads, left.actors[0], 0, "west_in_1", 47);  // 101 m before the junction
+  put_on_lane(crossroads, left.actors[0], 1, "west_in_1", 49);  // 99 m
+  put_on_lane(crossroads, left.actors[0], 2, "west_north_1", 5);
+  put_on_lane(crossroads, left.actors[0], 3, "north_out_1", 20);
+  EXPECT_EQ(direction(left), (std::vector<double>{0, 1, 1, 0}));
+
+  Trace right = law_trace(crossroads, 3);
+  put_on_lane(crossroads, right.actors[0], 0, "west_in_0", 100);
+  put_on_lane(crossroads, right.actors[0], 1, "west_south_0", 3);
+  put_on_lane(crossroads, right.actors[0], 2, "south_out_0", 3);
+  EXPECT_EQ(direction(right), (std::vector<double>{2, 2, 0}));
+
+  Trace straight_on = law_trace(crossroads, 3);
+  put_on_lane(crossroads, straight_on.actors[0], 0, "west_in_0", 100);
+  put_on_lane(crossroads, straight_on.actors[0], 1, "west_east_0", 3);
+  put_on_lane(crossroads, straight_on.actors[0], 2, "east_out_0", 3);
+  EXPECT_EQ(direction(straight_on), (std::vector<double>{0, 0, 0}));
+}
+
+TEST_F(LawSignalsTest, PastTheRunTheDirectionFollowsTheRouteToTheEgosTarget) {
+  // The run ends before the junction, where west_in_1 goes straight on or left.
+  Trace trace = law_trace(crossroads, 1);
+  put_on_lane(crossroads, trace.actors[0], 0, "west_in_1", 100);
+  EXPECT_EQ(law_values(trace, crossroads, "trace |= direction == left;\n").values,
+            std::vector<double>{0})
+      << "without a target (the scenario's is on another map) either way: unknown";
+  auto with_target = [&](const std::string& target) {
+    return first_term_values(trace, crossroads,
+                             "ego = AV((\"west_in_1\"->20, , 0), (\"" + target +
+                                 "\"->50));\n"
+                                 "scenario = CreateScenario{load(\"crossroads\"); ego; {}; {}; "
+                                 "{};};\n"
+                                 "Trace trace = EXE(scenario);\n"
+                                 "trace |= direction == left;\n");
+  };
+  EXPECT_EQ(with_target("north_out_1"), std::vector<double>{1});
+  EXPECT_EQ(with_target("east_out_1"), std::vector<double>{0});
+}
+
+TEST_F(LawSignalsTest, ALaneChangeLastsWhileTheEgoIsOffItsLanesCentreTowardsTheOther) {
+  // On `straight` east_1 is the left neighbour of east_0; lateral offsets are to the left.
+  Trace trace = law_trace(straight, 9);
+  const std::vector<double> offsets = {0, 0.2, 0.8, 1.6, -1.4, -0.6, -0.2, 0, 0};
+  for (std::size_t i = 0; i < 4; ++i)
+    put_on_lane(straight, trace.actors[0], i, "east_0", 50 + static_cast<double>(i), offsets[i]);
+  for (std::size_t i = 4; i < 9; ++i)
+    put_on_lane(straight, trace.actors[0], i, "east_1", 50 + static_cast<double>(i), offsets[i]);
+  const std::vector<double> changing = {0, 0, 1, 1, 1, 1, 0, 0, 0};
+  EXPECT_EQ(law_values(trace, straight, "trace |= direction == left;\n").values, changing)
+      << "left (1) while changing";
+  const SignalValues flag = law_values(trace, straight, "trace |= isLaneChanging;\n");
+  EXPECT_EQ(flag.values, changing);
+  EXPECT_TRUE(flag.discrete);
+
+  // The same the other way: east_1 to east_0 is to the right (2).
+  Trace back = law_trace(straight, 9);
+  for (std::size_t i = 0; i < 4; ++i)
+    put_on_lane(straight, back.actors[0], i, "east_1", 50 + static_cast<double>(i), -offsets[i]);
+  for (std::size_t i = 4; i < 9; ++i)
+    put_on_lane(straight, back.actors[0], i, "east_0", 50 + static_cast<double>(i), -offsets[i]);
+  EXPECT_EQ(law_values(back, straight, "trace |= direction == right;\n").values,
+            (std::vector<double>{0, 0, 2, 2, 2, 2, 0, 0, 0}));
+}
+
+TEST_F(LawSignalsTest, TurningAroundIsAHeadingReversalWithinEightSecondsOfATurn) {
+  // Samples 2 s apart on the left-turn connector; the heading is set by hand.
+  Trace trace = law_trace(crossroads, 6, 2);
+  for (std::size_t i = 0; i < 6; ++i)
+    put_on_lane(crossroads, trace.actors[0], i, "west_north_1", 1 + static_cast<double>(i));
+  trace.actors[0].heading = {0, 0.9, 1.6, 2.4, 3.2, 3.2};
+  // 3.2 - 0 wraps to -3.08, more than 135 degrees (2.36 rad); 3.2 - 0.9 = 2.3 is less.
+  EXPECT_EQ(law_values(trace, crossroads, "trace |= isTurningAround;\n").values,
+            (std::vector<double>{1, 0, 0, 0, 0, 0}));
+  trace.actors[0].heading = {0, 1.0, 1.2, 1.4, 1.6, 3.2};
+  EXPECT_EQ(law_values(trace, crossroads, "trace |= isTurningAround;\n").values,
+            (std::vector<double>(6, 0)))
+      << "reversed only after 10 s";
+  // Without a turn signalled, no turning around (LawBreaker's rule).
+  Trace on_road = law_trace(straight, 3, 2);
+  for (std::size_t i = 0; i < 3; ++i) put_on_lane(straight, on_road.actors[0], i, "east_0", 100);
+  on_road.actors[0].heading = {0, 1.6, 3.2};
+  EXPECT_EQ(law_values(on_road, straight, "trace |= isTurningAround;\n").values,
+            (std::vector<double>(3, 0)));
+}
+
+TEST_F(LawSignalsTest, CurrentLaneDirectionCodesTheTurnsTheLaneAllows) {
+  const std::vector<std::string> lanes = {"west_in_0",    "west_in_1",   "west_north_1",
+                                          "west_south_0", "west_east_0", "east_out_0"};
+  Trace trace = law_trace(crossroads, lanes.size() + 1);
+  for (std::size_t i = 0; i < lanes.size(); ++i)
+    put_on_lane(crossroads, trace.actors[0], i, lanes[i], 3);
+  const SignalValues codes =
+      law_values(trace, crossroads, "trace |= currentLane.direction == left;\n");
+  // forward-or-right, forward-or-left, left, right, forward, forward; 0 off the lanes.
+  EXPECT_EQ(codes.values, (std::vector<double>{5, 4, 1, 2, 0, 0, 0}));
+  EXPECT_TRUE(codes.discrete);
+
+  const RoadMap single = load_map("crossroads?lanes=1", map_search_path({}));
+  const RoadMap junction = load_map("t_junction", map_search_path({}));
+  const RoadMap single_junction = load_map("t_junction?lanes=1", map_search_path({}));
+  auto code = [&](const RoadMap& map, const std::string& lane) {
+    Trace one = law_trace(map, 1);
+    put_on_lane(map, one.actors[0], 0, lane, 3);
+    return law_values(one, map, "trace |= currentLane.direction == left;\n").values.at(0);
+  };
+  EXPECT_EQ(code(single, "west_in_0"), 6) << "any way";
+  EXPECT_EQ(code(junction, "south_in_0"), 2) << "right only";
+  EXPECT_EQ(code(junction, "south_in_1"), 1) << "left only";
+  EXPECT_EQ(code(single_junction, "south_in_0"), 7) << "left or right";
+}
+
+TEST_F(LawSignalsTest, PriorityNPCAheadIsAVehicleTooCloseAheadOrCrossingWhileTurning) {
+  auto priority = [&](const Trace& trace, const RoadMap& map) {
+    const SignalValues values = law_values(trace, map, "trace |= PriorityNPCAhead;\n");
+    EXPECT_TRUE(values.discrete);
+    return values.values;
+  };
+  // (a) The vehicle ahead in the lane within 3 m.
+  Trace close = law_trace(straight, 2);
+  for (std::size_t i = 0; i < 2; ++i) put_on_lane(straight, close.actors[0], i, "east_0", 50);
+  put_on_lane(straight, close.actors[1], 0, "east_0", 56);  // 1.7 m ahead
+  put_on_lane(straight, close.actors[1], 1, "east_0", 60);  // 5.7 m ahead
+  EXPECT_EQ(priority(close, straight), (std::vector<double>{1, 0}));
+
+  // (b) Crossing traffic ahead within 30 m while turning left, from either side: headings
+  // +90 and 270 degrees (the latter is -90 once wrapped; LawBreaker's unwrapped difference
+  // misses it).
+  auto turning = [&](const std::string& connector) {
+    Trace trace = law_trace(crossroads, 2);
+    put_on_lane(crossroads, trace.actors[0], 0, "west_in_1", 140);
+    put_on_lane(crossroads, trace.actors[0], 1, connector, 1);
+    trace.actors[0].x[1] = trace.actors[0].x[0];  // still at the stop line: the poses stay
+    trace.actors[0].y[1] = trace.actors[0].y[0];
+    trace.actors[0].heading[1] = 0;
+    return trace;
+  };
+  Trace left = turning("west_north_1");
+  left.actors[1].x = {1.75, 5000};
+  left.actors[1].y = {-10, 5000};
+  left.actors[1].heading = {std::numbers::pi / 2, 0};
+  left.actors[2].x = {5000, -1.75};
+  left.actors[2].y = {5000, 14};
+  left.actors[2].heading = {0, 3 * std::numbers::pi / 2};
+  EXPECT_EQ(priority(left, crossroads), (std::vector<double>{1, 1}));
+  Trace straight_on = turning("west_east_1");
+  straight_on.actors[1] = left.actors[1];
+  straight_on.actors[2] = left.actors[2];
+  EXPECT_EQ(priority(straight_on, crossroads), (std::vector<double>{0, 0}))
+      << "no turn, no crossing conflict";
+  Trace behind = turning("west_north_1");
+  behind.actors[1].x = {-30, -30};  // behind the ego's rear bumper
+  behind.actors[1].y = {-10, -10};
+  behind.actors[1].heading = {std::numbers::pi / 2, std::numbers::pi / 2};
+  EXPECT_EQ(priority(behind, crossroads), (std::vector<double>{0, 0}));
+}
+
+TEST_F(LawSignalsTest, PriorityNPCAheadIsAFasterCarBehindOnTheSideTheEgoChangesTo) {
+  // The ego moves from east_0 to east_1 (to the left) over samples 0 and 1.
+  auto changing_left = [&](double npc_y, double npc_speed) {
+    Trace trace = law_trace(straight, 3);
+    put_on_lane(straight, trace.actors[0], 0, "east_0", 50, 0.8);
+    put_on_lane(straight, trace.actors[0], 1, "east_1", 51, -1.4);
+    put_on_lane(straight, trace.actors[0], 2, "east_1", 52);
+    trace.actors[0].speed = {10, 10, 10};
+    for (std::size_t i = 0; i < 3; ++i) {
+      trace.actors[1].x[i] = 42 + static_cast<double>(i);
+      trace.actors[1].y[i] = npc_y;
+      trace.actors[1].heading[i] = 0;
+      trace.actors[1].speed[i] = npc_speed;
+    }
+    return law_values(trace, straight, "trace |= PriorityNPCAhead;\n").values;
+  };
+  EXPECT_EQ(changing_left(-1.75, 15), (std::vector<double>{1, 1, 0})) << "behind on the left";
+  EXPECT_EQ(changing_left(-1.75, 5), (std::vector<double>{0, 0, 0})) << "slower";
+  EXPECT_EQ(changing_left(-8.75, 15), (std::vector<double>{0, 0, 0}))
+      << "on the right, where LawBreaker's strip named left lies";
+}
+
+TEST_F(LawSignalsTest, PriorityPedsAheadIsAPedestrianAheadOrOnTheSideTurnedTo) {
+  auto pedestrian = [&](Trace trace, const RoadMap& map, double x, double y) {
+    TraceActor& walker = trace.actors[5];
+    walker.x.assign(trace.sample_count(), x);
+    walker.y.assign(trace.sample_count(), y);
+    const SignalValues values = law_values(trace, map, "trace |= PriorityPedsAhead;\n");
+    EXPECT_TRUE(values.discrete);
+    return values.values.at(0);
+  };
+  // Going straight on: within 3 m ahead (the ego's front is at x = 52).
+  Trace ahead = law_trace(straight, 1);
+  put_on_lane(straight, ahead.actors[0], 0, "east_0", 50);
+  EXPECT_EQ(pedestrian(ahead, straight, 54, -5.25), 1);
+  EXPECT_EQ(pedestrian(ahead, straight, 60, -5.25), 0) << "7.7 m ahead";
+  EXPECT_EQ(pedestrian(ahead, straight, 44, -5.25), 0) << "behind";
+
+  // Turning: within 10 m, in the 30 m square ahead on the side of the turn.
+  auto turning = [&](const std::string& from, const std::string& connector) {
+    Trace trace = law_trace(crossroads, 2);
+    put_on_lane(crossroads, trace.actors[0], 0, from, 140);
+    put_on_lane(crossroads, trace.actors[0], 1, connector, 1);
+    return trace;
+  };
+  const Trace left = turning("west_in_1", "west_north_1");  // the ego at (-20, -1.75)
+  EXPECT_EQ(pedestrian(left, crossroads, -15, 3), 1);
+  EXPECT_EQ(pedestrian(left, crossroads, -15, -7), 0) << "on the right";
+  const Trace right = turning("west_in_0", "west_south_0");  // the ego at (-20, -5.25)
+  EXPECT_EQ(pedestrian(right, crossroads, -15, -10), 1);
+  EXPECT_EQ(pedestrian(right, crossroads, -15, 0), 0) << "on the left";
+}
+
+TEST_F(LawSignalsTest, NPCOppositeIsTheNearestOncomingVehicleAhead) {
+  // The ego on east_1; west_1 and west_0 run the other way beside it.
+  Trace trace = law_trace(straight, 3);
+  for (std::size_t i = 0; i < 3; ++i) put_on_lane(straight, trace.actors[0], i, "east_1", 50);
+  for (std::size_t i = 0; i < 2; ++i) {
+    put_on_lane(straight, trace.actors[1], i, "west_1", 420);  // x = 80
+    put_on_lane(straight, trace.actors[3], i, "west_1", 470);  // x = 30, behind
+    put_on_lane(straight, trace.actors[4], i, "east_0", 70);   // ahead, the same way
+  }
+  put_on_lane(straight, trace.actors[2], 0, "west_0", 430);  // x = 70, on the far lane
+  trace.actors[1].speed = {8, 8, 0};
+  trace.actors[2].speed = {6, 0, 0};
+  const std::vector<double> distance =
+      law_values(trace, straight, "trace |= NPCOpposite(20);\n").values;
+  EXPECT_NEAR(distance[0], std::hypot(70 - 2.3 - 52, 4.35 + 0.75), 1e-9);
+  EXPECT_NEAR(distance[1], std::hypot(80 - 2.3 - 52, 0.85 + 0.75), 1e-9);
+  EXPECT_DOUBLE_EQ(distance[2], 1000) << "none";
+  EXPECT_EQ(law_values(trace, straight, "trace |= NPCOpposite.speed < 1;\n").values,
+            (std::vector<double>{6, 8, 0}));
+
+  // In a junction the lanes cross: a car coming the other way across the junction, while the
+  // ego waits to turn left.
+  Trace junction = law_trace(crossroads, 2);
+  put_on_lane(crossroads, junction.actors[0], 0, "west_in_1", 140);
+  put_on_lane(crossroads, junction.actors[0], 1, "west_north_1", 1);
+  put_on_lane(crossroads, junction.actors[1], 0, "east_west_1", 5);  // at (5, 1.75)
+  const std::vector<double> across =
+      law_values(junction, crossroads, "trace |= NPCOpposite(20);\n").values;
+  EXPECT_NEAR(across[0], std::hypot(5 - 2.3 + 18, 0.85 + 0.75), 1e-9);
+}
+
+TEST_F(LawSignalsTest, ATrafficJamIsThreeStoppedVehiclesInTheJunctionAhead) {
+  Trace trace = law_trace(crossroads, 3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    put_on_lane(crossroads, trace.actors[0], i, "west_in_0", 100);
+    put_on_lane(crossroads, trace.actors[1], i, "south_north_0", 3);
+    put_on_lane(crossroads, trace.actors[2], i, "south_north_1", 8);
+    put_on_lane(crossroads, trace.actors[3], i, "east_west_0", 12);
+  }
+  trace.actors[3].speed = {0.5, 2, 0};
+  trace.actors[3].lane[2] = -1;  // off the lanes, its centre still in the junction box
+  const SignalValues jam = law_values(trace, crossroads, "trace |= isTrafficJam;\n");
+  EXPECT_EQ(jam.values, (std::vector<double>{1, 0, 1}));
+  EXPECT_TRUE(jam.discrete);
+}
+
+TEST_F(LawSignalsTest, SpeedLimitsAreTheScenariosOrTheMapsInKilometresPerHour) {
+  Trace trace = law_trace(straight, 3);
+  put_on_lane(straight, trace.actors[0], 0, "east_0", 50);
+  put_on_lane(straight, trace.actors[0], 1, "east_1", 50);
+  trace.actors[0].lane[2] = -1;
+  const std::string traffic = "{}; {SpeedLimit(\"east_0\", (5, 20))};";
+  // The spec's left side is `speed`: the limit is the right side's term.
+  auto limit = [&](const std::string& name, const std::string& environment) {
+    const test::ParsedScenario parsed =
+        parse_scenario(scenario_with(environment, "trace |= speed <= " + name + ";\n"));
+    const TraceSignals signals(trace, parsed.scenario, parsed.parameters, straight);
+    return signals.leaf(parsed.scenario.specs.at(0).formula.terms.at(1)).values;
+  };
+  // The scenario's limit on east_0, the map's on east_1, LawBreaker's placeholders off the lanes.
+  const std::vector<double> upper = limit("speedLimit.upperLimit", traffic);
+  const std::vector<double> lower = limit("speedLimit.lowerLimit", traffic);
+  const std::vector<double> expected_upper = {72, 22.2 * 3.6, 1000}, expected_lower = {18, 0, 0};
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(upper[i], expected_upper[i], 1e-9) << i;
+    EXPECT_NEAR(lower[i], expected_lower[i], 1e-9) << i;
+  }
+  EXPECT_NEAR(limit("speedLimit.upperLimit", "")[0], 22.2 * 3.6, 1e-9) << "no SpeedLimit";
+}
+
+TEST_F(LawSignalsTest, VisibilityIsThePerceptionRangeForVehiclesInTheWeather) {
+  const Trace trace = law_trace(straight, 2);
+  auto visibility = [&](const std::string& environment) {
+    const SignalValues values =
+        law_values(trace, straight, "trace |= visibility <= 50;\n", environment);
+    EXPECT_EQ(values.values[0], values.values[1]);
+    return values.values[0];
+  };
+  EXPECT_DOUBLE_EQ(visibility(""), 150) << "clear daylight";
+  EXPECT_NEAR(visibility("Environment(12:00, {fog: 0.5})"), 150 * std::pow(0.15, 0.5), 1e-9);
+  EXPECT_NEAR(visibility("Environment(12:00, {rain: 0.5, snow: 0.2})"), 150 * 0.85 * 0.9, 1e-9);
+  EXPECT_NEAR(visibility("Environment(23:00)"), 150 * 0.8, 1e-9) << "night";
+}
+
+TEST_F(LawSignalsTest, GearIsDriveAndBrakeIsTheShareOfFullBraking) {
+  Trace trace = law_trace(straight, 4);
+  trace.actors[0].acceleration = {-4, 2, -20, 0};  // a car brakes at most at 8 m/s^2
+  const SignalValues gear = law_values(trace, straight, "trace |= gear == 2;\n");
+  EXPECT_EQ(gear.values, std::vector<double>(4, 1));
+  EXPECT_TRUE(gear.discrete);
+  const SignalValues brake = law_values(trace, straight, "trace |= brake > 10;\n");
+  EXPECT_EQ(brake.values, (std::vector<double>{50, 0, 100, 0}));
+  EXPECT_FALSE(brake.discrete);
+}
+
 TEST_F(LawSignalsTest, SignalsTheOracleDoesNotComputeAreErrorsAtTheTerm) {
   const Trace trace = law_trace(straight, 2);
+  // They need the ego's vehicle signals (lamps, horn, indicator), which no run records, or
+  // map facts no map has.
   for (const std::string name :
-       {"hornOn", "isLaneChanging", "PriorityNPCAhead", "NPCOpposite(5)", "gear == 2",
-        "visibility > 50", "speedLimit.upperLimit > 1", "trafficLightAhead.isBlinking"}) {
+       {"hornOn", "highBeamOn", "turnSignal == left", "isOverTaking", "honkingAllowed",
+        "streetLightOn", "specialLocationAhead(5)", "trafficLightAhead.isBlinking"}) {
     const test::ParsedScenario parsed =
         parse_scenario(scenario_with("", "trace |= " + name + ";\n"));
     const TraceSignals signals(trace, parsed.scenario, parsed.parameters, straight);
@@ -305,6 +631,81 @@ TEST_F(LawSignalsTest, AnEgoWaitingAtARedLightSeesItsStopLineAhead) {
   }
   EXPECT_GT(test::spec_robustness(*run.trace, run.parsed, *run.map).at(5), 0)
       << "it does not run the red light";
+}
+
+TEST_F(LawSignalsTest, AnEgoTurningLeftSignalsLeftFromAHundredMetresBeforeTheJunction) {
+  // It waits at the red light (east-west is red for the first 30 s), then turns left.
+  SimulationOptions options;
+  options.duration = 45;
+  const std::string text =
+      "ego = AV((\"west_in_1\"->20, , 10), (\"north_out_1\"->60));\n"
+      "scenario = CreateScenario{load(\"crossroads\"); ego; {}; {}; {};};\n"
+      "Trace trace = EXE(scenario);\n"
+      "trace |= direction == left;\n"
+      "trace |= isLaneChanging;\n"
+      "trace |= isTurningAround;\n"
+      "trace |= currentLane.direction == left;\n";
+  test::SimulatedScenario run = test::simulate_scenario(text, options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  const TraceSignals signals(trace, run.parsed.scenario, run.parsed.parameters, *run.map);
+  auto values = [&](std::size_t spec) {
+    return signals.leaf(run.parsed.scenario.specs.at(spec).formula.terms.at(0)).values;
+  };
+  const std::vector<double> direction = values(0), changing = values(1), around = values(2);
+  const std::vector<double> lane_direction = values(3);
+  const TraceActor& ego = trace.actors[0];
+  bool turned = false;
+  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+    ASSERT_GE(ego.lane[i], 0);
+    const std::string& lane = run.map->lane(static_cast<LaneIndex>(ego.lane[i])).id;
+    if (lane == "west_in_1") {
+      const double to_junction = 150 - ego.s[i] - ego.length / 2;
+      ASSERT_EQ(direction[i], to_junction <= 100 ? 1 : 0) << "at s = " << ego.s[i];
+      ASSERT_EQ(lane_direction[i], 4) << "forward or left";
+    } else if (lane == "west_north_1") {
+      turned = true;
+      ASSERT_EQ(direction[i], 1);
+      ASSERT_EQ(lane_direction[i], 1);
+    } else {
+      ASSERT_EQ(lane, "north_out_1");
+      ASSERT_EQ(direction[i], 0);
+    }
+    ASSERT_EQ(changing[i], 0);
+    ASSERT_EQ(around[i], 0) << "a quarter turn";
+  }
+  EXPECT_TRUE(turned);
+}
+
+// The shared scenest example law38 (TrashFuzz's green, yellow and red light rules at a junction
+// of san_francisco) is judged: every signal it reads is computed.
+TEST_F(LawSignalsTest, TheSharedLaw38ExampleIsJudged) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();
+  const std::filesystem::path file =
+      test::shared_dir() / "examples" / "scenest" / "trashfuzz__codes_testing__law38.scenest";
+  const std::optional<SourceFile> source = read_source_file(file.string());
+  ASSERT_TRUE(source) << file;
+  avunit::ParseResult parsed = avunit::parse(*source);
+  ASSERT_TRUE(parsed.ok()) << format_diagnostics(*source, parsed.diagnostics);
+  const ParameterSpace space = parameter_space(parsed.scenario);
+  const std::vector<double> parameters =
+      decode(space, std::vector<double>(space.dimensions.size(), 0.5));
+  const RoadMap map = load_scenario_map(
+      parsed.scenario.map, MapSearchPath{{test::shared_dir() / "maps" / "apollo"}}, parameters);
+  Diagnostics diagnostics;
+  const std::optional<SimulationSetup> setup =
+      prepare_simulation(parsed.scenario, parameters, map, 0, diagnostics);
+  ASSERT_TRUE(setup) << format_diagnostics(*source, diagnostics);
+  const Trace trace = simulate(map, *setup, {});
+  std::vector<SpecVerdict> verdicts;
+  try {
+    verdicts = judge_trace(parsed.scenario, parameters, trace, map, *source);
+  } catch (const OracleError& error) {
+    FAIL() << error.what();
+  }
+  ASSERT_EQ(verdicts.size(), 1u);
+  EXPECT_EQ(verdicts[0].name, "law38");
+  EXPECT_TRUE(std::isfinite(verdicts[0].robustness)) << verdicts[0].robustness;
 }
 
 }  // namespace

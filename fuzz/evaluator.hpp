@@ -1,0 +1,53 @@
+// What the search explores, independent of scenarios: a box of parameters (the unit cube, one
+// coordinate per dimension) and, at each point, one robustness per objective. Scenarios
+// (ScenarioEvaluator) and the built-in benchmark systems (the ARCH-COMP chasing cars) both
+// implement it, so one search engine drives both.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace scenfuzz {
+
+enum class GeneKind { continuous, angle, discrete };
+
+struct SearchDimension {
+  std::string name;  // "npc1.init.speed"
+  GeneKind kind = GeneKind::continuous;
+  std::size_t choices = 0;  // discrete: how many; the coordinate's cell picks one (decode())
+  std::string group;        // the actor the dimension belongs to ("npc1"), for crossover
+                            // that swaps whole actors; empty when none
+};
+
+struct Evaluation {
+  // One per objective, in objectives() order; empty when the point was infeasible or failed.
+  std::vector<double> robustness;
+  // Set when the point was rejected before any simulation (actors overlapping at t = 0, a
+  // position off every lane): such points do not count against the budget.
+  std::string infeasible;
+  // Set when the evaluation ran but could not be judged (an unplannable path): it counts
+  // against the budget and has no robustness.
+  std::string failure;
+  // What distinguishes this outcome from others with the same objective violated, for
+  // de-duplicating findings (the colliding pair and sides); empty when only the point does.
+  std::string signature;
+  double wall_seconds = 0;
+
+  bool feasible() const { return infeasible.empty(); }
+  bool judged() const { return infeasible.empty() && failure.empty(); }
+};
+
+class Evaluator {
+ public:
+  virtual ~Evaluator() = default;
+  virtual std::vector<SearchDimension> dimensions() const = 0;
+  virtual std::vector<std::string> objectives() const = 0;
+  // The evaluation of `unit_point` with every random draw seeded from `seed`. Called from
+  // several threads at once: implementations keep no mutable shared state.
+  virtual Evaluation evaluate(std::span<const double> unit_point, std::uint64_t seed) const = 0;
+};
+
+}  // namespace scenfuzz

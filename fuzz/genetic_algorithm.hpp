@@ -1,0 +1,129 @@
+// The default search (--algo ga): a generational genetic algorithm over the unit cube with native
+// continuous, angle and discrete genes, a crossover that swaps whole actors, elitism, and restarts
+// on stagnation, so that a falsification run keeps looking for new violations in new regions
+// instead of polishing one.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <set>
+#include <span>
+#include <vector>
+
+#include "fuzz/evaluator.hpp"
+#include "fuzz/search_strategy.hpp"
+#include "sampler/point_samplers.hpp"
+#include "sampler/random.hpp"
+
+namespace scenfuzz {
+
+struct GeneticAlgorithmOptions {
+  // Individuals per generation. 0 chooses clamp(4 + 2d, 10, 50), then at most budget / 4 (but at
+  // least 4): enough individuals per dimension for blending to keep its spread, at least ten for
+  // tournaments to mean something, at most fifty so that a few hundred simulations still make
+  // several generations, and at least four generations within the budget.
+  std::size_t population = 0;
+  // The best individuals that pass unchanged into the next generation, and survive restarts
+  // (at most half the population). They are not evaluated again.
+  std::size_t elites = 2;
+  // Individuals drawn (with replacement) per tournament; the lowest objective becomes a parent.
+  // Two is the mildest selection pressure, which keeps the population from collapsing early.
+  std::size_t tournament_size = 2;
+  // Probability that a pair of parents is crossed; otherwise the children are mutated copies.
+  double crossover_probability = 0.9;
+  // Probability that a crossed pair swaps one whole actor (the genes of one group) instead of
+  // blending, when the dimensions have such a group: recombines the behaviours of actors that
+  // each came close to a violation on their own.
+  double actor_swap_probability = 0.3;
+  // BLX-alpha: a continuous or angle gene of a child is uniform on its parents' interval widened
+  // by alpha times its width on both sides. 0.5 keeps the population's spread steady on average.
+  double blend_alpha = 0.5;
+  // Expected number of mutated genes per child (each gene mutates with probability rate / d);
+  // 0 turns mutation off.
+  double mutation_rate = 1.0;
+  // Standard deviation of the Gaussian mutation of continuous and angle genes, in unit-cube
+  // units: a tenth of a parameter's range reaches neighbouring behaviours without jumping
+  // across the space.
+  double mutation_scale = 0.1;
+  // Generations without progress after which the population is re-seeded with fresh Latin
+  // hypercube points, keeping the elites. 0: never restart.
+  std::size_t stagnation_generations = 10;
+  // Progress means the best objective dropped by more than tolerance * max(1, |best|).
+  double improvement_tolerance = 1e-3;
+  // Objectives below this level are not progress: once the best is a finding, making it more
+  // negative finds nothing new, so the search moves on after stagnation_generations.
+  // -infinity: every decrease counts.
+  double progress_floor = 0.0;
+  // Cells per unit of every gene in the grid that defines duplicates (at least 1); see
+  // GeneticAlgorithm::remember().
+  std::size_t duplicate_grid = 1000;
+};
+
+// What the algorithm has learnt so far, for tests and progress reports.
+struct GeneticAlgorithmStatus {
+  std::size_t population = 0;   // individuals per generation in use
+  std::size_t generations = 0;  // generations fully observed
+  std::size_t restarts = 0;
+  double best_objective = std::numeric_limits<double>::infinity();
+  UnitPoint best_point;  // empty while no point was judged
+};
+
+// Invariant: a generation is bred only once every individual of the previous one was observed,
+// and all random draws happen while breeding, so the points never depend on how propose() splits
+// a generation into batches.
+class GeneticAlgorithm final : public SearchStrategy {
+ public:
+  GeneticAlgorithm(std::span<const SearchDimension> dimensions, std::uint64_t seed,
+                   std::size_t budget, const GeneticAlgorithmOptions& options = {});
+
+  std::vector<UnitPoint> propose(std::size_t limit) override;
+  void observe(std::span<const Observation> results) override;
+
+  const GeneticAlgorithmStatus& status() const { return status_; }
+
+ private:
+  struct Individual {
+    UnitPoint point;
+    double objective = std::numeric_limits<double>::infinity();
+  };
+
+  void start_generation();
+  void finish_generation();
+  std::vector<UnitPoint> fresh_points(std::size_t count);
+  std::vector<UnitPoint> bred_points(std::size_t count);
+  const Individual& tournament();
+  void blend(UnitPoint& first, UnitPoint& second);
+  void swap_actor(UnitPoint& first, UnitPoint& second);
+  void mutate(UnitPoint& point);
+  void normalise(UnitPoint& point) const;
+  UnitPoint uniform_fresh_point();
+  bool remember(const UnitPoint& point);
+
+  std::vector<SearchDimension> dimensions_;
+  GeneticAlgorithmOptions options_;
+  Random random_;
+  std::size_t elites_ = 0;
+  // Gene indices of each actor that can be swapped (a group that is not every gene).
+  std::vector<std::vector<std::size_t>> actor_genes_;
+  // Parents of the next generation, best first.
+  std::vector<Individual> population_;
+  // The generation being evaluated and how far it has been handed out and observed.
+  std::vector<Individual> generation_;
+  std::size_t handed_out_ = 0;
+  std::size_t observed_ = 0;
+  std::size_t awaiting_ = 0;
+  // Grid cells of every point ever proposed.
+  std::set<std::vector<std::int64_t>> seen_;
+  double progress_reference_ = std::numeric_limits<double>::infinity();
+  std::size_t generations_without_progress_ = 0;
+  bool restart_pending_ = false;
+  GeneticAlgorithmStatus status_;
+};
+
+std::unique_ptr<SearchStrategy> make_genetic_algorithm(std::span<const SearchDimension> dimensions,
+                                                       std::uint64_t seed, std::size_t budget,
+                                                       const GeneticAlgorithmOptions& options = {});
+
+}  // namespace scenfuzz

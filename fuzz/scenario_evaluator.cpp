@@ -1,0 +1,126 @@
+#include "fuzz/scenario_evaluator.hpp"
+
+#include "physics/simulation/initial_overlap.hpp"
+#include "physics/simulation/scenario_setup.hpp"
+
+namespace scenfuzz {
+
+namespace {
+
+bool map_has_parameters(const MapReference& map) {
+  std::vector<int> parameters;
+  for (const NamedValue& parameter : map.parameters)
+    collect_parameters(parameter.value, parameters);
+  return !parameters.empty();
+}
+
+GeneKind gene_kind(ParameterKind kind) {
+  switch (kind) {
+    case ParameterKind::continuous: return GeneKind::continuous;
+    case ParameterKind::angle: return GeneKind::angle;
+    case ParameterKind::discrete: return GeneKind::discrete;
+  }
+  return GeneKind::continuous;
+}
+
+std::string first_error(const Diagnostics& diagnostics) {
+  for (const Diagnostic& diagnostic : diagnostics.all())
+    if (diagnostic.severity == Severity::error) return diagnostic.message;
+  return "the scenario cannot be set up at this point";
+}
+
+}  // namespace
+
+std::string collision_signature(const Trace& trace) {
+  for (const Collision& collision : trace.collisions) {
+    if (collision.first != kEgo && collision.second != kEgo) continue;
+    return trace.actors[collision.first].name + " " +
+           std::string(body_side_name(collision.first_side)) + " / " +
+           trace.actors[collision.second].name + " " +
+           std::string(body_side_name(collision.second_side));
+  }
+  return "";
+}
+
+ScenarioEvaluator::ScenarioEvaluator(const SourceFile& file, const ScenarioTemplate& scenario,
+                                     MapSearchPath search_path, SimulationOptions simulation)
+    : file_(file),
+      scenario_(scenario),
+      space_(parameter_space(scenario)),
+      search_path_(std::move(search_path)),
+      simulation_(std::move(simulation)) {
+  if (!map_has_parameters(scenario.map))
+    fixed_map_ = std::make_shared<const RoadMap>(load_scenario_map(
+        scenario.map, search_path_, std::vector<double>(space_.dimensions.size())));
+}
+
+std::vector<SearchDimension> ScenarioEvaluator::dimensions() const {
+  std::vector<SearchDimension> dimensions;
+  for (const Dimension& dimension : space_.dimensions) {
+    SearchDimension gene;
+    gene.name = dimension.name;
+    gene.kind = gene_kind(dimension.kind);
+    gene.choices = dimension.choices.size();
+    gene.group = dimension.name.substr(0, dimension.name.find('.'));
+    dimensions.push_back(std::move(gene));
+  }
+  return dimensions;
+}
+
+std::vector<std::string> ScenarioEvaluator::objectives() const {
+  if (scenario_.specs.empty()) return {kNoCollisionSpec};
+  std::vector<std::string> names;
+  for (const Spec& spec : scenario_.specs) names.push_back(spec.name);
+  return names;
+}
+
+ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint64_t seed) const {
+  ScenarioRun run;
+  run.values = decode(space_, unit_point);
+  run.map = fixed_map_;
+  if (!run.map) {
+    try {
+      run.map = std::make_shared<const RoadMap>(
+          load_scenario_map(scenario_.map, search_path_, run.values));
+    } catch (const MapError& error) {
+      run.infeasible = error.what();
+      return run;
+    }
+  }
+  Diagnostics diagnostics;
+  const std::optional<SimulationSetup> setup =
+      prepare_simulation(scenario_, run.values, *run.map, seed, diagnostics);
+  if (!setup) {
+    run.infeasible = first_error(diagnostics);
+    return run;
+  }
+  if (std::optional<std::string> overlap = initial_overlap(*setup)) {
+    run.infeasible = *overlap;
+    return run;
+  }
+  SimulationOptions options = simulation_;
+  options.seed = seed;
+  run.trace = simulate(*run.map, *setup, options);
+  if (run.trace->end == EndReason::ego_failure && run.trace->sample_count() == 0) {
+    run.failure = run.trace->events.empty() ? "the ego plugin failed to start"
+                                            : run.trace->events.back().message;
+    return run;
+  }
+  run.verdicts = judge_trace(scenario_, run.values, *run.trace, *run.map, file_);
+  return run;
+}
+
+Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
+                                       std::uint64_t seed) const {
+  const ScenarioRun run = this->run(unit_point, seed);
+  Evaluation evaluation;
+  evaluation.infeasible = run.infeasible;
+  evaluation.failure = run.failure;
+  if (!evaluation.judged()) return evaluation;
+  for (const SpecVerdict& verdict : run.verdicts)
+    evaluation.robustness.push_back(verdict.robustness);
+  evaluation.signature = collision_signature(*run.trace);
+  return evaluation;
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,65 @@
+// A scenario as the search sees it: the template's parameters are the dimensions, its specs the
+// objectives (or the collision oracle's `no_collision` when it has none), and evaluating a point
+// means placing and planning the scenario there (rejecting it as infeasible when that fails or
+// bodies overlap at t = 0), simulating it and judging the trace.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fuzz/evaluator.hpp"
+#include "lang/scenario.hpp"
+#include "lang/source_file.hpp"
+#include "oracle/judge.hpp"
+#include "physics/map/map_source.hpp"
+#include "physics/map/road_map.hpp"
+#include "physics/simulation/simulation.hpp"
+#include "sampler/parameter_space.hpp"
+
+namespace scenfuzz {
+
+// One point simulated in full: what a finding is written from.
+struct ScenarioRun {
+  std::vector<double> values;  // parameter values at the point
+  std::shared_ptr<const RoadMap> map;
+  std::optional<Trace> trace;  // none when the point was infeasible
+  std::vector<SpecVerdict> verdicts;
+  std::string infeasible;  // why the point was rejected before simulating
+  std::string failure;     // why it ran but could not be judged
+};
+
+class ScenarioEvaluator : public Evaluator {
+ public:
+  // `file` and `scenario` must outlive the evaluator. The map is loaded once when it has no
+  // search parameters (throws MapError when it cannot be), else at every evaluation.
+  // `simulation.seed` is replaced by each evaluation's seed.
+  ScenarioEvaluator(const SourceFile& file, const ScenarioTemplate& scenario,
+                    MapSearchPath search_path, SimulationOptions simulation);
+
+  std::vector<SearchDimension> dimensions() const override;
+  std::vector<std::string> objectives() const override;
+  // Throws OracleError when a spec cannot be judged on the trace (the same for every point).
+  Evaluation evaluate(std::span<const double> unit_point, std::uint64_t seed) const override;
+
+  // The same evaluation, keeping everything it produced.
+  ScenarioRun run(std::span<const double> unit_point, std::uint64_t seed) const;
+
+  const ParameterSpace& space() const { return space_; }
+
+ private:
+  const SourceFile& file_;
+  const ScenarioTemplate& scenario_;
+  ParameterSpace space_;
+  MapSearchPath search_path_;
+  SimulationOptions simulation_;
+  std::shared_ptr<const RoadMap> fixed_map_;
+};
+
+// What tells findings of one objective apart beyond their points: the ego's first collision as
+// "ego front / npc1 rear"; empty when the ego collided with nothing.
+std::string collision_signature(const Trace& trace);
+
+}  // namespace scenfuzz
