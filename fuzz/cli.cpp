@@ -170,6 +170,82 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "satisfied (robustness >= 0), 1 violated (< 0), 2 a bad command line, or a formula or "
       "log that cannot be read or has errors.");
 
+  BenchCommandOptions bench_options;
+  std::string bench_algorithm;
+  CLI::App* bench = app.add_subcommand(
+      "bench",
+      "Measure the search: strategies on bundled scenarios, the ARCH-COMP chasing-cars "
+      "benchmark, the speed-up of parallel evaluation; prints tables");
+  bench->require_subcommand(1);
+  bench->footer(
+      "Results depend only on the seeds, never on -j; figures and how they were measured: "
+      "docs/performance.md.");
+  CLI::App* bench_falsification = bench->add_subcommand(
+      "falsification",
+      "For each scenario and algorithm, search with seeds 1..N: median simulations to the first "
+      "finding, findings per 500 simulations, and random's median over ga's");
+  bench_falsification
+      ->add_option("SCENARIO", bench_options.scenarios,
+                   "Logical scenarios (default: five bundled ones in corpora/avunit, run from "
+                   "the repository's root)")
+      ->type_name("");
+  bench_falsification->add_option("--seeds", bench_options.seeds, "Runs per algorithm (default 20)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("N");
+  bench_falsification
+      ->add_option("--budget", bench_options.budget, "Simulations per run (default 500)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("N");
+  bench_falsification
+      ->add_option("--algos", bench_options.algorithms,
+                   "Comma-separated algorithms as for --algo (default "
+                   "ga,nlopt:GN_ISRES,halton,random)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->type_name("LIST");
+  bench_falsification
+      ->add_option("-j,--jobs", bench_options.jobs,
+                   "Searches run at once, one thread each (default: all cores)")
+      ->type_name("N");
+  CLI::App* bench_cc = bench->add_subcommand(
+      "cc",
+      "ARCH-COMP chasing cars under the competition's protocol: per requirement, runs that stop "
+      "at the first falsifying simulation; FR and mean/median simulations beside the published "
+      "figures");
+  bench_cc
+      ->add_option("--runs", bench_options.runs, "Runs per requirement, seeds 1..N (default 10)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("N");
+  bench_cc
+      ->add_option("--budget", bench_options.budget, "Simulations per run at most (default 1500)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("N");
+  bench_cc->add_option("--algo", bench_algorithm, "Search algorithm, as for --algo (default ga)")
+      ->type_name("NAME");
+  bench_cc
+      ->add_option("--requirements", bench_options.requirements,
+                   "Comma-separated requirements (default CC1,CC2,CC3,CC4,CC5,CCx)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember({"CC1", "CC2", "CC3", "CC4", "CC5", "CCx"}))
+      ->type_name("LIST");
+  bench_cc->add_option("-j,--jobs", bench_options.jobs, "Runs at once (default: all cores)")
+      ->type_name("N");
+  CLI::App* bench_parallel = bench->add_subcommand(
+      "parallel",
+      "Run one search with -j 1 and with -j 2: wall time of each, the speed-up, and whether "
+      "both found the same findings");
+  bench_parallel
+      ->add_option("SCENARIO", bench_options.scenarios,
+                   "Logical scenario (default corpora/avunit/lead_vehicle_hard_brake.avu)")
+      ->expected(0, 1)
+      ->type_name("");
+  bench_parallel->add_option("--budget", bench_options.budget, "Simulations per run (default 200)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("N");
+  bench_parallel->add_option("--algo", bench_algorithm, "Search algorithm (default ga)")
+      ->type_name("NAME");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -182,6 +258,13 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   if (map->parsed()) return run_map(map_options, out, err);
   if (run_command->parsed()) return run_run(run_options, out, err);
   if (stl->parsed()) return run_stl(stl_options, out, err);
+  if (bench->parsed()) {
+    if (!bench_algorithm.empty()) bench_options.algorithms = {bench_algorithm};
+    bench_options.kind = bench_cc->parsed()         ? BenchKind::chasing_cars
+                         : bench_parallel->parsed() ? BenchKind::parallel
+                                                    : BenchKind::falsification;
+    return run_bench(bench_options, out, err);
+  }
   if (fuzz_options.path.empty()) {
     err << "scenfuzz: error: name a scenario to search (scenfuzz --budget 500 base.avu) or a "
            "subcommand\nRun with --help for more information.\n";

@@ -86,4 +86,22 @@ struct FuzzCommandOptions {
 // Exit status kExitSuccess (no finding), kExitViolated (findings), kExitBadInput / kExitUsage.
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err);
 
+enum class BenchKind { falsification, chasing_cars, parallel };
+
+struct BenchCommandOptions {
+  BenchKind kind = BenchKind::falsification;
+  std::optional<std::size_t> budget;    // --budget: 500 (falsification), 1500 (cc), 200 (parallel)
+  std::vector<std::string> algorithms;  // --algos / --algo; empty: the bench's default
+  std::size_t seeds = 20;               // falsification: --seeds, runs with seeds 1..N
+  std::size_t runs = 10;                // cc: --runs, runs with seeds 1..N per requirement
+  std::vector<std::string> requirements;  // cc: --requirements; empty: CC1..CC5, CCx
+  std::size_t jobs = 0;                   // -j: searches at once (falsification, cc); 0 = cores
+  std::vector<std::string> scenarios;     // falsification, parallel; empty: the bundled choice
+};
+
+// `scenfuzz bench falsification|cc|parallel`: measures the search and prints aligned tables to
+// `out` (progress to `err` on a terminal only). kExitSuccess, kExitUsage for bad arguments,
+// kExitBadInput for a scenario that cannot be read.
+int run_bench(const BenchCommandOptions& options, std::ostream& out, std::ostream& err);
+
 }  // namespace scenfuzz

@@ -121,6 +121,15 @@ double exit_s(const Run& run, std::size_t k) {
   return run.trace.actors[kEgo].s[run.visits.last_sample[k]];
 }
 
+// The turn of route segment k, a junction lane, or of the last of the segments after it in the
+// same junction (a roundabout's entry, ring and exit): the lane by which the route leaves.
+double route_passage_turn(const Run& run, std::size_t k) {
+  const std::vector<RouteSegment>& segments = run.rest->segments;
+  const std::optional<std::uint32_t> junction = run.map.lane(segments[k].lane).junction;
+  while (k + 1 < segments.size() && run.map.lane(segments[k + 1].lane).junction == junction) ++k;
+  return signal_code(run.turns.turn(segments[k].lane, segments[k].s_begin, segments[k].s_end));
+}
+
 // Past the lanes the run shows: the ego's route to its target, or without one along successors
 // while the way is unambiguous, to the first junction, whose lanes must then all turn the same
 // way for the turn to be known. `distance` reaches the end of the last lane of the run.
@@ -128,9 +137,7 @@ double turn_beyond_run(const Run& run, double distance) {
   if (run.rest) {
     const std::vector<RouteSegment>& segments = run.rest->segments;
     for (std::size_t k = 1; k < segments.size() && distance <= kTurnSignalDistance; ++k) {
-      if (run.map.lane(segments[k].lane).junction)
-        return signal_code(
-            run.turns.turn(segments[k].lane, segments[k].s_begin, segments[k].s_end));
+      if (run.map.lane(segments[k].lane).junction) return route_passage_turn(run, k);
       distance += segments[k].s_end - segments[k].s_begin;
     }
     return kForward;
@@ -153,22 +160,35 @@ double turn_beyond_run(const Run& run, double distance) {
   return kForward;
 }
 
-// The turn of the junction lane the ego is on, or of the next one on its path when that begins
-// within kTurnSignalDistance of its front bumper.
+// The turn of the passage through the junction the ego enters at visit k: of the junction lane
+// it leaves the junction by. Junction lanes overlap and the lane column can move from one to
+// another (from the straight-on lane to the left turn that begins beside it), so that is the
+// last of the consecutive visits in the junction; where the run ends in the junction, the last
+// junction lane of its route on.
+double passage_turn(const Run& run, std::size_t k) {
+  const std::vector<LaneIndex>& lanes = run.visits.lanes;
+  const std::optional<std::uint32_t> junction = run.map.lane(lanes[k]).junction;
+  while (k + 1 < lanes.size() && run.map.lane(lanes[k + 1]).junction == junction) ++k;
+  if (k + 1 == lanes.size() && run.rest && run.rest->segments.size() > 1 &&
+      run.map.lane(run.rest->segments[1].lane).junction == junction)
+    return route_passage_turn(run, 1);
+  return signal_code(run.turns.turn(lanes[k], entry_s(run, k), exit_s(run, k)));
+}
+
+// The turn of the junction the ego is in, or of the next one on its path when that begins within
+// kTurnSignalDistance of its front bumper.
 double turn_ahead(const Run& run, std::size_t i) {
   const std::optional<std::size_t> visit = run.visits.visit_at[i];
   if (!visit) return kForward;
   const std::vector<LaneIndex>& lanes = run.visits.lanes;
   const TraceActor& ego = run.trace.actors[kEgo];
   const Lane& lane = run.map.lane(lanes[*visit]);
-  if (lane.junction)
-    return signal_code(run.turns.turn(lanes[*visit], entry_s(run, *visit), exit_s(run, *visit)));
+  if (lane.junction) return passage_turn(run, *visit);
   double distance = driven_length(lane, ego.s[i], exit_s(run, *visit)) - ego.length / 2;
   for (std::size_t k = *visit + 1; k < lanes.size(); ++k) {
     if (distance > kTurnSignalDistance) return kForward;
     const Lane& next = run.map.lane(lanes[k]);
-    if (next.junction)
-      return signal_code(run.turns.turn(lanes[k], entry_s(run, k), exit_s(run, k)));
+    if (next.junction) return passage_turn(run, k);
     distance += driven_length(next, entry_s(run, k), exit_s(run, k));
   }
   return turn_beyond_run(run, distance);

@@ -2,21 +2,13 @@
 // a CSV log (worked out by hand here), the per-sample signal, the note that explains a violation,
 // the exit codes, and how bad formulas, bad logs and missing files are reported.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "command_runner.hpp"
 #include "lang/number_format.hpp"
-
-#ifndef SCENFUZZ_EXECUTABLE
-#error "SCENFUZZ_EXECUTABLE must name the scenfuzz binary (see tests/CMakeLists.txt)"
-#endif
 
 namespace {
 
@@ -48,58 +40,10 @@ constexpr const char* kYStaysHighLog =
 // Four samples for windows that run past the end of the log.
 constexpr const char* kShortLog = "time,x\n0,1\n1,0.75\n2,0.25\n3,1\n";
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
+using scenfuzz::test::Outcome;
 
-std::string quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-class StlCommandTest : public ::testing::Test {
+class StlCommandTest : public scenfuzz::test::CommandTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("scenfuzz_stl_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-  }
-
-  // Runs scenfuzz with `args`, capturing its exit code, stdout and stderr.
-  Outcome scenfuzz(const std::vector<std::string>& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    std::string command = quote(SCENFUZZ_EXECUTABLE);
-    for (const std::string& arg : args) command += " " + quote(arg);
-    command += " </dev/null >" + quote(out.string()) + " 2>" + quote(err.string());
-    const int status = std::system(command.c_str());
-    Outcome run;
-    if (status != -1 && WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
-    run.out = slurp(out);
-    run.err = slurp(err);
-    return run;
-  }
-
   Outcome stl(const std::string& formula, const std::string& log_text,
               std::vector<std::string> extra = {}) {
     std::vector<std::string> args = {"stl", "--spec", formula, "--trace",
@@ -107,8 +51,6 @@ class StlCommandTest : public ::testing::Test {
     args.insert(args.end(), extra.begin(), extra.end());
     return scenfuzz(args);
   }
-
-  fs::path dir_;
 };
 
 TEST_F(StlCommandTest, SatisfiedPrintsTheRobustnessAndExitsZero) {

@@ -288,6 +288,31 @@ TEST_F(LawSignalsTest, DirectionIsTheTurnOfTheNextJunctionLaneWithinAHundredMetr
   put_on_lane(crossroads, straight_on.actors[0], 1, "west_east_0", 3);
   put_on_lane(crossroads, straight_on.actors[0], 2, "east_out_0", 3);
   EXPECT_EQ(direction(straight_on), (std::vector<double>{0, 0, 0}));
+
+  // The straight-on and left-turn connectors overlap where they begin: the lane column can
+  // show the one and then the other. The junction lane the ego leaves the junction by counts.
+  Trace overlapping = law_trace(crossroads, 3);
+  put_on_lane(crossroads, overlapping.actors[0], 0, "west_east_1", 2);
+  put_on_lane(crossroads, overlapping.actors[0], 1, "west_north_1", 5);
+  put_on_lane(crossroads, overlapping.actors[0], 2, "north_out_1", 5);
+  EXPECT_EQ(direction(overlapping), (std::vector<double>{1, 1, 0}));
+}
+
+TEST_F(LawSignalsTest, WithoutTurnTypesTheDirectionIsHowTheJunctionLaneBends) {
+  // The built-in roundabout gives its junction lanes no turn types. Entering from the west and
+  // leaving to the north, the ego leaves the junction by north_exit, which bends right.
+  const RoadMap roundabout = load_map("roundabout", map_search_path({}));
+  Trace trace = law_trace(roundabout, 5);
+  put_on_lane(roundabout, trace.actors[0], 0, "west_in_0", 50);
+  put_on_lane(roundabout, trace.actors[0], 1, "west_entry", 3);
+  put_on_lane(roundabout, trace.actors[0], 2, "ring_0", 100);
+  put_on_lane(roundabout, trace.actors[0], 3, "north_exit", 3);
+  put_on_lane(roundabout, trace.actors[0], 4, "north_out_0", 20);
+  EXPECT_EQ(law_values(trace, roundabout, "trace |= direction == right;\n").values,
+            (std::vector<double>{2, 2, 2, 2, 0}));
+  EXPECT_EQ(law_values(trace, roundabout, "trace |= currentLane.direction == right;\n").values,
+            (std::vector<double>{2, 2, 1, 2, 0}))
+      << "the arm's lane leads into the entry (right); the ring bends left all round";
 }
 
 TEST_F(LawSignalsTest, PastTheRunTheDirectionFollowsTheRouteToTheEgosTarget) {

@@ -1,0 +1,208 @@
+// End-to-end tests of the main job, `scenfuzz [--budget N] FILE`, run as a user runs it: a cut-in
+// yields findings within the budget and a scenario safe by construction none; findings replay to
+// their robustness; the same seed gives the same evaluations and findings for any -j; exit codes
+// and errors for bad input; SIGINT stops cleanly with everything written.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "command_runner.hpp"
+
+namespace scenfuzz {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Outcome;
+using test::slurp;
+
+std::string source_file(const std::string& relative) {
+  return (fs::path(SCENFUZZ_SOURCE_DIR) / relative).string();
+}
+
+const std::string kCutIn = source_file("corpora/avunit/cut_in_straight.avu");
+const std::string kSafe = source_file("tests/fuzz/data/safe_by_construction.avu");
+
+// evaluations.csv without its wall_seconds column, which is the one thing allowed to differ.
+std::string without_wall_times(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line, header, result;
+  std::getline(in, header);
+  std::vector<std::string> names;
+  std::stringstream fields(header);
+  for (std::string name; std::getline(fields, name, ',');) names.push_back(name);
+  const auto wall = static_cast<std::size_t>(std::find(names.begin(), names.end(), "wall_seconds") -
+                                             names.begin());
+  for (result = header + "\n"; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (i != wall) result += cells[i] + ",";
+    result += "\n";
+  }
+  return result;
+}
+
+class FuzzCommandTest : public test::CommandTest {
+ protected:
+  Outcome fuzz(const std::string& scenario, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"--out", (dir_ / "out").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back(scenario);
+    return scenfuzz(args);
+  }
+  nlohmann::json summary() const {
+    return nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
+  }
+};
+
+TEST_F(FuzzCommandTest, ACutInYieldsFindingsWithinTheBudget) {
+  const Outcome run = fuzz(kCutIn, {"--budget", "60", "--seed", "3"});
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  const nlohmann::json summary = this->summary();
+  EXPECT_EQ(summary["complete"], true);
+  EXPECT_EQ(summary["stop"], "budget");
+  EXPECT_EQ(summary["judged"].get<int>() + summary["failed"].get<int>(), 60);
+  ASSERT_GE(summary["findings"].size(), 1u);
+  for (const auto& finding : summary["findings"]) {
+    EXPECT_EQ(finding["spec"], "no_collision");
+    EXPECT_LT(finding["robustness"].get<double>(), 0.0);
+    const fs::path scenario = finding["file"].get<std::string>();
+    EXPECT_TRUE(fs::exists(scenario)) << scenario;
+    fs::path trace = scenario, picture = scenario;
+    EXPECT_TRUE(fs::exists(trace.replace_extension(".csv")));
+    EXPECT_TRUE(fs::exists(picture.replace_extension(".svg")));
+  }
+  // Every evaluation is a row of evaluations.csv (and the header names the parameters).
+  const std::string csv = slurp(dir_ / "out" / "evaluations.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + summary["evaluations"].get<int>());
+  EXPECT_NE(csv.find("ego.init.speed"), std::string::npos);
+  EXPECT_NE(run.out.find("finding"), std::string::npos) << run.out;
+}
+
+TEST_F(FuzzCommandTest, AScenarioSafeByConstructionHasNone) {
+  const Outcome run = fuzz(kSafe, {"--budget", "40"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json summary = this->summary();
+  EXPECT_EQ(summary["findings"].size(), 0u);
+  EXPECT_GT(summary["best"]["no_collision"].get<double>(), 0.0);
+  EXPECT_TRUE(fs::is_empty(dir_ / "out" / "findings"));
+}
+
+TEST_F(FuzzCommandTest, AFindingReplaysToItsRobustness) {
+  ASSERT_EQ(fuzz(kCutIn, {"--budget", "40", "--seed", "5"}).exit_code, 1);
+  const nlohmann::json finding = summary()["findings"][0];
+  const std::string scenario = finding["file"].get<std::string>();
+  // The replay command in the finding's header comment, run as written.
+  const std::string text = slurp(scenario);
+  std::smatch replay;
+  ASSERT_TRUE(
+      std::regex_search(text, replay, std::regex("// replay: scenfuzz run (\\S+) --seed (\\d+)")));
+  EXPECT_EQ(replay[1].str(), scenario);
+  const Outcome run = scenfuzz(
+      {"run", scenario, "--seed", replay[2].str(), "--json", "--out", (dir_ / "replay").string()});
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  const nlohmann::json replayed = nlohmann::json::parse(run.out);
+  EXPECT_NEAR(replayed["specs"][0]["robustness"].get<double>(), finding["robustness"].get<double>(),
+              1e-9);
+  EXPECT_EQ(finding["seed"].get<std::uint64_t>(), std::stoull(replay[2].str()));
+}
+
+TEST_F(FuzzCommandTest, TheSameSeedGivesTheSameFindingsForAnyThreadCount) {
+  for (const char* algorithm : {"ga", "nlopt:GN_ISRES"}) {
+    SCOPED_TRACE(algorithm);
+    std::vector<std::string> results;
+    for (const char* jobs : {"1", "2", "4"}) {
+      const fs::path out = dir_ / (std::string(algorithm).substr(0, 2) + jobs);
+      const Outcome run = scenfuzz({"--budget", "40", "--seed", "11", "--algo", algorithm, "-j",
+                                    jobs, "--out", out.string(), kCutIn});
+      ASSERT_NE(run.exit_code, 2) << run.err;
+      nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+      nlohmann::json findings = summary["findings"];
+      for (auto& finding : findings) finding.erase("file");  // the folder differs
+      results.push_back(without_wall_times(slurp(out / "evaluations.csv")) + findings.dump());
+    }
+    EXPECT_EQ(results[0], results[1]);
+    EXPECT_EQ(results[0], results[2]);
+  }
+}
+
+TEST_F(FuzzCommandTest, BadInputIsAClearErrorWithExitTwo) {
+  const std::string inverted = write("inverted.avu",
+                                     "ego = AV((\"east_0\"->range(60, 20)), (\"east_0\"->400));\n"
+                                     "s = CreateScenario{load(\"straight\"); ego; {}; {}; {};};\n");
+  Outcome run = fuzz(inverted, {"--budget", "10"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("inverted.avu:1:"), std::string::npos) << run.err;
+
+  run = fuzz(kCutIn, {"--spec", "no_such_spec"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("no spec named 'no_such_spec'; its specs are: no_collision"),
+            std::string::npos)
+      << run.err;
+
+  run = fuzz(kCutIn, {"--budget", "0"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--budget must be at least 1"), std::string::npos) << run.err;
+
+  run = fuzz(kCutIn, {"--algo", "simulated_annealing"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("unknown search algorithm 'simulated_annealing'"), std::string::npos)
+      << run.err;
+
+  // An output folder that cannot be created: a file stands where it should go.
+  const std::string blocker = write("blocker", "");
+  run = scenfuzz({"--budget", "5", "--out", blocker + "/out", kCutIn});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("cannot create"), std::string::npos) << run.err;
+
+  run = scenfuzz({"--budget", "5", (dir_ / "missing.avu").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("missing.avu"), std::string::npos) << run.err;
+}
+
+TEST_F(FuzzCommandTest, InterruptStopsCleanlyWithEverythingWritten) {
+  const fs::path out = dir_ / "out";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // Quiet output into files; a budget far beyond what the test waits for.
+    const std::string log = (dir_ / "child.txt").string();
+    std::freopen(log.c_str(), "w", stdout);
+    std::freopen(log.c_str(), "a", stderr);
+    ::execl(SCENFUZZ_EXECUTABLE, SCENFUZZ_EXECUTABLE, "--budget", "10000000", "--algo", "random",
+            "--out", out.c_str(), kCutIn.c_str(), static_cast<char*>(nullptr));
+    std::_Exit(127);
+  }
+  // Wait until the search is under way (its evaluations.csv has rows), then interrupt it.
+  for (int i = 0; i < 200; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (fs::exists(out / "evaluations.csv") && fs::file_size(out / "evaluations.csv") > 0) break;
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_EQ(::kill(child, SIGINT), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal instead of stopping";
+  const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(summary["complete"], true);
+  EXPECT_EQ(summary["stop"], "interrupted");
+  EXPECT_EQ(WEXITSTATUS(status), summary["findings"].empty() ? 0 : 1);
+  for (const auto& finding : summary["findings"])
+    EXPECT_TRUE(fs::exists(finding["file"].get<std::string>()));
+  const std::string csv = slurp(out / "evaluations.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + summary["evaluations"].get<int>());
+}
+
+}  // namespace
+}  // namespace scenfuzz
