@@ -1,7 +1,9 @@
 // scenest's traffic-law signals on a simulated trace. LawBreaker finds road objects "ahead" with a
 // 45-degree fan in front of the car; we follow the lanes instead: the lane the ego is on, then the
 // lanes it drives onto next in the run, then (past what the run shows) every successor, so a
-// stop line on the opposite approach or a car in the next lane is never "ahead".
+// stop line on the opposite approach or a car in the next lane is never "ahead". The ego's
+// manoeuvres (`direction`, ...) are read in law_manoeuvre.cpp, the priority flags in
+// law_priority.cpp.
 #include "oracle/law_signals.hpp"
 
 #include <algorithm>

@@ -298,9 +298,9 @@ TEST_F(LawSignalsTest, DirectionIsTheTurnOfTheNextJunctionLaneWithinAHundredMetr
   EXPECT_EQ(direction(overlapping), (std::vector<double>{1, 1, 0}));
 }
 
-TEST_F(LawSignalsTest, WithoutTurnTypesTheDirectionIsHowTheJunctionLaneBends) {
-  // The built-in roundabout gives its junction lanes no turn types. Entering from the west and
-  // leaving to the north, the ego leaves the junction by north_exit, which bends right.
+TEST_F(LawSignalsTest, InARoundaboutTheDirectionIsTheTurnOfTheLaneItLeavesBy) {
+  // Entering from the west and leaving to the north: the entry and the exit turn right, the
+  // ring (a junction lane too) goes straight on.
   const RoadMap roundabout = load_map("roundabout", map_search_path({}));
   Trace trace = law_trace(roundabout, 5);
   put_on_lane(roundabout, trace.actors[0], 0, "west_in_0", 50);
@@ -311,8 +311,65 @@ TEST_F(LawSignalsTest, WithoutTurnTypesTheDirectionIsHowTheJunctionLaneBends) {
   EXPECT_EQ(law_values(trace, roundabout, "trace |= direction == right;\n").values,
             (std::vector<double>{2, 2, 2, 2, 0}));
   EXPECT_EQ(law_values(trace, roundabout, "trace |= currentLane.direction == right;\n").values,
-            (std::vector<double>{2, 2, 1, 2, 0}))
-      << "the arm's lane leads into the entry (right); the ring bends left all round";
+            (std::vector<double>{2, 2, 0, 2, 0}));
+}
+
+// A map whose junction lanes have no turn types: from `in` (east along y = 0) a quarter circle
+// of radius 10 to the left and one to the right, and a straight connector bent by 20 degrees.
+RoadMap untyped_junction() {
+  MapDescription map;
+  map.name = "untyped";
+  map.source = "test";
+  auto arc = [](double side) {
+    std::vector<MapPoint> points;
+    for (int degrees = 0; degrees <= 90; degrees += 10) {
+      const double angle = degrees * std::numbers::pi / 180;
+      points.push_back({10 * std::sin(angle), side * (10 - 10 * std::cos(angle))});
+    }
+    return points;
+  };
+  auto lane = [](std::string id, std::vector<MapPoint> centre, std::string junction = "") {
+    LaneDescription description;
+    description.id = std::move(id);
+    description.centre_line = std::move(centre);
+    description.junction = std::move(junction);
+    return description;
+  };
+  map.lanes.push_back(lane("in", {{-100, 0}, {0, 0}}));
+  map.lanes.push_back(lane("left", arc(1), "box"));
+  map.lanes.push_back(lane("right", arc(-1), "box"));
+  map.lanes.push_back(
+      lane("kinked", {{0, 0}, {5, 0}, {5 + 5 * std::cos(0.35), 5 * std::sin(0.35)}}, "box"));
+  map.lanes.push_back(lane("north", {{10, 10}, {10, 100}}));
+  map.lanes.push_back(lane("south", {{10, -10}, {10, -100}}));
+  map.lanes[0].successors = {"left", "right", "kinked"};
+  map.lanes[1].successors = {"north"};
+  map.lanes[2].successors = {"south"};
+  map.junctions.push_back({"box", {{0, -12}, {12, -12}, {12, 12}, {0, 12}}});
+  return build_road_map(std::move(map));
+}
+
+TEST_F(LawSignalsTest, WithoutTurnTypesTheDirectionIsHowTheJunctionLaneBends) {
+  const RoadMap map = untyped_junction();
+  auto direction = [&](const std::string& connector, const std::string& out) {
+    Trace trace = law_trace(map, 3);
+    put_on_lane(map, trace.actors[0], 0, "in", 50);
+    put_on_lane(map, trace.actors[0], 1, connector, 3);
+    if (out.empty())
+      trace.actors[0].lane[2] = -1;
+    else
+      put_on_lane(map, trace.actors[0], 2, out, 10);
+    return law_values(trace, map, "trace |= direction == left;\n").values;
+  };
+  EXPECT_EQ(direction("left", "north"), (std::vector<double>{1, 1, 0}));
+  EXPECT_EQ(direction("right", "south"), (std::vector<double>{2, 2, 0}));
+  EXPECT_EQ(direction("kinked", ""), (std::vector<double>{0, 0, 0})) << "20 degrees is no turn";
+
+  Trace on_in = law_trace(map, 1);
+  put_on_lane(map, on_in.actors[0], 0, "in", 50);
+  EXPECT_EQ(law_values(on_in, map, "trace |= currentLane.direction == left;\n").values,
+            std::vector<double>{6})
+      << "forward, left or right";
 }
 
 TEST_F(LawSignalsTest, PastTheRunTheDirectionFollowsTheRouteToTheEgosTarget) {
