@@ -137,6 +137,32 @@ TEST_F(FuzzCommandTest, TheSameSeedGivesTheSameFindingsForAnyThreadCount) {
   }
 }
 
+TEST_F(FuzzCommandTest, OverlappingStartsAreRejectedWithoutSpendingTheBudget) {
+  // Both cars start somewhere on the same 40 m of east_0: about a fifth of the points put them
+  // on top of each other.
+  const std::string scenario =
+      write("overlap.avu",
+            "ego = AV((\"east_0\"->range(20, 60), , 10), (\"east_0\"->300));\n"
+            "npc = Vehicle((\"east_0\"->range(20, 60), , 10));\n"
+            "s = CreateScenario{load(\"straight\"); ego; {npc}; {}; {};};\n");
+  const Outcome run = fuzz(scenario, {"--budget", "30", "--algo", "random", "--json"});
+  ASSERT_NE(run.exit_code, 2) << run.err;
+  const nlohmann::json summary = this->summary();
+  EXPECT_EQ(summary["judged"].get<int>() + summary["failed"].get<int>(), 30);
+  EXPECT_GT(summary["infeasible"].get<int>(), 0);
+  EXPECT_EQ(summary["evaluations"].get<int>(), 30 + summary["infeasible"].get<int>());
+  const std::string csv = slurp(dir_ / "out" / "evaluations.csv");
+  EXPECT_NE(csv.find("infeasible"), std::string::npos);
+  EXPECT_NE(csv.find("overlaps"), std::string::npos);
+  // --json: one JSON object per line, ending with the summary.
+  std::istringstream lines(run.out);
+  std::string line, last;
+  while (std::getline(lines, line)) {
+    ASSERT_NO_THROW(last = nlohmann::json::parse(line)["event"].get<std::string>()) << line;
+  }
+  EXPECT_EQ(last, "summary");
+}
+
 TEST_F(FuzzCommandTest, BadInputIsAClearErrorWithExitTwo) {
   const std::string inverted = write("inverted.avu",
                                      "ego = AV((\"east_0\"->range(60, 20)), (\"east_0\"->400));\n"

@@ -6,7 +6,9 @@
 #include "fuzz/search.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -263,6 +265,11 @@ RunFingerprint fingerprint_run(const Evaluator& evaluator, const SearchOptions& 
 // Runs the same search with each thread count and expects the first run's fingerprint from all.
 void expect_same_for_any_thread_count(const Evaluator& evaluator, SearchOptions options,
                                       const std::vector<std::size_t>& thread_counts) {
+  // TBB caps every arena at the core count; lifting the cap makes -j 4 run four threads even on
+  // a two-core machine, so the schedules compared really differ.
+  const tbb::global_control parallelism(
+      tbb::global_control::max_allowed_parallelism,
+      *std::max_element(thread_counts.begin(), thread_counts.end()));
   std::optional<RunFingerprint> reference;
   for (std::size_t jobs : thread_counts) {
     SCOPED_TRACE("jobs = " + std::to_string(jobs) + ", algorithm " + options.algorithm);
@@ -271,6 +278,7 @@ void expect_same_for_any_thread_count(const Evaluator& evaluator, SearchOptions 
     if (!reference) {
       reference = run;
       EXPECT_EQ(run.summary.judged + run.summary.failed, options.budget);
+      EXPECT_GT(run.summary.judged, 0u);
       continue;
     }
     EXPECT_EQ(run.evaluations_hash, reference->evaluations_hash);
@@ -341,7 +349,9 @@ TEST(SearchTest, BudgetCountsJudgedAndFailedButNotInfeasibleEvaluations) {
       }
       EXPECT_EQ(summary.infeasible, infeasible);
       EXPECT_EQ(summary.failed, failed);
-      EXPECT_GT(summary.infeasible, 0u) << "the budget must have been exceeded in evaluations";
+      if (budget >= 3) {
+        EXPECT_GT(summary.infeasible, 0u);
+      }
     }
   }
 }
@@ -353,7 +363,7 @@ TEST(SearchTest, EveryRecordIsSeededWithTheDerivedSeedOfItsIndex) {
     options.algorithm = algorithm;
     options.budget = 40;
     options.seed = 0xDEADBEEF;
-    options.jobs = 4;
+    options.jobs = 2;
     const BowlEvaluator evaluator(2);
     Recorder recorder;
     run_search(evaluator, options, recorder.callbacks());
@@ -510,6 +520,8 @@ TEST(SearchTest, UnknownAlgorithmThrows) {
 }
 
 TEST(SearchTest, EvaluatorExceptionsPropagate) {
+  // Four real threads even on a smaller machine, so that others are busy when one throws.
+  const tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, 4);
   for (const std::string algorithm : {"ga", "random", "nlopt:LN_BOBYQA", "nlopt:GN_ISRES"}) {
     for (const std::size_t jobs : {1u, 4u}) {
       SCOPED_TRACE(algorithm + ", jobs " + std::to_string(jobs));
@@ -525,9 +537,9 @@ TEST(SearchTest, EvaluatorExceptionsPropagate) {
 
 // Box2D's test_determinism.c, for the search: the same run hashed with 1, 2 and 4 threads (and 4
 // again, as a different schedule) must hash alike.
-class SearchDeterminismTest : public testing::TestWithParam<std::string> {};
+class SearchAlgorithmDeterminismTest : public testing::TestWithParam<std::string> {};
 
-TEST_P(SearchDeterminismTest, SameEvaluationsAndFindingsForAnyThreadCount) {
+TEST_P(SearchAlgorithmDeterminismTest, SameEvaluationsAndFindingsForAnyThreadCount) {
   const HashedLandscapeEvaluator evaluator;
   SearchOptions options;
   options.algorithm = GetParam();
@@ -536,11 +548,11 @@ TEST_P(SearchDeterminismTest, SameEvaluationsAndFindingsForAnyThreadCount) {
   expect_same_for_any_thread_count(evaluator, options, {1, 2, 4, 4});
 }
 
-INSTANTIATE_TEST_SUITE_P(SearchAlgorithms, SearchDeterminismTest,
+INSTANTIATE_TEST_SUITE_P(SearchAlgorithms, SearchAlgorithmDeterminismTest,
                          testing::Values("ga", "random", "halton", "lhs", "nlopt:LN_BOBYQA",
                                          "nlopt:GN_ISRES"),
-                         [](const testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
+                         [](const testing::TestParamInfo<std::string>& param_info) {
+                           std::string name = param_info.param;
                            for (char& c : name)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;
