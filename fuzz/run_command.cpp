@@ -11,6 +11,7 @@
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
+#include "fuzz/report_format.hpp"
 #include "lang/avunit/avunit.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/judge.hpp"
@@ -42,12 +43,6 @@ std::string describe_collision(const Trace& trace, const Collision& collision) {
          std::string(body_side_name(collision.second_side)) + " at (" +
          format_number(std::round(collision.point.x * 100) / 100) + ", " +
          format_number(std::round(collision.point.y * 100) / 100) + ")";
-}
-
-// JSON has no infinities: they are written as the strings "inf" and "-inf".
-nlohmann::json robustness_json(double robustness) {
-  if (std::isinf(robustness)) return robustness > 0 ? "inf" : "-inf";
-  return robustness;
 }
 
 std::string place_of(const SourceFile& file, const SourceLocation& location) {
