@@ -90,6 +90,18 @@ void set_pose(ob::State* state, const MapPose& pose) {
   se2->setYaw(wrapped_heading(pose.heading));
 }
 
+// OMPL 1.5's Dubins solver snaps an arc angle within 5e-7 rad of a full turn to 0 and then
+// asserts on the error that makes, which grows with the leg's length: a long, nearly straight leg
+// whose headings lie a hair off its chord aborts the whole process (a search found one: a
+// bicycle's 208 m leg 4.7e-5 m off straight). Headings that close to the chord are made exactly
+// the chord's direction as OMPL computes it, a turn of at most 1e-5 rad.
+void align_with_chord(MapPose& from, MapPose& to) {
+  const double chord = std::atan2(to.position.y - from.position.y, to.position.x - from.position.x);
+  for (MapPose* pose : {&from, &to})
+    if (std::abs(std::remainder(pose->heading - chord, 2 * std::numbers::pi)) < 1e-5)
+      pose->heading = chord;
+}
+
 // The state space of one request: Dubins when the vehicle only drives forwards, Reeds-Shepp when
 // it may also reverse. Both measure distance as curve length in metres.
 struct CarSpace {
@@ -531,8 +543,10 @@ PlannedPath plan_path(const PathRequest& request) {
     ob::ScopedState<> from(car.space);
     ob::ScopedState<> to(car.space);
     ob::ScopedState<> scratch(car.space);
-    set_pose(from.get(), request.waypoints[leg]);
-    set_pose(to.get(), request.waypoints[leg + 1]);
+    MapPose leg_start = request.waypoints[leg], leg_end = request.waypoints[leg + 1];
+    align_with_chord(leg_start, leg_end);
+    set_pose(from.get(), leg_start);
+    set_pose(to.get(), leg_end);
     MapPose end = request.waypoints[leg + 1];
     end.heading = wrapped_heading(end.heading);
 

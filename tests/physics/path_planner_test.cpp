@@ -108,6 +108,17 @@ TEST(PathPlanner, StraightLegIsAStraightLineOfItsLength) {
   EXPECT_EQ(path.sampled_legs, 0);
 }
 
+TEST(PathPlanner, ANearlyStraightLongLegDoesNotTripOmplsDubinsAssertion) {
+  // Found by the search (cyclist_ahead.avu): OMPL's Dubins solver aborted the process on this
+  // leg, 208 m long, 4.7e-5 m off straight, both headings along the road.
+  const auto request = request_through(
+      {pose(281.97427980240798, -5.249953171457368, 0), pose(490, -5.25, 0)}, 1.3570114146796926);
+  const PlannedPath path = plan_path(request);
+  expect_consistent(path, request);
+  EXPECT_NEAR(path.length, 490 - 281.97427980240798, 1e-6);
+  for (const MapPose& sample : path.poses) EXPECT_NEAR(sample.position.y, -5.25, 1e-4);
+}
+
 TEST(PathPlanner, UTurnHasTheDubinsLengthAndRespectsTheTurningRadius) {
   // Straight 20 m along y = 0, then a left half circle of radius 5 about (20, 5): the Dubins
   // distance is 20 + 5 pi.
