@@ -186,20 +186,18 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "finding, findings per 500 simulations, and random's median over ga's");
   bench_falsification
       ->add_option("SCENARIO", bench_options.scenarios,
-                   "Logical scenarios (default: five bundled ones in corpora/avunit, run from "
-                   "the repository's root)")
+                   "Logical scenarios, FILE or FILE:SPEC to target one spec (default: five "
+                   "bundled ones in corpora/avunit, run from the repository's root)")
       ->type_name("");
   bench_falsification->add_option("--seeds", bench_options.seeds, "Runs per algorithm (default 20)")
-      ->check(CLI::PositiveNumber)
       ->type_name("N");
   bench_falsification
       ->add_option("--budget", bench_options.budget, "Simulations per run (default 500)")
-      ->check(CLI::PositiveNumber)
       ->type_name("N");
   bench_falsification
       ->add_option("--algos", bench_options.algorithms,
                    "Comma-separated algorithms as for --algo (default "
-                   "ga,nlopt:GN_ISRES,halton,random)")
+                   "ga,nlopt:GN_CRS2_LM,halton,random)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("LIST");
@@ -214,11 +212,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "figures");
   bench_cc
       ->add_option("--runs", bench_options.runs, "Runs per requirement, seeds 1..N (default 10)")
-      ->check(CLI::PositiveNumber)
       ->type_name("N");
   bench_cc
       ->add_option("--budget", bench_options.budget, "Simulations per run at most (default 1500)")
-      ->check(CLI::PositiveNumber)
       ->type_name("N");
   bench_cc->add_option("--algo", bench_algorithm, "Search algorithm, as for --algo (default ga)")
       ->type_name("NAME");
@@ -229,6 +225,12 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       ->allow_extra_args(false)
       ->check(CLI::IsMember({"CC1", "CC2", "CC3", "CC4", "CC5", "CCx"}))
       ->type_name("LIST");
+  bench_cc
+      ->add_option("--segments", bench_options.segments,
+                   "Piecewise-constant segments of u1 and u2 over the 100 s, 1 to 20 (jumps at "
+                   "least 5 s apart; default 20, 40 dimensions)")
+      ->check(CLI::Range(1, 20))
+      ->type_name("N");
   bench_cc->add_option("-j,--jobs", bench_options.jobs, "Runs at once (default: all cores)")
       ->type_name("N");
   CLI::App* bench_parallel = bench->add_subcommand(
@@ -237,11 +239,11 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "both found the same findings");
   bench_parallel
       ->add_option("SCENARIO", bench_options.scenarios,
-                   "Logical scenario (default corpora/avunit/lead_vehicle_hard_brake.avu)")
+                   "Logical scenario, FILE or FILE:SPEC to target one spec (default "
+                   "corpora/avunit/pedestrian_step_out.avu:spec1)")
       ->expected(0, 1)
       ->type_name("");
   bench_parallel->add_option("--budget", bench_options.budget, "Simulations per run (default 200)")
-      ->check(CLI::PositiveNumber)
       ->type_name("N");
   bench_parallel->add_option("--algo", bench_algorithm, "Search algorithm (default ga)")
       ->type_name("NAME");

@@ -95,6 +95,7 @@ struct BenchCommandOptions {
   std::size_t seeds = 20;               // falsification: --seeds, runs with seeds 1..N
   std::size_t runs = 10;                // cc: --runs, runs with seeds 1..N per requirement
   std::vector<std::string> requirements;  // cc: --requirements; empty: CC1..CC5, CCx
+  std::size_t segments = 20;              // cc: --segments, input segments of 100 / N s
   std::size_t jobs = 0;                   // -j: searches at once (falsification, cc); 0 = cores
   std::vector<std::string> scenarios;     // falsification, parallel; empty: the bundled choice
 };
