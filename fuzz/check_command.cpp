@@ -21,6 +21,21 @@ std::optional<SourceFile> read_input(const std::string& path, std::ostream& err)
   return file;
 }
 
+std::optional<ScenarioFile> read_scenario(const std::string& path, const std::string& purpose,
+                                          std::ostream& err) {
+  std::optional<SourceFile> file = read_input(path, err);
+  if (!file) return std::nullopt;
+  avunit::ParseResult parsed = avunit::parse(*file);
+  err << format_diagnostics(*file, parsed.diagnostics);
+  if (!parsed.ok()) return std::nullopt;
+  if (!parsed.scenario.has_scenario) {
+    err << "scenfuzz: error: '" << path << "' builds no scenario (no CreateScenario): nothing to "
+        << purpose << "\n";
+    return std::nullopt;
+  }
+  return ScenarioFile{std::move(*file), std::move(parsed.scenario)};
+}
+
 int run_check(const std::vector<std::string>& paths, std::ostream& err) {
   bool failed = false;
   for (const std::string& path : paths) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "lang/scenario.hpp"
 #include "lang/source_file.hpp"
 
 namespace scenfuzz {
@@ -63,6 +64,17 @@ int run_stl(const StlCommandOptions& options, std::ostream& out, std::ostream& e
 
 // Reads a scenario file, or prints `scenfuzz: error: cannot read 'path': <reason>` to `err`.
 std::optional<SourceFile> read_input(const std::string& path, std::ostream& err);
+
+// A scenario file a command runs, read and parsed.
+struct ScenarioFile {
+  SourceFile file;
+  ScenarioTemplate scenario;
+};
+
+// Reads and parses `path`, printing its diagnostics to `err`; nullopt (with an error on `err`)
+// when it cannot be read, has errors, or builds no scenario ("nothing to <purpose>").
+std::optional<ScenarioFile> read_scenario(const std::string& path, const std::string& purpose,
+                                          std::ostream& err);
 
 struct FuzzCommandOptions {
   std::string path;

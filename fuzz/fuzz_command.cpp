@@ -59,17 +59,10 @@ class InterruptGuard {
 }  // namespace
 
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
-  std::optional<SourceFile> file = read_input(options.path, err);
-  if (!file) return kExitBadInput;
-  const avunit::ParseResult parsed = avunit::parse(*file);
-  err << format_diagnostics(*file, parsed.diagnostics);
-  if (!parsed.ok()) return kExitBadInput;
-  const ScenarioTemplate& scenario = parsed.scenario;
-  if (!scenario.has_scenario) {
-    err << "scenfuzz: error: '" << options.path
-        << "' builds no scenario (no CreateScenario): nothing to search\n";
-    return kExitBadInput;
-  }
+  std::optional<ScenarioFile> input = read_scenario(options.path, "search", err);
+  if (!input) return kExitBadInput;
+  const SourceFile& file = input->file;
+  const ScenarioTemplate& scenario = input->scenario;
   if (options.budget == 0) {
     err << "scenfuzz: error: --budget must be at least 1 simulation\n";
     return kExitUsage;
@@ -83,7 +76,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
   std::optional<ScenarioEvaluator> evaluator;
   try {
     std::vector<fs::path> map_paths(options.map_paths.begin(), options.map_paths.end());
-    evaluator.emplace(*file, scenario, map_search_path(map_paths), simulation);
+    evaluator.emplace(file, scenario, map_search_path(map_paths), simulation);
   } catch (const MapError& error) {
     err << "scenfuzz: error: " << error.what() << "\n";
     return kExitBadInput;
@@ -121,7 +114,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
     return kExitUsage;
   }
 
-  SearchOutputs outputs(options, *file, scenario, *evaluator);
+  SearchOutputs outputs(options, file, scenario, *evaluator);
   if (std::string failure = outputs.prepare(); !failure.empty()) {
     err << "scenfuzz: error: " << failure << "\n";
     return kExitBadInput;
@@ -172,7 +165,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
       progress.finish();
       Diagnostics diagnostics;
       diagnostics.error(error.location(), error.what());
-      err << format_diagnostics(*file, diagnostics);
+      err << format_diagnostics(file, diagnostics);
       return kExitBadInput;
     }
   }

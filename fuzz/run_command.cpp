@@ -108,17 +108,10 @@ nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
 }  // namespace
 
 int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& err) {
-  std::optional<SourceFile> file = read_input(options.path, err);
-  if (!file) return kExitBadInput;
-  const avunit::ParseResult parsed = avunit::parse(*file);
-  err << format_diagnostics(*file, parsed.diagnostics);
-  if (!parsed.ok()) return kExitBadInput;
-  const ScenarioTemplate& scenario = parsed.scenario;
-  if (!scenario.has_scenario) {
-    err << "scenfuzz: error: '" << options.path
-        << "' builds no scenario (no CreateScenario): nothing to simulate\n";
-    return kExitBadInput;
-  }
+  std::optional<ScenarioFile> input = read_scenario(options.path, "simulate", err);
+  if (!input) return kExitBadInput;
+  const SourceFile& file = input->file;
+  const ScenarioTemplate& scenario = input->scenario;
 
   const ParameterSpace space = parameter_space(scenario);
   if (!space.dimensions.empty() && options.at.empty()) {
@@ -141,7 +134,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
 
   Diagnostics diagnostics;
   auto setup = prepare_simulation(scenario, values, *map, options.seed, diagnostics);
-  err << format_diagnostics(*file, diagnostics);
+  err << format_diagnostics(file, diagnostics);
   if (!setup) return kExitBadInput;
 
   SimulationOptions simulation;
@@ -159,11 +152,11 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
 
   std::vector<SpecVerdict> verdicts;
   try {
-    verdicts = judge_trace(scenario, values, trace, *map, *file);
+    verdicts = judge_trace(scenario, values, trace, *map, file);
   } catch (const OracleError& error) {
     Diagnostics oracle_diagnostics;
     oracle_diagnostics.error(error.location(), error.what());
-    err << format_diagnostics(*file, oracle_diagnostics);
+    err << format_diagnostics(file, oracle_diagnostics);
     return kExitBadInput;
   }
   bool violated = false;
@@ -186,7 +179,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
         {"trace.csv", trace_csv(trace, lane_ids)},
         {"trace.json", trace_json(trace)},
         {"trace.svg", render_trace_svg(*map, trace)},
-        {"scenario.avu", avunit::print_concrete(*file, scenario, values)},
+        {"scenario.avu", avunit::print_concrete(file, scenario, values)},
     };
     for (const auto& [name, content] : outputs) {
       std::string failure = write_file_atomically(dir / name, content);
@@ -200,7 +193,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
 
   if (options.json) {
     nlohmann::json summary = summary_json(trace, space, values, written);
-    summary["specs"] = verdicts_json(*file, verdicts);
+    summary["specs"] = verdicts_json(file, verdicts);
     out << summary.dump(2) << "\n";
     return exit_code;
   }
@@ -218,7 +211,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
       << "\n";
   for (const TraceEvent& event : trace.events)
     if (event.kind == TraceEventKind::ego_failure) out << "ego failure: " << event.message << "\n";
-  for (const SpecVerdict& verdict : verdicts) out << describe_verdict(*file, verdict) << "\n";
+  for (const SpecVerdict& verdict : verdicts) out << describe_verdict(file, verdict) << "\n";
   for (const std::string& path : written) out << "wrote " << path << "\n";
   return exit_code;
 }

@@ -16,12 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "command_runner.hpp"
 #include "tests/support/apollo_text_maps.hpp"
 #include "tests/support/shared_dir.hpp"
-
-#ifndef SCENFUZZ_EXECUTABLE
-#error "SCENFUZZ_EXECUTABLE must name the scenfuzz binary (see tests/CMakeLists.txt)"
-#endif
 
 namespace {
 
@@ -61,60 +58,10 @@ constexpr const char* kBadScenario = R"(map_name = "san_francisco";
 ego_init_state = ("lane_39"->);
 )";
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
+using scenfuzz::test::Outcome;
+using scenfuzz::test::slurp;
 
-std::string quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("scenfuzz_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-  }
-
-  // Runs scenfuzz with `args`, capturing its exit code, stdout and stderr.
-  Outcome scenfuzz(const std::vector<std::string>& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    std::string command = quote(SCENFUZZ_EXECUTABLE);
-    for (const std::string& arg : args) command += " " + quote(arg);
-    command += " </dev/null >" + quote(out.string()) + " 2>" + quote(err.string());
-    const int status = std::system(command.c_str());
-    Outcome run;
-    if (status != -1 && WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
-    run.out = slurp(out);
-    run.err = slurp(err);
-    return run;
-  }
-
-  fs::path dir_;
-};
+using CliTest = scenfuzz::test::CommandTest;
 
 TEST_F(CliTest, VersionPrintsNameAndVersion) {
   const Outcome run = scenfuzz({"--version"});
