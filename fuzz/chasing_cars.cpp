@@ -365,9 +365,9 @@ ChasingCarsEvaluator::ChasingCarsEvaluator(std::string requirement, std::size_t 
 
 std::vector<SearchDimension> ChasingCarsEvaluator::dimensions() const {
   std::vector<SearchDimension> dimensions;
-  for (const char* input : {"throttle_", "brake_"}) {
+  for (const std::string input : {"throttle", "brake"}) {
     for (std::size_t k = 0; k < segments_; ++k) {
-      dimensions.push_back({input + std::to_string(k), GeneKind::continuous, 0, ""});
+      dimensions.push_back({input + "_" + std::to_string(k), GeneKind::continuous, 0, "", input});
     }
   }
   return dimensions;

@@ -20,6 +20,10 @@ struct SearchDimension {
   std::size_t choices = 0;  // discrete: how many; the coordinate's cell picks one (decode())
   std::string group;        // the actor the dimension belongs to ("npc1"), for crossover
                             // that swaps whole actors; empty when none
+  // The input signal this gene is one segment of ("throttle"), when the point parametrises a
+  // signal over time by consecutive segments in order; empty otherwise. The GA then also holds
+  // a value over a run of segments (a sustained input is rarely made of independent draws).
+  std::string series;
 };
 
 struct Evaluation {

@@ -1,6 +1,7 @@
 // The genetic algorithm behind --algo ga: Latin hypercube start, tournament selection, BLX-alpha
 // blending (on the circle for angles, by choice for discrete genes) or a whole-actor swap,
-// Gaussian or re-draw mutation, elitism, duplicate rejection and restarts on stagnation.
+// Gaussian or re-draw mutation, held runs of signal segments, refinement of the best point,
+// (mu + lambda) survival, duplicate rejection and restarts on stagnation.
 #include "fuzz/genetic_algorithm.hpp"
 
 #include <algorithm>
@@ -85,6 +86,20 @@ GeneticAlgorithm::GeneticAlgorithm(std::span<const SearchDimension> dimensions, 
   // Swapping a group that holds every gene would only exchange the parents.
   std::erase_if(actor_genes_,
                 [&](const auto& genes) { return genes.size() == dimensions_.size(); });
+
+  std::vector<std::string> series_names;
+  for (std::size_t gene = 0; gene < dimensions_.size(); ++gene) {
+    const std::string& series = dimensions_[gene].series;
+    if (series.empty() || dimensions_[gene].kind != GeneKind::continuous) continue;
+    const auto known = std::find(series_names.begin(), series_names.end(), series);
+    if (known == series_names.end()) {
+      series_names.push_back(series);
+      series_genes_.push_back({gene});
+    } else {
+      series_genes_[static_cast<std::size_t>(known - series_names.begin())].push_back(gene);
+    }
+  }
+  std::erase_if(series_genes_, [](const auto& genes) { return genes.size() < 2; });
 }
 
 std::vector<UnitPoint> GeneticAlgorithm::propose(std::size_t limit) {
@@ -124,9 +139,11 @@ void GeneticAlgorithm::start_generation() {
     points = fresh_points(status_.population);
   } else if (restart_pending_) {
     restart_pending_ = false;
+    population_.resize(std::min(population_.size(), elites_));
     points = fresh_points(status_.population - elites_);
   } else {
-    points = bred_points(status_.population - elites_);
+    points =
+        bred_points(options_.offspring > 0 ? options_.offspring : status_.population - elites_);
   }
   generation_.clear();
   for (UnitPoint& point : points) generation_.push_back({std::move(point), {}});
@@ -135,7 +152,6 @@ void GeneticAlgorithm::start_generation() {
 }
 
 void GeneticAlgorithm::finish_generation() {
-  population_.resize(std::min(population_.size(), elites_));
   for (const Individual& individual : generation_) {
     population_.push_back(individual);
     if (individual.objective < status_.best_objective) {
@@ -147,6 +163,7 @@ void GeneticAlgorithm::finish_generation() {
   std::stable_sort(
       population_.begin(), population_.end(),
       [](const Individual& a, const Individual& b) { return a.objective < b.objective; });
+  population_.resize(std::min(population_.size(), status_.population));
   ++status_.generations;
 
   const double level = std::max(status_.best_objective, options_.progress_floor);
@@ -182,6 +199,16 @@ std::vector<UnitPoint> GeneticAlgorithm::fresh_points(std::size_t count) {
 std::vector<UnitPoint> GeneticAlgorithm::bred_points(std::size_t count) {
   std::vector<UnitPoint> children;
   children.reserve(count);
+  const auto refinements = static_cast<std::size_t>(
+      std::round(options_.refinement_fraction * static_cast<double>(count)));
+  // A converged best point can make every refinement a duplicate: the slots then go to breeding.
+  for (std::size_t attempt = 0;
+       children.size() < std::min(refinements, count) && attempt < max_breeding_attempts * count;
+       ++attempt) {
+    UnitPoint point = refined_point();
+    maybe_hold(point);
+    if (remember(point)) children.push_back(std::move(point));
+  }
   std::size_t failures = 0;
   while (children.size() < count) {
     UnitPoint first = tournament().point;
@@ -195,6 +222,8 @@ std::vector<UnitPoint> GeneticAlgorithm::bred_points(std::size_t count) {
     }
     mutate(first);
     mutate(second);
+    maybe_hold(first);
+    maybe_hold(second);
     bool accepted = false;
     for (UnitPoint* child : {&first, &second}) {
       if (children.size() < count && remember(*child)) {
@@ -278,6 +307,37 @@ void GeneticAlgorithm::mutate(UnitPoint& point) {
     }
   }
   normalise(point);
+}
+
+UnitPoint GeneticAlgorithm::refined_point() {
+  UnitPoint point = population_.front().point;
+  const double scale =
+      options_.refinement_min_scale *
+      std::pow(options_.refinement_max_scale / options_.refinement_min_scale, random_.uniform());
+  for (std::size_t gene = 0; gene < dimensions_.size(); ++gene) {
+    if (dimensions_[gene].kind != GeneKind::discrete) point[gene] += scale * random_.normal();
+  }
+  normalise(point);
+  return point;
+}
+
+void GeneticAlgorithm::maybe_hold(UnitPoint& point) {
+  if (!series_genes_.empty() && random_.chance(options_.hold_probability)) hold(point);
+}
+
+void GeneticAlgorithm::hold(UnitPoint& point) {
+  const std::vector<std::size_t>& genes = series_genes_[random_.index(series_genes_.size())];
+  const std::size_t length = 2 + random_.index(genes.size() - 1);
+  const std::size_t start = random_.index(genes.size() - length + 1);
+  const double draw = random_.uniform();
+  const double extreme = options_.hold_extreme_probability;
+  double value = random_.uniform();
+  if (draw < extreme) {
+    value = random_.chance(0.5) ? 0.0 : 1.0;
+  } else if (draw < extreme + 0.5 * (1.0 - extreme)) {
+    value = point[genes[start]];
+  }
+  for (std::size_t k = start; k < start + length; ++k) point[genes[k]] = value;
 }
 
 void GeneticAlgorithm::normalise(UnitPoint& point) const {

@@ -1,7 +1,8 @@
-// The default search (--algo ga): a generational genetic algorithm over the unit cube with native
-// continuous, angle and discrete genes, a crossover that swaps whole actors, elitism, and restarts
-// on stagnation, so that a falsification run keeps looking for new violations in new regions
-// instead of polishing one.
+// The default search (--algo ga): a steady (mu + lambda) genetic algorithm over the unit cube with
+// native continuous, angle and discrete genes, a crossover that swaps whole actors, children that
+// refine the best point so far, a mutation that holds an input signal over a run of segments, and
+// restarts on stagnation, so that a falsification run keeps looking for new violations in new
+// regions instead of polishing one.
 #pragma once
 
 #include <cstddef>
@@ -25,8 +26,14 @@ struct GeneticAlgorithmOptions {
   // tournaments to mean something, at most fifty so that a few hundred simulations still make
   // several generations, and at least four generations within the budget.
   std::size_t population = 0;
-  // The best individuals that pass unchanged into the next generation, and survive restarts
-  // (at most half the population). They are not evaluated again.
+  // Children bred per generation after the first (a Latin hypercube of `population` points).
+  // The parents of the next generation are the best `population` of parents and children, so
+  // a good point stays until better ones replace it. Eight: small generations let the parents
+  // improve every few simulations (the first finding came sooner than with whole generations of
+  // new children, docs/performance.md "Search"), and eight still keep eight workers busy.
+  // 0: the population size minus the elites.
+  std::size_t offspring = 8;
+  // The best individuals kept through a restart (at most half the population).
   std::size_t elites = 2;
   // Individuals drawn (with replacement) per tournament; the lowest objective becomes a parent.
   // Three: with two, the pressure was too mild to refine the narrow basin of the chasing-cars
@@ -50,9 +57,28 @@ struct GeneticAlgorithmOptions {
   // units: a tenth of a parameter's range reaches neighbouring behaviours without jumping
   // across the space.
   double mutation_scale = 0.1;
-  // Generations without progress after which the population is re-seeded with fresh Latin
-  // hypercube points, keeping the elites. 0: never restart.
-  std::size_t stagnation_generations = 7;
+  // Share of each generation's children that refine the best individual: every continuous and
+  // angle gene moves by a Gaussian step whose scale is drawn log-uniformly from
+  // [refinement_min_scale, refinement_max_scale], so that one generation probes the best point's
+  // neighbourhood at several scales at once (no step size to adapt). Robustness is mostly a
+  // distance or a margin that changes smoothly near a violation, so this walks down to the
+  // failure region where blending alone wanders.
+  double refinement_fraction = 0.5;
+  double refinement_min_scale = 0.01;
+  double refinement_max_scale = 0.2;
+  // For genes that are segments of one input signal (SearchDimension::series): the probability
+  // that a child also gets one run of 2 or more consecutive segments set to a single value,
+  // which is the signal's extreme (0 or 1) with probability hold_extreme_probability and
+  // otherwise, with equal chances, the run's first value or a uniform draw. Sustained inputs
+  // (braking for 30 s) are what falsifies requirements over long windows, and independent
+  // per-segment draws almost never produce them: the chasing cars' CC4 with 20 segments went
+  // from 0/10 to 10/10 (docs/performance.md).
+  double hold_probability = 0.5;
+  double hold_extreme_probability =
+      0.5;  // Generations without progress after which the population is re-seeded with fresh Latin
+  // hypercube points, keeping the elites. 0: never restart. Twelve generations of eight
+  // children: about a hundred simulations to leave a basin that stopped improving.
+  std::size_t stagnation_generations = 12;
   // Progress means the best objective dropped by more than tolerance * max(1, |best|). Two
   // centimetres (robustness is mostly in metres): with a thousandth, a population creeping
   // towards a robustness just above zero that it never crosses (the chasing cars' CC2 at
@@ -104,6 +130,9 @@ class GeneticAlgorithm final : public SearchStrategy {
   void blend(UnitPoint& first, UnitPoint& second);
   void swap_actor(UnitPoint& first, UnitPoint& second);
   void mutate(UnitPoint& point);
+  UnitPoint refined_point();
+  void hold(UnitPoint& point);
+  void maybe_hold(UnitPoint& point);
   void normalise(UnitPoint& point) const;
   UnitPoint uniform_fresh_point();
   bool remember(const UnitPoint& point);
@@ -114,6 +143,8 @@ class GeneticAlgorithm final : public SearchStrategy {
   std::size_t elites_ = 0;
   // Gene indices of each actor that can be swapped (a group that is not every gene).
   std::vector<std::vector<std::size_t>> actor_genes_;
+  // Gene indices of each input signal with at least two segments, in time order.
+  std::vector<std::vector<std::size_t>> series_genes_;
   // Parents of the next generation, best first.
   std::vector<Individual> population_;
   // The generation being evaluated and how far it has been handed out and observed.

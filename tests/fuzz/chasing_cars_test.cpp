@@ -174,6 +174,10 @@ TEST(ChasingCarsTest, EvaluatorHasFortyInputDimensionsAndOneObjective) {
     EXPECT_EQ(dimension.kind, scenfuzz::GeneKind::continuous);
     EXPECT_EQ(dimension.group, "");
   }
+  // Each input is a signal over time, segments in order: the GA holds runs of them.
+  EXPECT_EQ(dimensions[0].series, "throttle");
+  EXPECT_EQ(dimensions[19].series, "throttle");
+  EXPECT_EQ(dimensions[20].series, "brake");
   EXPECT_EQ(evaluator.objectives(), std::vector<std::string>{"CC4"});
   EXPECT_EQ(ChasingCarsEvaluator("CC1", 10).dimensions().size(), 20u);
 }

@@ -1,6 +1,7 @@
 // The genetic algorithm on synthetic objectives, driven by hand through propose/observe:
 // determinism, independence from batch splitting, speed against uniform random search, and the
-// behaviour of each gene kind, the actor swap, restarts and infeasible points.
+// behaviour of each gene kind, the actor swap, refinement of the best point, (mu + lambda)
+// survival, held runs of signal segments, restarts and infeasible points.
 #include "fuzz/genetic_algorithm.hpp"
 
 #include <gtest/gtest.h>
@@ -33,11 +34,13 @@ std::vector<SearchDimension> continuous_dimensions(std::size_t count) {
 
 // Dimensions of every kind, some grouped into actors.
 std::vector<SearchDimension> mixed_dimensions() {
-  return {
-      {"ego.speed", GeneKind::continuous, 0, "ego"},   {"ego.heading", GeneKind::angle, 0, "ego"},
-      {"npc1.speed", GeneKind::continuous, 0, "npc1"}, {"npc1.type", GeneKind::discrete, 3, "npc1"},
-      {"npc1.lane", GeneKind::discrete, 5, "npc1"},    {"weather", GeneKind::discrete, 4, ""},
-      {"friction", GeneKind::continuous, 0, ""}};
+  return {{"ego.speed", GeneKind::continuous, 0, "ego", ""},
+          {"ego.heading", GeneKind::angle, 0, "ego", ""},
+          {"npc1.speed", GeneKind::continuous, 0, "npc1", ""},
+          {"npc1.type", GeneKind::discrete, 3, "npc1", ""},
+          {"npc1.lane", GeneKind::discrete, 5, "npc1", ""},
+          {"weather", GeneKind::discrete, 4, "", ""},
+          {"friction", GeneKind::continuous, 0, "", ""}};
 }
 
 Observation judged(const UnitPoint& point, double objective) { return {point, objective, true}; }
@@ -181,8 +184,8 @@ TEST(GeneticAlgorithm, DiscreteGenesSitInTheMiddleOfACellAndEveryChoiceAppears) 
 
 TEST(GeneticAlgorithm, BlendingTakesEachDiscreteChoiceFromAParent) {
   // With many choices, a child's choice that is neither parent's would be seen at once.
-  const std::vector<SearchDimension> dimensions = {{"x", GeneKind::continuous, 0, ""},
-                                                   {"lane", GeneKind::discrete, 997, ""}};
+  const std::vector<SearchDimension> dimensions = {{"x", GeneKind::continuous, 0, "", ""},
+                                                   {"lane", GeneKind::discrete, 997, "", ""}};
   GeneticAlgorithmOptions options;
   options.crossover_probability = 1.0;
   options.mutation_rate = 0.0;
@@ -233,6 +236,7 @@ TEST(GeneticAlgorithm, ActorSwapExchangesExactlyTheGenesOfOneGroup) {
   options.crossover_probability = 1.0;
   options.actor_swap_probability = 1.0;
   options.mutation_rate = 0.0;
+  options.refinement_fraction = 0.0;
   GeneticAlgorithm algorithm(dimensions, 11, 400, options);
   const auto parents = next_generation(algorithm, sum_objective);
   const auto children = next_generation(algorithm, sum_objective);
@@ -268,6 +272,125 @@ TEST(GeneticAlgorithm, ActorSwapExchangesExactlyTheGenesOfOneGroup) {
     ++swapped;
   }
   EXPECT_GE(swapped, children.size() / 2);
+}
+
+TEST(GeneticAlgorithm, LaterGenerationsHaveTheOffspringCount) {
+  GeneticAlgorithmOptions options;
+  options.offspring = 5;
+  GeneticAlgorithm algorithm(continuous_dimensions(4), 3, 1000, options);
+  EXPECT_EQ(next_generation(algorithm, sum_objective).size(), algorithm.status().population);
+  for (int generation = 0; generation < 5; ++generation)
+    EXPECT_EQ(next_generation(algorithm, sum_objective).size(), 5u);
+}
+
+TEST(GeneticAlgorithm, RefinementChildrenSurroundTheBestPointAtSeveralScales) {
+  GeneticAlgorithmOptions options;
+  options.refinement_fraction = 1.0;
+  options.offspring = 40;
+  GeneticAlgorithm algorithm(continuous_dimensions(5), 21, 1000, options);
+  next_generation(algorithm, sum_objective);
+  const UnitPoint best = algorithm.status().best_point;
+  std::vector<double> distances;
+  for (const UnitPoint& child : next_generation(algorithm, sum_objective))
+    distances.push_back(distance(child, best));
+  std::sort(distances.begin(), distances.end());
+  ASSERT_EQ(distances.size(), 40u);
+  // Steps are Gaussian on each of 5 genes with a scale from 0.01 to 0.2: the nearest children
+  // are within a few hundredths, none is far (a blend or a fresh point would be).
+  EXPECT_GT(distances.front(), 0.0);
+  EXPECT_LT(distances[3], 0.1);
+  EXPECT_LT(distances.back(), 1.0);
+  EXPECT_GT(distances.back() / distances.front(), 5.0);
+}
+
+TEST(GeneticAlgorithm, TheBestPointSurvivesChildrenThatAreAllWorse) {
+  // (mu + lambda): parents compete with their children, so a first-generation point that no
+  // child beats is still the centre of refinement generations later.
+  GeneticAlgorithmOptions options;
+  options.refinement_fraction = 1.0;
+  options.elites = 0;
+  options.stagnation_generations = 0;
+  GeneticAlgorithm algorithm(continuous_dimensions(3), 8, 1000, options);
+  std::size_t evaluated = 0;
+  const Objective first_is_best = [&](const UnitPoint&) {
+    return evaluated++ == 0 ? -1.0 : 1.0 + static_cast<double>(evaluated);
+  };
+  const UnitPoint first = next_generation(algorithm, first_is_best).front();
+  std::vector<double> distances;
+  for (int generation = 0; generation < 10; ++generation) {
+    for (const UnitPoint& child : next_generation(algorithm, first_is_best))
+      distances.push_back(distance(child, first));
+  }
+  // Refinement around a drifting centre (the best child of the last generation) would wander
+  // off by about a step per generation; around `first` the typical child stays within a step.
+  std::sort(distances.begin(), distances.end());
+  EXPECT_LT(distances[distances.size() / 2], 0.12);
+  EXPECT_LT(distances[distances.size() * 9 / 10], 0.35);
+  EXPECT_EQ(algorithm.status().best_point, first);
+}
+
+// Two signals of 6 segments each, then one gene outside any signal.
+std::vector<SearchDimension> signal_dimensions() {
+  std::vector<SearchDimension> dimensions;
+  for (const std::string signal : {"throttle", "brake"})
+    for (int k = 0; k < 6; ++k)
+      dimensions.push_back({signal + "_" + std::to_string(k), GeneKind::continuous, 0, "", signal});
+  dimensions.push_back({"friction", GeneKind::continuous, 0, "", ""});
+  return dimensions;
+}
+
+// The longest run of equal consecutive values among genes [first, first + count).
+std::size_t longest_run(const UnitPoint& point, std::size_t first, std::size_t count) {
+  std::size_t longest = 1;
+  std::size_t run = 1;
+  for (std::size_t gene = first + 1; gene < first + count; ++gene) {
+    run = point[gene] == point[gene - 1] ? run + 1 : 1;
+    longest = std::max(longest, run);
+  }
+  return longest;
+}
+
+TEST(GeneticAlgorithm, HoldSetsARunOfOneSignalsSegmentsToOneValue) {
+  GeneticAlgorithmOptions options;
+  options.hold_probability = 1.0;
+  options.refinement_fraction = 0.0;
+  options.crossover_probability = 0.0;
+  options.mutation_rate = 0.0;
+  options.offspring = 30;
+  GeneticAlgorithm algorithm(signal_dimensions(), 17, 1000, options);
+  const auto parents = next_generation(algorithm, sum_objective);
+  std::size_t extremes = 0;
+  for (const UnitPoint& child : next_generation(algorithm, sum_objective)) {
+    // A held child is a parent with one run of one signal replaced: the other signal and the
+    // free gene are a parent's.
+    const bool throttle_held = longest_run(child, 0, 6) >= 2;
+    const bool brake_held = longest_run(child, 6, 6) >= 2;
+    EXPECT_TRUE(throttle_held || brake_held);
+    bool from_a_parent = false;
+    for (const UnitPoint& parent : parents) {
+      bool same = child[12] == parent[12];
+      for (std::size_t gene = throttle_held ? 6 : 0; gene < (throttle_held ? 12u : 6u); ++gene)
+        same = same && child[gene] == parent[gene];
+      from_a_parent = from_a_parent || same;
+    }
+    EXPECT_TRUE(from_a_parent);
+    for (const double value : child) extremes += value == 0.0 || value == 1.0 ? 1 : 0;
+  }
+  EXPECT_GT(extremes, 0u);
+}
+
+TEST(GeneticAlgorithm, WithoutSignalsNothingIsHeld) {
+  GeneticAlgorithmOptions options;
+  options.hold_probability = 1.0;
+  options.refinement_fraction = 0.0;
+  options.crossover_probability = 0.0;
+  options.mutation_rate = 0.0;
+  GeneticAlgorithm algorithm(continuous_dimensions(6), 17, 1000, options);
+  const auto parents = next_generation(algorithm, sum_objective);
+  // No crossover and no mutation: children are copies of parents, which duplicates reject,
+  // so every child is a fresh uniform point; none has equal neighbouring genes.
+  for (const UnitPoint& child : next_generation(algorithm, sum_objective))
+    EXPECT_EQ(longest_run(child, 0, 6), 1u);
 }
 
 // Whether every one of the points' coordinates falls in its own slice of [0, 1).
@@ -379,7 +502,7 @@ TEST(GeneticAlgorithm, AnEmptySpaceIsOnePoint) {
 }
 
 TEST(GeneticAlgorithm, DiscreteDimensionWithoutChoicesIsRejected) {
-  const std::vector<SearchDimension> dimensions = {{"lane", GeneKind::discrete, 0, ""}};
+  const std::vector<SearchDimension> dimensions = {{"lane", GeneKind::discrete, 0, "", ""}};
   EXPECT_THROW(GeneticAlgorithm(dimensions, 1, 100), std::invalid_argument);
 }
 

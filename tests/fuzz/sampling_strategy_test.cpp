@@ -18,10 +18,26 @@ namespace {
 
 std::vector<SearchDimension> test_dimensions() {
   return {
-      {.name = "ego.init.speed", .kind = GeneKind::continuous, .choices = 0, .group = "ego"},
-      {.name = "npc1.init.heading", .kind = GeneKind::angle, .choices = 0, .group = "npc1"},
-      {.name = "weather.rain", .kind = GeneKind::continuous, .choices = 0, .group = ""},
-      {.name = "npc1.type", .kind = GeneKind::discrete, .choices = 3, .group = "npc1"},
+      {.name = "ego.init.speed",
+       .kind = GeneKind::continuous,
+       .choices = 0,
+       .group = "ego",
+       .series = ""},
+      {.name = "npc1.init.heading",
+       .kind = GeneKind::angle,
+       .choices = 0,
+       .group = "npc1",
+       .series = ""},
+      {.name = "weather.rain",
+       .kind = GeneKind::continuous,
+       .choices = 0,
+       .group = "",
+       .series = ""},
+      {.name = "npc1.type",
+       .kind = GeneKind::discrete,
+       .choices = 3,
+       .group = "npc1",
+       .series = ""},
   };
 }
 

@@ -187,11 +187,11 @@ class ThrowingEvaluator : public BowlEvaluator {
 class HashedLandscapeEvaluator : public Evaluator {
  public:
   std::vector<SearchDimension> dimensions() const override {
-    return {{"npc1.x", GeneKind::continuous, 0, "npc1"},
-            {"npc1.speed", GeneKind::continuous, 0, "npc1"},
-            {"npc2.heading", GeneKind::angle, 0, "npc2"},
-            {"npc2.lane", GeneKind::discrete, 3, "npc2"},
-            {"weather", GeneKind::continuous, 0, ""}};
+    return {{"npc1.x", GeneKind::continuous, 0, "npc1", ""},
+            {"npc1.speed", GeneKind::continuous, 0, "npc1", ""},
+            {"npc2.heading", GeneKind::angle, 0, "npc2", ""},
+            {"npc2.lane", GeneKind::discrete, 3, "npc2", ""},
+            {"weather", GeneKind::continuous, 0, "", ""}};
   }
   std::vector<std::string> objectives() const override { return {"bowl", "waves"}; }
   Evaluation evaluate(std::span<const double> point, std::uint64_t seed) const override {
