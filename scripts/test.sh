@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Build and test from scratch on Debian 12: install the packages, configure and build the `ci`
-# preset (warnings are errors), run every test with ctest, then fuzz the AVUnit front end for a
-# minute. This is what CI runs (.ci/run).
+# preset (warnings are errors), run every test with ctest, then fuzz the AVUnit and WMG SDL front
+# ends for a minute each. This is what CI runs (.ci/run).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
