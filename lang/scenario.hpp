@@ -83,7 +83,9 @@ struct ActorType {
 // its arguments, when it starts and while it lasts.
 struct ManoeuvrePhase {
   std::string manoeuvre;  // e.g. "Drive_CutIn", "turn_left", "stop"
-  std::vector<NamedValue> parameters;
+  std::vector<NamedValue> parameters;  // docs/wmg-semantics.md: speed, duration, gap
+  std::string reference;               // the actor the manoeuvre is relative to, if any
+  std::string relative_location;       // WMG sector F, FSR, SR, RSR, R, RSL, SL, FSL
   std::optional<Formula> start_when;
   std::optional<Formula> continue_while;
   bool critical = false;
