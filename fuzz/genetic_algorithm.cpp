@@ -44,6 +44,26 @@ double reflect(double coordinate) {
 // The signed shortest way round the circle from `from` to `to`, in [-0.5, 0.5).
 double circular_difference(double from, double to) { return wrap(to - from + 0.5) - 0.5; }
 
+// Gene indices per non-empty label, labels in order of first appearance, genes in order.
+template <typename Label>
+std::vector<std::vector<std::size_t>> genes_by_label(std::span<const SearchDimension> dimensions,
+                                                     Label label_of) {
+  std::vector<std::string> labels;
+  std::vector<std::vector<std::size_t>> genes;
+  for (std::size_t gene = 0; gene < dimensions.size(); ++gene) {
+    const std::string label = label_of(dimensions[gene]);
+    if (label.empty()) continue;
+    const auto known = std::find(labels.begin(), labels.end(), label);
+    if (known == labels.end()) {
+      labels.push_back(label);
+      genes.push_back({gene});
+    } else {
+      genes[static_cast<std::size_t>(known - labels.begin())].push_back(gene);
+    }
+  }
+  return genes;
+}
+
 std::size_t default_population(std::size_t dimensions, std::size_t budget) {
   std::size_t population = std::clamp<std::size_t>(4 + 2 * dimensions, 10, 50);
   if (budget > 0) population = std::min(population, std::max<std::size_t>(budget / 4, 4));
@@ -71,34 +91,14 @@ GeneticAlgorithm::GeneticAlgorithm(std::span<const SearchDimension> dimensions, 
   }
   elites_ = std::min(options_.elites, status_.population / 2);
 
-  std::vector<std::string> group_names;
-  for (std::size_t gene = 0; gene < dimensions_.size(); ++gene) {
-    const std::string& group = dimensions_[gene].group;
-    if (group.empty()) continue;
-    const auto known = std::find(group_names.begin(), group_names.end(), group);
-    if (known == group_names.end()) {
-      group_names.push_back(group);
-      actor_genes_.push_back({gene});
-    } else {
-      actor_genes_[static_cast<std::size_t>(known - group_names.begin())].push_back(gene);
-    }
-  }
+  actor_genes_ =
+      genes_by_label(dimensions_, [](const SearchDimension& dimension) { return dimension.group; });
   // Swapping a group that holds every gene would only exchange the parents.
   std::erase_if(actor_genes_,
                 [&](const auto& genes) { return genes.size() == dimensions_.size(); });
-
-  std::vector<std::string> series_names;
-  for (std::size_t gene = 0; gene < dimensions_.size(); ++gene) {
-    const std::string& series = dimensions_[gene].series;
-    if (series.empty() || dimensions_[gene].kind != GeneKind::continuous) continue;
-    const auto known = std::find(series_names.begin(), series_names.end(), series);
-    if (known == series_names.end()) {
-      series_names.push_back(series);
-      series_genes_.push_back({gene});
-    } else {
-      series_genes_[static_cast<std::size_t>(known - series_names.begin())].push_back(gene);
-    }
-  }
+  series_genes_ = genes_by_label(dimensions_, [](const SearchDimension& dimension) {
+    return dimension.kind == GeneKind::continuous ? dimension.series : std::string();
+  });
   std::erase_if(series_genes_, [](const auto& genes) { return genes.size() < 2; });
 }
 
