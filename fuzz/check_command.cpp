@@ -5,7 +5,7 @@
 
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
-#include "lang/avunit/avunit.hpp"
+#include "fuzz/scenario_language.hpp"
 #include "lang/diagnostic.hpp"
 
 namespace scenfuzz {
@@ -25,7 +25,7 @@ std::optional<ScenarioFile> read_scenario(const std::string& path, const std::st
                                           std::ostream& err) {
   std::optional<SourceFile> file = read_input(path, err);
   if (!file) return std::nullopt;
-  avunit::ParseResult parsed = avunit::parse(*file);
+  ScenarioParse parsed = parse_scenario_file(*file);
   err << format_diagnostics(*file, parsed.diagnostics);
   if (!parsed.ok()) return std::nullopt;
   if (!parsed.scenario.has_scenario) {
@@ -44,7 +44,7 @@ int run_check(const std::vector<std::string>& paths, std::ostream& err) {
       failed = true;
       continue;
     }
-    const avunit::ParseResult result = avunit::parse(*file);
+    const ScenarioParse result = parse_scenario_file(*file);
     err << format_diagnostics(*file, result.diagnostics);
     if (!result.ok()) failed = true;
   }

@@ -31,7 +31,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "scenario, map or trace file that cannot be read or has errors.");
 
   FuzzCommandOptions fuzz_options;
-  app.add_option("FILE", fuzz_options.path, "Logical scenario to search (AVUnit or scenest)")
+  app.add_option("FILE", fuzz_options.path,
+                 "Logical scenario to search (AVUnit, scenest or WMG SDL)")
       ->type_name("");
   app.add_option("--budget", fuzz_options.budget,
                  "Simulations to spend (default 500); infeasible points are not counted")
@@ -72,7 +73,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   std::vector<std::string> check_files;
   CLI::App* check = app.add_subcommand(
       "check", "Parse scenario files and report their errors and warnings (nothing when clean)");
-  check->add_option("FILE", check_files, "AVUnit or scenest scenario files")
+  check->add_option("FILE", check_files, "AVUnit, scenest or WMG SDL (.sdl) scenario files")
       ->required()
       ->type_name("");
 
@@ -80,7 +81,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   bool space_json = false;
   CLI::App* space = app.add_subcommand(
       "space", "Print the parameter space of a scenario: one dimension per range in the file");
-  space->add_option("FILE", space_file, "AVUnit or scenest scenario file")
+  space->add_option("FILE", space_file, "AVUnit, scenest or WMG SDL scenario file")
       ->required()
       ->type_name("");
   space->add_flag("--json", space_json, "Print a JSON document instead of a table");
@@ -111,7 +112,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "Simulate a scenario: print the collisions, whether the ego reached its target and the "
       "robustness of every spec (exit 1 when one is violated); write the trace (CSV, JSON), a "
       "bird's-eye SVG and the concrete scenario");
-  run_command->add_option("FILE", run_options.path, "AVUnit or scenest scenario file")
+  run_command->add_option("FILE", run_options.path, "AVUnit, scenest or WMG SDL scenario file")
       ->required()
       ->type_name("");
   run_command->add_option("--seed", run_options.seed, "Seed of every random draw (default 0)")
@@ -169,6 +170,20 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "formula, a note on stderr names the atom responsible and the time. Exit status: 0 "
       "satisfied (robustness >= 0), 1 violated (< 0), 2 a bad command line, or a formula or "
       "log that cannot be read or has errors.");
+
+  std::string convert_target;
+  std::string convert_file;
+  CLI::App* convert = app.add_subcommand(
+      "convert",
+      "Print a WMG SDL file as level 2: a level-1 file converted (every qualitative word "
+      "becomes its default range), a level-2 file printed canonically");
+  convert->add_option("--to", convert_target, "The language to write: sdl2 (WMG SDL level 2)")
+      ->required()
+      ->check(CLI::IsMember({"sdl2"}))
+      ->type_name("sdl2");
+  convert->add_option("FILE", convert_file, "WMG SDL file (.sdl, level 1 or 2)")
+      ->required()
+      ->type_name("");
 
   BenchCommandOptions bench_options;
   std::string bench_algorithm;
@@ -260,6 +275,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   if (map->parsed()) return run_map(map_options, out, err);
   if (run_command->parsed()) return run_run(run_options, out, err);
   if (stl->parsed()) return run_stl(stl_options, out, err);
+  if (convert->parsed()) return run_convert(convert_file, out, err);
   if (bench->parsed()) {
     if (!bench_algorithm.empty()) bench_options.algorithms = {bench_algorithm};
     bench_options.kind = bench_cc->parsed()         ? BenchKind::chasing_cars

@@ -50,6 +50,10 @@ struct RunCommandOptions {
 // what happened to `out` and writes the trace and a picture into the output folder.
 int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& err);
 
+// `scenfuzz convert --to sdl2 FILE`: prints the WMG SDL level-2 text of a level-1 file (a level-2
+// file canonically) to `out`. kExitSuccess, or kExitBadInput with the diagnostics on `err`.
+int run_convert(const std::string& path, std::ostream& out, std::ostream& err);
+
 struct StlCommandOptions {
   std::string spec;        // --spec: one STL formula in AVUnit's syntax
   std::string trace_path;  // --trace: a CSV log with a `time` column

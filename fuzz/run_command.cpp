@@ -12,7 +12,7 @@
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
 #include "fuzz/report_format.hpp"
-#include "lang/avunit/avunit.hpp"
+#include "fuzz/scenario_language.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/judge.hpp"
 #include "oracle/robustness.hpp"
@@ -179,7 +179,8 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
         {"trace.csv", trace_csv(trace, lane_ids)},
         {"trace.json", trace_json(trace)},
         {"trace.svg", render_trace_svg(*map, trace)},
-        {"scenario.avu", avunit::print_concrete(file, scenario, values)},
+        {"scenario" + concrete_extension(file.path()),
+         print_concrete_scenario(file, scenario, values)},
     };
     for (const auto& [name, content] : outputs) {
       std::string failure = write_file_atomically(dir / name, content);

@@ -6,7 +6,7 @@
 
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/report_format.hpp"
-#include "lang/avunit/avunit.hpp"
+#include "fuzz/scenario_language.hpp"
 #include "lang/number_format.hpp"
 #include "physics/trace/trace_export.hpp"
 #include "physics/trace/trace_svg.hpp"
@@ -105,20 +105,22 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
       finding_number_text(finding.number) + "-" + file_stem(finding.objective_name);
   const fs::path scenario_path =
       dir_ / "findings" / (stem + (extension.empty() ? ".avu" : extension));
-  std::string header = "// scenfuzz finding " + std::to_string(finding.number) + ": spec " +
+  const std::string comment = comment_prefix(file_.path());
+  std::string header = comment + "scenfuzz finding " + std::to_string(finding.number) + ": spec " +
                        finding.objective_name + " violated, robustness " +
                        format_number(verdict.robustness) + " at " +
                        format_number(std::round(verdict.time * 1000) / 1000) + " s";
   if (!verdict.atom_text.empty()) header += " (" + verdict.atom_text + ")";
-  header += "\n// from " + file_.path() + ", search seed " + std::to_string(options_.seed) +
-            ", evaluation " + std::to_string(finding.evaluation) + " (" + options_.algorithm + ")";
+  header += "\n" + comment + "from " + file_.path() + ", search seed " +
+            std::to_string(options_.seed) + ", evaluation " + std::to_string(finding.evaluation) +
+            " (" + options_.algorithm + ")";
   if (!finding.signature.empty()) header += ", collision " + finding.signature;
-  header += "\n// replay: scenfuzz run " + shell_quote(scenario_path.string()) + " --seed " +
-            std::to_string(finding.seed) + simulation_flags(options_) + "\n";
+  header += "\n" + comment + "replay: scenfuzz run " + shell_quote(scenario_path.string()) +
+            " --seed " + std::to_string(finding.seed) + simulation_flags(options_) + "\n";
   std::vector<std::string> lane_ids;
   for (const Lane& lane : run.map->lanes()) lane_ids.push_back(lane.id);
   const std::vector<std::pair<fs::path, std::string>> files = {
-      {scenario_path, header + avunit::print_concrete(file_, scenario_, run.values)},
+      {scenario_path, header + print_concrete_scenario(file_, scenario_, run.values)},
       {dir_ / "findings" / (stem + ".csv"), trace_csv(*run.trace, lane_ids)},
       {dir_ / "findings" / (stem + ".svg"), render_trace_svg(*run.map, *run.trace)},
   };

@@ -7,7 +7,7 @@
 
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
-#include "lang/avunit/avunit.hpp"
+#include "fuzz/scenario_language.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/number_format.hpp"
 #include "sampler/parameter_space.hpp"
@@ -116,7 +116,7 @@ void print_json(const std::string& path, const ParameterSpace& space, std::ostre
 int run_space(const std::string& path, bool json, std::ostream& out, std::ostream& err) {
   std::optional<SourceFile> file = read_input(path, err);
   if (!file) return kExitBadInput;
-  const avunit::ParseResult result = avunit::parse(*file);
+  const ScenarioParse result = parse_scenario_file(*file);
   err << format_diagnostics(*file, result.diagnostics);
   if (!result.ok()) return kExitBadInput;
 

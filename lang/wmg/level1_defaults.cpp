@@ -78,7 +78,7 @@ constexpr std::array kTable{
     range(Q::junction_size, "staggered", "Width and depth", 15, 40, "m", "two offset T-junctions"),
     range(Q::junction_size, "crossroad", "Width and depth", 15, 25, "m", "two crossing two-lane roads"),
     range(Q::junction_size, "grade separated junction", "Width and depth", 50, 150, "m", "slip roads and a bridge"),
-    range(Q::junction_size, "normal roundabout", "Diameter", 36, 100, "m", "inscribed circle diameter (UK DMRB CD 116)"),
+    range(Q::junction_size, "normal roundabout", "Diameter", 40, 100, "m", "inscribed circle diameter (UK DMRB CD 116 says 36-100; 40 is the map generator's smallest ring)"),
     range(Q::junction_size, "large roundabout", "Diameter", 100, 200, "m", "inscribed circle diameter"),
     range(Q::junction_size, "double roundabout", "Diameter", 20, 40, "m", "each of the two circles"),
     range(Q::junction_size, "compact roundabout", "Diameter", 28, 36, "m", "inscribed circle diameter (UK DMRB CD 116)"),

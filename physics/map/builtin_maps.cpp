@@ -51,7 +51,7 @@ std::vector<RegisteredMap> make_registry() {
   maps.push_back(
       {{"curve",
         "a two-way road: a straight, a circular bend, a straight; lanes fwd_k and bwd_k",
-        {{"radius", 100, 20, 2000, "m", "radius of the bend's reference line (the centre line)"},
+        {{"radius", 100, 20, 10000, "m", "radius of the bend's reference line (the centre line)"},
          {"angle", 90, -180, 180, "deg", "how far the road turns; positive bends left"},
          {"straight_before", 100, 0, 5000, "m", "straight before the bend"},
          {"straight_after", 100, 0, 5000, "m", "straight after the bend"},

@@ -13,6 +13,7 @@
 #include "physics/map/lane_route.hpp"
 #include "physics/map/scenario_position.hpp"
 #include "physics/planning/path_planner.hpp"
+#include "physics/simulation/relative_position.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -34,6 +35,8 @@ struct Context {
   Diagnostics& diagnostics;
   std::optional<MapPose> ego_pose;
   std::unordered_map<std::string, double> initial_headings;  // by actor name
+  std::unordered_map<std::string, MapPose> initial_poses;    // by actor name
+  std::string actor;  // the actor being prepared, for messages
   double duration = kDefaultDuration;
 };
 
@@ -78,12 +81,43 @@ std::optional<double> reference_heading(Context& context, const Direction& direc
   return std::nullopt;
 }
 
+// `pose` turned to the heading `state` gives.
+std::optional<MapPose> with_heading(Context& context, const State& state, MapPose pose) {
+  double angle = heading_in_radians(*state.heading, context.values);
+  if (!std::isfinite(angle)) {
+    context.diagnostics.error(state.heading->location, "the heading is not a finite number");
+    return std::nullopt;
+  }
+  if (state.heading->relative_to) {
+    auto reference = reference_heading(context, *state.heading->relative_to);
+    if (!reference) return std::nullopt;
+    angle += *reference;
+  }
+  pose.heading = angle;
+  return pose;
+}
+
 // A state's pose: its position, and its heading (the lane's direction when it gives none).
 std::optional<MapPose> place_state(Context& context, const State& state) {
   if (state.position.kind == PositionKind::relative) {
-    context.diagnostics.error(state.position.location,
-                              "positions relative to another actor are not simulated yet");
-    return std::nullopt;
+    const Position& position = state.position;
+    auto reference = context.initial_poses.find(position.reference);
+    if (reference == context.initial_poses.end()) {
+      context.diagnostics.error(position.location,
+                                context.actor + " is placed relative to '" + position.reference +
+                                    "', whose initial position is not known here (only the ego "
+                                    "and actors defined before " +
+                                    context.actor + " can be referred to)");
+      return std::nullopt;
+    }
+    auto pose = place_relative(context.map, position, context.values, reference->second,
+                               context.actor, context.diagnostics);
+    if (!pose || !state.heading) return pose;
+    // The position is taken along the lane, and so is a heading measured from nothing else.
+    double lane_heading = pose->heading;
+    auto turned = with_heading(context, state, *pose);
+    if (turned && !state.heading->relative_to) turned->heading += lane_heading;
+    return turned;
   }
   auto placed = place_position(context.map, state.position, context.values, context.ego_pose,
                                context.diagnostics);
@@ -101,18 +135,7 @@ std::optional<MapPose> place_state(Context& context, const State& state) {
     }
     return pose;
   }
-  double angle = heading_in_radians(*state.heading, context.values);
-  if (!std::isfinite(angle)) {
-    context.diagnostics.error(state.heading->location, "the heading is not a finite number");
-    return std::nullopt;
-  }
-  if (state.heading->relative_to) {
-    auto reference = reference_heading(context, *state.heading->relative_to);
-    if (!reference) return std::nullopt;
-    angle += *reference;
-  }
-  pose.heading = angle;
-  return pose;
+  return with_heading(context, state, pose);
 }
 
 // A speed the scenario gives, checked; `fallback` when it gives none.
@@ -267,6 +290,119 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
   return Trajectory(Polyline(points), std::move(profile), body.comfortable_deceleration);
 }
 
+const SourceLocation& where(const SourceLocation& preferred, const SourceLocation& fallback) {
+  return preferred.line > 0 ? preferred : fallback;
+}
+
+// An actor's manoeuvre phases with their primitives and arguments; references and conditions
+// are resolved once every actor is known (resolve_phases).
+std::optional<ManoeuvreScript> manoeuvre_script(Context& context, const Actor& actor,
+                                                const MapPose& start, double speed,
+                                                const ActorClass& body) {
+  ManoeuvreScript script;
+  script.initial.x = start.position.x;
+  script.initial.y = start.position.y;
+  script.initial.heading = start.heading;
+  script.initial.speed = std::min(speed, body.max_speed);
+  bool ok = true;
+  for (const ManoeuvrePhase& phase : actor.motion.phases) {
+    const SourceLocation& location = where(phase.location, actor.location);
+    PhaseMotion motion;
+    motion.manoeuvre = phase.manoeuvre;
+    auto choice = motion_primitive_named(phase.manoeuvre);
+    if (!choice) {
+      context.diagnostics.error(location, actor.name + "'s manoeuvre '" + phase.manoeuvre +
+                                              "' is not simulated (docs/simulation.md lists the "
+                                              "motion primitives)");
+      ok = false;
+      continue;
+    }
+    motion.choice = *choice;
+    for (const NamedValue& parameter : phase.parameters) {
+      std::optional<double>* slot = parameter.name == "speed"      ? &motion.speed
+                                    : parameter.name == "duration" ? &motion.duration
+                                    : parameter.name == "gap"      ? &motion.gap
+                                                                   : nullptr;
+      if (!slot) continue;  // other arguments describe the phase but do not move the actor
+      double value = evaluate(parameter.value, context.values);
+      bool valid = std::isfinite(value) && (parameter.name == "gap" || value >= 0);
+      if (!valid) {
+        context.diagnostics.error(where(parameter.location, location),
+                                  actor.name + "'s " + parameter.name + " must be a finite number" +
+                                      (parameter.name == "gap" ? "" : " >= 0") + ", not " +
+                                      format_number(value));
+        ok = false;
+        continue;
+      }
+      *slot = value;
+    }
+    bool turn = choice->primitive == MotionPrimitive::turn_left ||
+                choice->primitive == MotionPrimitive::turn_right;
+    if (turn) {
+      LaneTurn wanted =
+          choice->primitive == MotionPrimitive::turn_left ? LaneTurn::left : LaneTurn::right;
+      const auto& lanes = context.map.lanes();
+      bool any = std::any_of(lanes.begin(), lanes.end(), [&](const Lane& lane) {
+        return lane.junction && lane.turn == wanted;
+      });
+      if (!any)
+        context.diagnostics.warning(location, "map '" + context.map.name() + "' has no " +
+                                                  (wanted == LaneTurn::left ? "left" : "right") +
+                                                  "-turn connector; " + actor.name +
+                                                  " keeps its lane in '" + phase.manoeuvre + "'");
+    }
+    script.phases.push_back(std::move(motion));
+  }
+  if (!ok) return std::nullopt;
+  return script;
+}
+
+// Each phase's reference actor and conditions, and the scenario's timers and end conditions,
+// resolved against the prepared actors (`sources[i]` is the scenario's actor of setup.actors[i]).
+void resolve_phases(Context& context, SimulationSetup& setup,
+                    const std::vector<const Actor*>& sources) {
+  std::vector<std::string> names{setup.ego_name};
+  for (const ScriptedActor& actor : setup.actors) names.push_back(actor.name);
+  for (const NamedValue& timer : context.scenario.timers) {
+    double initial = evaluate(timer.value, context.values);
+    if (!std::isfinite(initial)) {
+      context.diagnostics.error(timer.location,
+                                "timer " + timer.name + " starts at " + format_number(initial));
+      continue;
+    }
+    setup.timer_names.push_back(timer.name);
+    setup.timer_initial_values.push_back(initial);
+  }
+  TriggerNames trigger_names{context.map, names, setup.timer_names, setup.timer_initial_values,
+                             context.values};
+  auto compile = [&](const std::optional<Formula>& formula, std::optional<TriggerCondition>& to) {
+    if (formula) to = compile_trigger(*formula, trigger_names, context.diagnostics);
+  };
+  for (std::size_t i = 0; i < setup.actors.size(); ++i) {
+    if (!setup.actors[i].manoeuvres) continue;
+    const Actor& actor = *sources[i];
+    auto& phases = setup.actors[i].manoeuvres->phases;
+    for (std::size_t p = 0; p < phases.size() && p < actor.motion.phases.size(); ++p) {
+      const ManoeuvrePhase& phase = actor.motion.phases[p];
+      if (!phase.reference.empty()) {
+        auto found = std::find(names.begin(), names.end(), phase.reference);
+        if (found == names.end())
+          context.diagnostics.error(where(phase.location, actor.location),
+                                    actor.name + "'s phase " + std::to_string(p + 1) +
+                                        " refers to an unknown actor '" + phase.reference + "'");
+        else
+          phases[p].reference = static_cast<std::uint32_t>(found - names.begin());
+      }
+      compile(phase.start_when, phases[p].start_when);
+      compile(phase.continue_while, phases[p].continue_while);
+    }
+  }
+  for (const Formula& formula : context.scenario.end_conditions) {
+    auto condition = compile_trigger(formula, trigger_names, context.diagnostics);
+    if (condition) setup.end_conditions.push_back(std::move(*condition));
+  }
+}
+
 std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
                                            std::size_t actor_index,
                                            const CollisionWorld& obstacles) {
@@ -278,9 +414,11 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
                           pedestrian                         ? ActorCategory::pedestrian
                           : actor.kind == ActorKind::cyclist ? ActorCategory::bicycle
                                                              : ActorCategory::car);
+  context.actor = actor.name;
   auto start = place_state(context, actor.initial);
   if (!start) return std::nullopt;
   context.initial_headings[actor.name] = start->heading;
+  context.initial_poses[actor.name] = *start;
   auto initial_speed = speed_of(context, actor.initial, 0.0);
   if (!initial_speed) return std::nullopt;
   BodyGeometry geometry{BodyShape::box, scripted.body.length, scripted.body.width,
@@ -319,10 +457,13 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
       trajectory = Trajectory(std::move(walk), {{0, speed}}, scripted.body.max_deceleration);
       break;
     }
-    case MotionKind::manoeuvres:
-      context.diagnostics.error(actor.motion.location,
-                                "manoeuvre phases (" + actor.name + ") are not simulated yet");
-      return std::nullopt;
+    case MotionKind::manoeuvres: {
+      auto script = manoeuvre_script(context, actor, *start, *initial_speed, scripted.body);
+      if (!script) return std::nullopt;
+      scripted.manoeuvres = std::move(*script);
+      trajectory = Trajectory::standing(*start);
+      break;
+    }
   }
   if (!trajectory) return std::nullopt;
   scripted.trajectory = std::move(*trajectory);
@@ -415,7 +556,8 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
                                                   const RoadMap& map, std::uint64_t seed,
                                                   Diagnostics& diagnostics) {
   std::size_t errors_before = diagnostics.error_count();
-  Context context{scenario, values, map, seed, diagnostics, std::nullopt, {}, kDefaultDuration};
+  Context context{scenario,     values, map, seed, diagnostics,
+                  std::nullopt, {},     {},  {},   kDefaultDuration};
   SimulationSetup setup;
   if (scenario.duration) {
     double duration = evaluate(*scenario.duration, values);
@@ -426,10 +568,12 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   const Actor& ego = scenario.ego;
   if (!ego.name.empty()) setup.ego_name = ego.name;
   setup.ego_body = body_of(context, ego, ActorCategory::car);
+  context.actor = setup.ego_name;
   auto ego_pose = place_state(context, ego.initial);
   if (!ego_pose) return std::nullopt;
   context.ego_pose = ego_pose;
   context.initial_headings[setup.ego_name] = ego_pose->heading;
+  context.initial_poses[setup.ego_name] = *ego_pose;
   auto ego_speed = speed_of(context, ego.initial, 0.0);
   if (!ego_speed) return std::nullopt;
   setup.ego_initial.x = ego_pose->position.x;
@@ -469,11 +613,15 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   }
 
   std::size_t index = 0;
+  std::vector<const Actor*> sources;
   for (const auto* group : {&scenario.vehicles, &scenario.pedestrians}) {
     for (const Actor& actor : *group) {
       try {
         auto scripted = prepare_actor(context, actor, ++index, obstacles);
-        if (scripted) setup.actors.push_back(std::move(*scripted));
+        if (scripted) {
+          setup.actors.push_back(std::move(*scripted));
+          sources.push_back(&actor);
+        }
       } catch (const std::exception& error) {
         // Inputs are checked above; this is the net under what they missed, so that one odd
         // scenario costs its evaluation, not the run.
@@ -482,6 +630,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     }
   }
 
+  resolve_phases(context, setup, sources);
   prepare_lights(context, setup);
   for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
     auto lane = map.find_lane(limit.lane);

@@ -18,15 +18,19 @@
 #include "physics/ego/perception.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/road_map.hpp"
+#include "physics/simulation/manoeuvre_script.hpp"
 
 namespace scenfuzz {
 
-// An NPC vehicle or pedestrian: it follows its trajectory and does not react.
+// An NPC vehicle or pedestrian: it follows its trajectory and does not react; or, with
+// `manoeuvres` (WMG SDL phases), it is driven online by a ManoeuvreDriver and its trajectory
+// only stands at its initial pose.
 struct ScriptedActor {
   std::string name;
   TraceActorKind kind = TraceActorKind::vehicle;
   ActorClass body;  // dimensions (a pedestrian's height from the scenario)
   Trajectory trajectory;
+  std::optional<ManoeuvreScript> manoeuvres;
 };
 
 struct StaticObstacle {
@@ -55,6 +59,11 @@ struct SimulationSetup {
   std::vector<std::pair<LaneIndex, double>> speed_limits;  // the scenario's, m/s
   Conditions conditions;
   double duration = 30;  // s
+  // WMG SDL timers: timer(T) reads seconds since the start plus the initial value.
+  std::vector<std::string> timer_names;
+  std::vector<double> timer_initial_values;
+  // The run ends at the first step where one holds.
+  std::vector<TriggerCondition> end_conditions;
 };
 
 // Evaluates `scenario` at `values` on `map`. Problems (an unknown lane, an unreachable target, a

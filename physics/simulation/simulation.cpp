@@ -1,7 +1,8 @@
 // The simulation loop. Each step: place every body, record new collisions, write one sample per
 // actor (state, lane, and how the ego perceived it), check the end conditions, then let the
 // driver choose the ego's control and advance the ego with the bicycle model. Scripted actors
-// are evaluated at each step's time directly, so they accumulate no integration error.
+// are evaluated at each step's time directly, so they accumulate no integration error; actors
+// with manoeuvre phases (WMG SDL) react to the world and are stepped by their ManoeuvreDriver.
 #include "physics/simulation/simulation.hpp"
 
 #include <algorithm>
@@ -13,6 +14,8 @@
 #include "physics/collision/collision_world.hpp"
 #include "physics/ego/plugin_driver.hpp"
 #include "physics/simulation/lane_tracker.hpp"
+#include "physics/simulation/manoeuvre_driver.hpp"
+#include "physics/simulation/observed_manoeuvre.hpp"
 #include "physics/simulation/plugin_observation.hpp"
 #include "physics/simulation/traffic_signals.hpp"
 
@@ -101,10 +104,21 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   world.add_body(ego_geometry,
                  {{setup.ego_initial.x, setup.ego_initial.y}, setup.ego_initial.heading}, false);
   states.push_back(setup.ego_initial);
-  for (const ScriptedActor& actor : setup.actors) {
+  // WMG SDL actors with manoeuvre phases react to the world, so they are driven step by step;
+  // drivers[k - 1] belongs to actor k.
+  std::vector<std::optional<ManoeuvreDriver>> drivers(setup.actors.size());
+  for (std::size_t i = 0; i < setup.actors.size(); ++i)
+    if (setup.actors[i].manoeuvres)
+      drivers[i].emplace(map, *setup.actors[i].manoeuvres, setup.actors[i].body,
+                         setup.actors[i].kind == TraceActorKind::pedestrian);
+  const bool watches_world =
+      !setup.end_conditions.empty() ||
+      std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d.has_value(); });
+  for (std::size_t i = 0; i < setup.actors.size(); ++i) {
+    const ScriptedActor& actor = setup.actors[i];
     BodyGeometry geometry = body_geometry(actor.body);
     trace.actors.push_back(describe(actor.name, actor.kind, actor.body.category, geometry));
-    KinematicState start = actor.trajectory.state_at(0);
+    KinematicState start = drivers[i] ? drivers[i]->state() : actor.trajectory.state_at(0);
     world.add_body(geometry, {{start.x, start.y}, start.heading}, false);
     states.push_back(start);
   }
@@ -138,6 +152,10 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver);
   TrafficSignals signals(map, setup.lights);
   std::vector<LaneTracker> lanes(actor_count, LaneTracker(widest_half_lane(map)));
+  std::vector<LaneFix> fixes(actor_count);
+  std::vector<ObservedManoeuvre> manoeuvres(actor_count, ObservedManoeuvre::going_ahead);
+  std::vector<double> lengths(actor_count);
+  for (std::size_t k = 0; k < actor_count; ++k) lengths[k] = trace.actors[k].length;
 
   std::optional<PluginDriver> plugin;
   if (!options.ego_plugin.empty()) {
@@ -159,7 +177,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   for (std::size_t step = 0;; ++step) {
     const double t = static_cast<double>(step) * dt;
     for (std::size_t k = 1; k <= setup.actors.size(); ++k)
-      states[k] = setup.actors[k - 1].trajectory.state_at(t);
+      states[k] =
+          drivers[k - 1] ? drivers[k - 1]->state() : setup.actors[k - 1].trajectory.state_at(t);
     for (std::size_t k = 0; k < first_obstacle; ++k)
       world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
 
@@ -177,8 +196,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
 
     trace.time.push_back(t);
     for (std::size_t k = 0; k < actor_count; ++k) {
-      LaneFix fix = lanes[k].update(map, {states[k].x, states[k].y}, states[k].heading);
-      append_sample(trace.actors[k], states[k], fix);
+      fixes[k] = lanes[k].update(map, {states[k].x, states[k].y}, states[k].heading);
+      append_sample(trace.actors[k], states[k], fixes[k]);
     }
     const std::vector<SignalColour>& colours = signals.colours_at(t);
     for (std::size_t light = 0; light < colours.size(); ++light)
@@ -198,9 +217,21 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       append_perceived(trace.perceived[k - 1], detected ? &seen[next] : nullptr);
     }
 
+    WorldSnapshot snapshot;
+    if (watches_world) {
+      for (std::size_t k = 0; k < first_obstacle; ++k)
+        manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
+      snapshot = {&map, t, states, fixes, manoeuvres, lengths, colours, !trace.collisions.empty()};
+    }
+
     route.update({states[kEgo].x, states[kEgo].y});
     if (ego_hit && options.stop_at_collision) {
       trace.end = EndReason::collision;
+      break;
+    }
+    if (std::any_of(setup.end_conditions.begin(), setup.end_conditions.end(),
+                    [&](const TriggerCondition& end) { return trigger_holds(end, snapshot); })) {
+      end_with(trace, EndReason::end_condition, TraceEventKind::end_condition, t);
       break;
     }
     if (setup.ego_target && route.length() - route.progress() <= options.target_reach) {
@@ -211,6 +242,10 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       end_with(trace, EndReason::duration, TraceEventKind::timeout, t);
       break;
     }
+
+    // Manoeuvre phases react to the world as it is now; they move on to t + dt with the ego.
+    for (std::size_t k = 1; k <= drivers.size(); ++k)
+      if (drivers[k - 1]) drivers[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt);
 
     VehicleControl control;
     if (plugin) {

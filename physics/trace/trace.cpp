@@ -25,6 +25,7 @@ std::string_view end_reason_name(EndReason reason) {
     case EndReason::target_reached: return "target_reached";
     case EndReason::collision: return "collision";
     case EndReason::ego_failure: return "ego_failure";
+    case EndReason::end_condition: return "end_condition";
   }
   return "unknown";
 }

@@ -66,6 +66,7 @@ enum class TraceEventKind {
   target_reached,  // the ego reached its target state
   timeout,         // the scenario's duration elapsed
   ego_failure,     // the ego driver (a plugin) crashed, hung or returned an error
+  end_condition,   // one of the scenario's end conditions held (WMG SDL `END:`)
 };
 
 struct TraceEvent {
@@ -75,7 +76,7 @@ struct TraceEvent {
   std::string message;          // ego_failure: what happened
 };
 
-enum class EndReason { duration, target_reached, collision, ego_failure };
+enum class EndReason { duration, target_reached, collision, ego_failure, end_condition };
 
 struct Trace {
   std::string map_name;

@@ -34,9 +34,11 @@ constexpr std::array all_shapes{BodyShape::box, BodyShape::cylinder, BodyShape::
 constexpr std::array all_colours{SignalColour::red, SignalColour::yellow, SignalColour::green};
 constexpr std::array all_sides{BodySide::front, BodySide::rear, BodySide::left, BodySide::right};
 constexpr std::array all_event_kinds{TraceEventKind::collision, TraceEventKind::target_reached,
-                                     TraceEventKind::timeout, TraceEventKind::ego_failure};
+                                     TraceEventKind::timeout, TraceEventKind::ego_failure,
+                                     TraceEventKind::end_condition};
 constexpr std::array all_end_reasons{EndReason::duration, EndReason::target_reached,
-                                     EndReason::collision, EndReason::ego_failure};
+                                     EndReason::collision, EndReason::ego_failure,
+                                     EndReason::end_condition};
 
 std::string_view body_shape_name(BodyShape shape) {
   switch (shape) {
@@ -54,6 +56,7 @@ std::string_view event_kind_name(TraceEventKind kind) {
     case TraceEventKind::target_reached: return "target_reached";
     case TraceEventKind::timeout: return "timeout";
     case TraceEventKind::ego_failure: return "ego_failure";
+    case TraceEventKind::end_condition: return "end_condition";
   }
   return "unknown";
 }

@@ -1,0 +1,74 @@
+// Level-2 syntax tree to scenario IR (internal to the WMG front end): the shared state of one
+// translation and the translation of each section, one file per section. What the IR shapes and
+// names mean is the contract in docs/wmg-semantics.md.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "lang/diagnostic.hpp"
+#include "lang/scenario.hpp"
+#include "lang/wmg/syntax.hpp"
+
+namespace scenfuzz::wmg {
+
+// How the lanes `Rn.Lk` of one road are named in the built-in map the scenery becomes.
+struct RoadLanes {
+  std::string lane_prefix;         // lane k is `<lane_prefix><k-1>`: "east_", "fwd_", "west_in_"
+  int traffic_lanes = 0;           // lanes L1..Ln the map generates for this road
+  std::set<std::string> declared;  // lane names written in "Number of lanes [n] as [...]"
+};
+
+// One translation in progress: the template being built, its diagnostics, and the names the
+// sections declare for the others to check (roads, actors, timers, traffic lights).
+struct Translation {
+  explicit Translation(Diagnostics& diagnostics_) : diagnostics(diagnostics_) {}
+
+  ScenarioTemplate scenario;
+  Diagnostics& diagnostics;
+  std::map<std::string, RoadLanes> roads;
+  std::map<std::string, ActorKind> actors;  // every initialised actor, the ego included
+  std::set<std::string> timers;
+  // A junction's light (`TL1`) to the map's signal controlling its approach (`light_west`).
+  std::map<std::string, std::string> traffic_lights;
+  std::set<std::string> elements;  // junction and structure ids an actor can be "in"
+
+  // The Value a written number stands for, divided by `divisor` to make it SI: a constant for a
+  // lone number, else a new parameter `name` over [low, high] in the file's `unit`, located at
+  // the range's text (a finding replaces exactly that text).
+  Value number(const NumberRange& range, const std::string& name, const std::string& unit,
+               double divisor = 1.0, ParameterKind kind = ParameterKind::continuous);
+  // The map's lane id for `Rn.Lk`, or nullopt after an error naming the lane.
+  std::optional<std::string> lane_id(const LaneName& lane);
+  // True when `actor` is initialised; else reports that it is referenced but not initialised.
+  bool check_actor(const Identifier& actor);
+};
+
+// The scenery: the built-in map, its parameters, the lane naming, the junction's traffic lights.
+void translate_scenery(const Scenery& scenery, Translation& translation);
+// Initialisation, manoeuvre sequences, timers and end conditions: the actors and their motion.
+void translate_dynamics(const Dynamics& dynamics, Translation& translation);
+// Weather, time of day, light and connectivity.
+void translate_environment(const Environment& environment, Translation& translation);
+// Background traffic flows.
+void translate_traffic(const TrafficModel& traffic, Translation& translation);
+
+// The conditions of WHEN, WHILE and END as formulas over the signals of the contract. A WHEN's
+// `at a speed of` also lands in `speeds` (actor name to m/s): the speed that actor starts with.
+Formula when_formula(const std::vector<WhenCondition>& conditions, const std::string& prefix,
+                     Translation& translation, std::map<std::string, Value>& speeds);
+Formula while_formula(const WhileConstraint& constraint, const std::string& prefix,
+                      Translation& translation);
+Formula end_formula(const EndCondition& condition, const std::string& prefix,
+                    Translation& translation);
+
+// The sector as written: F, FSR, SR, RSR, R, RSL, SL, FSL.
+std::string sector_text(RelativeLocation location);
+
+// The whole level-2 file as a template (SourceLanguage::wmg_sdl).
+ScenarioTemplate translate_level2(const Level2File& file, Diagnostics& diagnostics);
+
+}  // namespace scenfuzz::wmg

@@ -1,0 +1,137 @@
+// ENVIRONMENT_ELEMENTS to weather components in [0, 1] and the time of day (docs/wmg-semantics.md,
+// "Environment"), and the traffic model's flows to background traffic.
+#include <string>
+
+#include "lang/wmg/scenario_translation.hpp"
+
+namespace scenfuzz::wmg {
+
+namespace {
+
+constexpr double kKilometresPerHour = 3.6;
+// The contract's scales: the rainfall, wind and visibility that count as full intensity.
+constexpr double kFullRain = 50.0;           // mm/h
+constexpr double kFullWind = 100.0;          // km/h
+constexpr double kClearVisibility = 1000.0;  // m
+constexpr double kOktas = 8.0;
+
+void add_weather(Translation& translation, const std::string& kind, Value intensity,
+                 std::optional<WeatherLevel> level, SourceLocation location) {
+  translation.scenario.environment->weather.push_back(
+      WeatherComponent{kind, std::move(intensity), level, location});
+}
+
+// The IR has no `min`: a range reaching past full intensity cannot be clamped, so the intensity
+// grows past 1 there, and the user is told.
+void warn_past_full(Translation& translation, const NumberRange& range, double full,
+                    const std::string& what) {
+  if (range.high > full)
+    translation.diagnostics.warning(
+        range.location,
+        what + " above " + std::to_string(static_cast<int>(full)) + " gives an intensity above 1");
+}
+
+void add_attribute(Translation& translation, const std::string& key, const Label& label) {
+  translation.scenario.environment->attributes.push_back(
+      Attribute{key, label.text, label.location});
+}
+
+std::optional<WeatherLevel> snow_level(const std::string& type) {
+  if (type == "Light Snow") return WeatherLevel::light;
+  if (type == "Moderate Snow") return WeatherLevel::middle;
+  if (type == "Heavy Snow") return WeatherLevel::heavy;
+  return std::nullopt;
+}
+
+double snow_intensity(WeatherLevel level) {
+  switch (level) {
+    case WeatherLevel::light: return 0.3;
+    case WeatherLevel::middle: return 0.6;
+    case WeatherLevel::heavy: return 0.9;
+  }
+  return 0.3;
+}
+
+}  // namespace
+
+void translate_environment(const Environment& environment, Translation& translation) {
+  translation.scenario.environment = scenfuzz::Environment{};
+  translation.scenario.environment->location = environment.location;
+  if (environment.wind) {
+    warn_past_full(translation, *environment.wind, kFullWind, "wind");
+    add_weather(translation, "wind",
+                translation.number(*environment.wind, "environment.wind", "km/h", kFullWind),
+                std::nullopt, environment.wind->location);
+  }
+  add_weather(translation, "cloudiness",
+              translation.number(environment.cloudiness, "environment.cloudiness", "oktas", kOktas),
+              std::nullopt, environment.cloudiness.location);
+  if (environment.particulates) {
+    if (environment.particulates->text == "Mist and Fog")
+      add_weather(translation, "fog", constant_value(0.5), std::nullopt,
+                  environment.particulates->location);
+    else
+      add_attribute(translation, "particulates", *environment.particulates);
+  }
+  const Rainfall& rain = environment.rainfall;
+  warn_past_full(translation, rain.intensity, kFullRain, "rainfall");
+  add_attribute(translation, "rainfall", rain.type);
+  add_weather(translation, "rain",
+              translation.number(rain.intensity, "environment.rainfall", "mm/h", kFullRain),
+              std::nullopt, rain.location);
+  if (environment.snowfall) {
+    const Snowfall& snow = *environment.snowfall;
+    const std::optional<WeatherLevel> level = snow_level(snow.type.text);
+    add_weather(translation, "snow",
+                constant_value(snow_intensity(level.value_or(WeatherLevel::light))), level,
+                snow.location);
+    warn_past_full(translation, snow.visibility, kClearVisibility, "snowfall visibility");
+    Value visibility = translation.number(snow.visibility, "environment.snowfall.visibility", "m",
+                                          kClearVisibility);
+    add_weather(
+        translation, "fog",
+        binary_value(ValueOp::subtract, constant_value(1.0), visibility, snow.visibility.location),
+        std::nullopt, snow.location);
+  }
+  if (environment.time_of_day)
+    translation.scenario.environment->time_of_day =
+        translation.number(*environment.time_of_day, "environment.time_of_day", "time of day");
+  add_attribute(translation, "illumination", environment.illumination);
+  add_attribute(translation, "light_source", environment.light_source);
+  if (environment.light_source_position) {
+    const LightSourcePosition& position = *environment.light_source_position;
+    translation.number(position.elevation, "environment.light_elevation", "deg", 1.0,
+                       ParameterKind::angle);
+    translation.scenario.environment->attributes.push_back(Attribute{
+        "light_position", sector_text(position.position.value), position.position.location});
+  }
+  if (environment.connectivity && !environment.connectivity->none) {
+    const Connectivity& connectivity = *environment.connectivity;
+    if (connectivity.link) add_attribute(translation, "communication", *connectivity.link);
+    if (connectivity.technology) add_attribute(translation, "technology", *connectivity.technology);
+    if (connectivity.positioning)
+      add_attribute(translation, "positioning", *connectivity.positioning);
+  }
+}
+
+void translate_traffic(const TrafficModel& traffic, Translation& translation) {
+  for (const Centroid& centroid : traffic.centroids) {
+    if (!translation.roads.contains(centroid.road.name))
+      translation.diagnostics.error(centroid.road.location,
+                                    "unknown road '" + centroid.road.name + "'");
+    translation.number(centroid.distance, "traffic." + centroid.id.name + ".distance", "m");
+  }
+  for (const TrafficFlow& flow : traffic.flows) {
+    scenfuzz::TrafficFlow result;
+    result.name = flow.id.name;
+    result.location = flow.location;
+    result.source_lane = translation.lane_id(flow.source_lane).value_or("");
+    result.destination_lane = translation.lane_id(flow.destination_lane).value_or("");
+    const std::string prefix = "traffic." + flow.id.name + ".";
+    result.rate = translation.number(flow.first, prefix + "rate", "veh/h");
+    result.speed = translation.number(flow.second, prefix + "speed", "km/h", kKilometresPerHour);
+    translation.scenario.traffic.flows.push_back(std::move(result));
+  }
+}
+
+}  // namespace scenfuzz::wmg

@@ -1,0 +1,374 @@
+#include "physics/simulation/manoeuvre_driver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "physics/map/lane_route.hpp"
+
+namespace scenfuzz {
+namespace {
+
+// A lane change (cut-in, cut-out) without a duration takes this long: typical of real ones.
+constexpr double kDefaultLaneChangeTime = 4;  // s
+// A pedestrian phase without a speed walks at a typical pace.
+constexpr double kDefaultWalkingSpeed = 1.4;  // m/s
+// How far ahead a turn looks for a junction connector of its kind.
+constexpr double kTurnSearchDistance = 1000;  // m
+// A speed within this of its target counts as reached.
+constexpr double kSpeedTolerance = 0.1;  // m/s
+
+// Minimum-jerk progress of a lateral move over normalised time x in [0, 1]: 0 to 1 with zero
+// velocity and acceleration at both ends, the shape of a human lane change.
+double smooth_progress(double x) { return x * x * x * (10 - 15 * x + 6 * x * x); }
+double smooth_progress_rate(double x) { return 30 * x * x * (1 - x) * (1 - x); }
+
+bool contains(const std::vector<LaneIndex>& lanes, LaneIndex lane) {
+  return std::find(lanes.begin(), lanes.end(), lane) != lanes.end();
+}
+
+bool is_turn(const Lane& lane, LaneTurn turn) { return lane.junction && lane.turn == turn; }
+
+}  // namespace
+
+ManoeuvreDriver::ManoeuvreDriver(const RoadMap& map, const ManoeuvreScript& script,
+                                 const ActorClass& body, bool pedestrian)
+    : map_(&map), script_(&script), body_(body), pedestrian_(pedestrian), state_(script.initial) {
+  walk_heading_ = state_.heading;
+  if (pedestrian_) return;
+  auto lane = project_to_lane(map, {state_.x, state_.y}, state_.heading);
+  if (lane && lane->inside) on_lane_ = LanePosition{lane->lane, lane->s, lane->lateral};
+}
+
+const PhaseMotion* ManoeuvreDriver::current() const {
+  return running_ ? &script_->phases[next_] : nullptr;
+}
+
+int ManoeuvreDriver::phase() const { return running_ ? static_cast<int>(next_) : -1; }
+
+void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
+  update_phases(world, self);
+  double acceleration = longitudinal_acceleration(dt);
+  if (on_lane_)
+    move_on_lane(acceleration, dt);
+  else
+    move_free(world, acceleration, dt);
+}
+
+void ManoeuvreDriver::update_phases(const WorldSnapshot& world, std::uint32_t self) {
+  const auto& phases = script_->phases;
+  // Each round ends a phase or starts one, so a chain of instant phases is bounded.
+  for (std::size_t round = 0; round <= 2 * phases.size(); ++round) {
+    if (running_) {
+      const PhaseMotion& phase = phases[next_];
+      phase_time_ = world.time - phase_start_;
+      if (phase.choice.primitive == MotionPrimitive::walk_cross && world.lanes[self].lane >= 0)
+        crossed_onto_lane_ = true;
+      // A WHILE ends the phase when it becomes false; until it has first held (a walker not yet
+      // in the lane its WHILE names), the phase ends as one without a WHILE would.
+      bool ends = phase_complete(world, self);
+      if (phase.continue_while) {
+        bool holds = trigger_holds(*phase.continue_while, world);
+        ends = while_held_ ? !holds : !holds && ends;
+        while_held_ = while_held_ || holds;
+      }
+      if (!ends) return;
+      // Between phases and after the last, the actor holds its lane offset, speed and heading.
+      running_ = false;
+      ++next_;
+      lateral_duration_ = 0;
+      turn_wanted_ = LaneTurn::none;
+    }
+    if (next_ >= phases.size()) return;
+    const PhaseMotion& phase = phases[next_];
+    if (phase.start_when && !trigger_holds(*phase.start_when, world)) return;
+    running_ = true;
+    phase_start_ = world.time;
+    phase_time_ = 0;
+    start_phase(world, self);
+  }
+}
+
+void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self) {
+  const PhaseMotion& phase = script_->phases[next_];
+  const double speed = state_.speed;
+  turn_wanted_ = LaneTurn::none;
+  turn_entered_ = turn_done_ = turn_available_ = false;
+  crossed_onto_lane_ = false;
+  while_held_ = false;
+  lateral_duration_ = 0;
+  if (on_lane_) lateral_from_ = on_lane_->lateral;
+
+  // Without a duration, a speed change takes what a calm driver needs for it.
+  primitive_duration_ = 0;
+  if (phase.speed) {
+    double change = *phase.speed - speed;
+    primitive_duration_ =
+        change > 0 ? change / body_.max_acceleration : -change / body_.comfortable_deceleration;
+  }
+  if (phase.duration) primitive_duration_ = *phase.duration;
+
+  switch (phase.choice.primitive) {
+    case MotionPrimitive::keep_lane: break;
+    case MotionPrimitive::lane_change:
+    case MotionPrimitive::cut_in:
+      primitive_duration_ = phase.duration.value_or(kDefaultLaneChangeTime);
+      change_lane(world, self, phase.choice.side, primitive_duration_);
+      if (phase.gap) plan_cut_in(world, phase);
+      break;
+    case MotionPrimitive::stop:
+      primitive_duration_ = phase.duration.value_or(speed / body_.comfortable_deceleration);
+      break;
+    case MotionPrimitive::stopped: primitive_duration_ = 0; break;
+    case MotionPrimitive::turn_left:
+    case MotionPrimitive::turn_right: {
+      turn_wanted_ =
+          phase.choice.primitive == MotionPrimitive::turn_left ? LaneTurn::left : LaneTurn::right;
+      if (!on_lane_) break;
+      // Look along the lanes this actor will take for a fork offering the turn.
+      LaneIndex lane = on_lane_->lane;
+      double travelled = -on_lane_->s;
+      if (is_turn(map_->lane(lane), turn_wanted_)) turn_available_ = turn_entered_ = true;
+      for (int hops = 0; !turn_available_ && travelled < kTurnSearchDistance && hops < 64; ++hops) {
+        for (LaneIndex successor : map_->lane(lane).successors)
+          if (is_turn(map_->lane(successor), turn_wanted_)) turn_available_ = true;
+        travelled += map_->lane(lane).length();
+        LaneIndex next = next_lane(lane);
+        if (next == lane) break;
+        lane = next;
+      }
+      // Without a junction ahead the actor keeps its lane (docs/simulation.md).
+      break;
+    }
+    case MotionPrimitive::collide:
+      on_lane_.reset();  // it leaves the lanes to head for its reference
+      break;
+    case MotionPrimitive::walk: walk_heading_ = state_.heading; break;
+    case MotionPrimitive::walk_cross: {
+      // Across the nearest lane: from a pavement, towards the road; standing in a lane (WMG SDL
+      // places pavement walkers in the kerb-side lane), towards the side with more road.
+      auto lane = project_to_lane(*map_, {state_.x, state_.y});
+      if (!lane) break;
+      const Lane& nearest = map_->lane(lane->lane);
+      bool left = lane->lateral < 0;
+      if (lane->inside)
+        left = !nearest.left_forward_neighbours.empty() || !nearest.left_reverse_neighbours.empty();
+      double across = left ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+      walk_heading_ = lane_heading_at(*map_, lane->lane, lane->s) + across;
+      break;
+    }
+    case MotionPrimitive::walk_towards:
+    case MotionPrimitive::walk_away: break;
+  }
+}
+
+void ManoeuvreDriver::change_lane(const WorldSnapshot& world, std::uint32_t self, LaneSide side,
+                                  double duration) {
+  if (!on_lane_) return;
+  const PhaseMotion& phase = script_->phases[next_];
+  const Lane& lane = map_->lane(on_lane_->lane);
+  const std::int32_t reference_lane = world.lanes[phase.reference].lane;
+  const bool cut_in = phase.choice.primitive == MotionPrimitive::cut_in;
+  const auto& left = lane.left_forward_neighbours;
+  const auto& right = lane.right_forward_neighbours;
+  std::optional<LaneIndex> target;
+  auto reference_in = [&](const std::vector<LaneIndex>& lanes) {
+    return cut_in && reference_lane >= 0 && contains(lanes, static_cast<LaneIndex>(reference_lane));
+  };
+  auto first = [](const std::vector<LaneIndex>& lanes) -> std::optional<LaneIndex> {
+    if (lanes.empty()) return std::nullopt;
+    return lanes.front();
+  };
+  switch (side) {
+    case LaneSide::towards_reference:
+      if (reference_in(left) || reference_in(right)) {
+        target = static_cast<LaneIndex>(reference_lane);
+      } else if (reference_lane != static_cast<std::int32_t>(on_lane_->lane)) {
+        // The reference is further away: one lane towards it.
+        bool reference_left = lateral_offset(world.states[phase.reference], world.states[self]) > 0;
+        target = reference_left ? first(left) : first(right);
+      }
+      break;
+    case LaneSide::left:
+      target = reference_in(left) ? static_cast<LaneIndex>(reference_lane) : first(left);
+      // A cut-out must leave the lane: to the other side when the named one has no lane.
+      if (!target && !cut_in) target = first(right);
+      break;
+    case LaneSide::right:
+      target = reference_in(right) ? static_cast<LaneIndex>(reference_lane) : first(right);
+      if (!target && !cut_in) target = first(left);
+      break;
+    case LaneSide::left_else_right: target = left.empty() ? first(right) : first(left); break;
+  }
+  if (target) {
+    // Continue in the target lane's frame, starting as far to its side as the actor now is.
+    PolylineProjection there = map_->lane(*target).centre_line.project({state_.x, state_.y});
+    on_lane_ = LanePosition{*target, there.s, there.lateral};
+  }
+  // Also without a target lane: settle onto the centre line of the lane it is in.
+  lateral_from_ = on_lane_->lateral;
+  lateral_duration_ = std::max(duration, 1e-3);
+}
+
+void ManoeuvreDriver::plan_cut_in(const WorldSnapshot& world, const PhaseMotion& phase) {
+  // Cover, over the duration, the distance that puts this actor's rear bumper `gap` ahead of the
+  // reference's front bumper, the reference going on at its present speed (the plan is made
+  // once, as a driver commits to a cut-in; the reference may then react): accelerate evenly to
+  // a middle speed over the first half, then evenly to the phase's speed over the second, each
+  // within the class's limits.
+  const double duration = primitive_duration_;
+  const double half = duration / 2;
+  const double speed = state_.speed;
+  const KinematicState& reference = world.states[phase.reference];
+  const double gap_now = longitudinal_offset(state_, reference) -
+                         world.lengths[phase.reference] / 2 - body_.length / 2;
+  const double distance = *phase.gap - gap_now + reference.speed * duration;
+  auto limited = [&](double a) {
+    return std::clamp(a, -body_.max_deceleration, body_.max_acceleration);
+  };
+  if (!phase.speed) {
+    double even = limited(2 * (distance - speed * duration) / (duration * duration));
+    cut_in_acceleration_ = {even, even};
+    return;
+  }
+  double middle = std::max(0.0, (2 * distance / half - speed - *phase.speed) / 2);
+  cut_in_acceleration_[0] = limited((middle - speed) / half);
+  double reached = std::max(0.0, speed + cut_in_acceleration_[0] * half);
+  cut_in_acceleration_[1] = limited((*phase.speed - reached) / half);
+}
+
+double ManoeuvreDriver::longitudinal_acceleration(double dt) const {
+  const PhaseMotion* phase = current();
+  if (!phase) return 0;
+  const double speed = state_.speed;
+  const double remaining = primitive_duration_ - phase_time_;
+  auto towards_speed = [&](double target) { return (target - speed) / std::max(remaining, dt); };
+  double acceleration = 0;
+  switch (phase->choice.primitive) {
+    case MotionPrimitive::stop: acceleration = towards_speed(0); break;
+    case MotionPrimitive::stopped: acceleration = -body_.max_deceleration; break;
+    case MotionPrimitive::cut_in:
+      if (phase->gap && remaining > 0) {
+        acceleration = phase_time_ < primitive_duration_ / 2 ? cut_in_acceleration_[0]
+                                                             : cut_in_acceleration_[1];
+      } else if (phase->speed) {
+        acceleration = towards_speed(*phase->speed);
+      }
+      break;
+    default:
+      if (phase->speed) acceleration = towards_speed(*phase->speed);
+      break;
+  }
+  return std::clamp(acceleration, -body_.max_deceleration, body_.max_acceleration);
+}
+
+LaneIndex ManoeuvreDriver::next_lane(LaneIndex from) const {
+  const auto& successors = map_->lane(from).successors;
+  if (successors.empty()) return from;
+  if (turn_wanted_ != LaneTurn::none && !turn_done_)
+    for (LaneIndex successor : successors)
+      if (map_->lane(successor).turn == turn_wanted_) return successor;
+  for (LaneIndex successor : successors)
+    if (map_->lane(successor).turn == LaneTurn::none) return successor;
+  return successors.front();
+}
+
+void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
+  LanePosition& at = *on_lane_;
+  const double v0 = state_.speed;
+  double v1 = std::clamp(v0 + acceleration * dt, 0.0, body_.max_speed);
+  at.s += (v0 + v1) / 2 * dt;
+  while (at.s > map_->lane(at.lane).length()) {
+    LaneIndex next = next_lane(at.lane);
+    if (next == at.lane) {  // a dead end: the actor stops there
+      at.s = map_->lane(at.lane).length();
+      v1 = 0;
+      break;
+    }
+    if (turn_entered_ && is_turn(map_->lane(at.lane), turn_wanted_)) turn_done_ = true;
+    LinkPoints link = link_points(*map_, at.lane, next);
+    at.s = at.s - link.exit_s + link.entry_s;
+    at.lane = next;
+    if (turn_wanted_ != LaneTurn::none && is_turn(map_->lane(next), turn_wanted_))
+      turn_entered_ = true;
+  }
+  lateral_rate_ = 0;
+  if (lateral_duration_ > 0) {
+    // The lateral curve's state at the end of this step.
+    double x = std::clamp((phase_time_ + dt) / lateral_duration_, 0.0, 1.0);
+    at.lateral = lateral_from_ * (1 - smooth_progress(x));
+    lateral_rate_ = -lateral_from_ * smooth_progress_rate(x) / lateral_duration_;
+  }
+  auto pose = lane_pose_at(*map_, at.lane, at.s, at.lateral);
+  if (!pose) return;
+  // The heading follows the path the sideways move draws (at walking pace or less, the body
+  // would swing round; a vehicle there turns no further than a slow one would).
+  double heading = pose->heading + std::atan2(lateral_rate_, std::max(v1, 1.0));
+  state_.acceleration = (v1 - v0) / dt;
+  state_.yaw_rate = angle_difference(heading, state_.heading) / dt;
+  state_.x = pose->position.x;
+  state_.y = pose->position.y;
+  state_.heading = heading;
+  state_.speed = v1;
+}
+
+void ManoeuvreDriver::move_free(const WorldSnapshot& world, double acceleration, double dt) {
+  const PhaseMotion* phase = current();
+  MotionPrimitive primitive = phase ? phase->choice.primitive : MotionPrimitive::walk;
+  double target_heading = state_.heading;
+  if (phase && (primitive == MotionPrimitive::walk_towards ||
+                primitive == MotionPrimitive::walk_away || primitive == MotionPrimitive::collide)) {
+    const KinematicState& reference = world.states[phase->reference];
+    target_heading = std::atan2(reference.y - state_.y, reference.x - state_.x);
+    if (primitive == MotionPrimitive::walk_away) target_heading += std::numbers::pi;
+  } else if (phase &&
+             (primitive == MotionPrimitive::walk || primitive == MotionPrimitive::walk_cross)) {
+    target_heading = walk_heading_;
+  }
+
+  if (pedestrian_) {
+    PedestrianControl control{target_heading, state_.speed};
+    if (phase) {
+      if (primitive == MotionPrimitive::stop || primitive == MotionPrimitive::stopped)
+        control.speed = 0;
+      else if (phase->speed)
+        control.speed = *phase->speed;
+      else if (primitive != MotionPrimitive::keep_lane && state_.speed <= 0)
+        control.speed = kDefaultWalkingSpeed;
+    }
+    state_ = step_pedestrian(state_, control, body_, dt);
+    return;
+  }
+  // Pure pursuit of the target direction, looking a speed-dependent distance ahead.
+  VehicleControl control{acceleration, 0};
+  double bearing = angle_difference(target_heading, state_.heading);
+  double look_ahead = std::max(5.0, state_.speed);
+  control.steering_angle = std::atan(2 * body_.wheelbase * std::sin(bearing) / look_ahead);
+  state_ = step_bicycle(state_, control, body_, dt);
+}
+
+bool ManoeuvreDriver::phase_complete(const WorldSnapshot& world, std::uint32_t self) const {
+  const PhaseMotion& phase = script_->phases[next_];
+  const bool elapsed = phase_time_ >= primitive_duration_;
+  const bool speed_reached =
+      !phase.speed || std::abs(state_.speed - *phase.speed) < kSpeedTolerance;
+  switch (phase.choice.primitive) {
+    case MotionPrimitive::keep_lane: return elapsed && speed_reached;
+    case MotionPrimitive::lane_change:
+    case MotionPrimitive::cut_in: return elapsed && speed_reached;
+    case MotionPrimitive::stop:
+    case MotionPrimitive::stopped: return state_.speed <= 0;
+    case MotionPrimitive::turn_left:
+    case MotionPrimitive::turn_right:
+      return turn_available_ ? turn_done_ : elapsed && speed_reached;
+    case MotionPrimitive::walk_cross:
+      return (phase.duration && elapsed) || (crossed_onto_lane_ && world.lanes[self].lane < 0);
+    case MotionPrimitive::collide:
+    case MotionPrimitive::walk:
+    case MotionPrimitive::walk_towards:
+    case MotionPrimitive::walk_away: return phase.duration && elapsed;
+  }
+  return false;
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,83 @@
+// Drives one WMG SDL actor through its manoeuvre phases, online: its phases start and end on
+// conditions over the current world (the ego's speed, offsets, lights, timers), so its motion
+// cannot be planned before the run as scripted NPCs' is. Vehicles move along the lane graph
+// (arc length, lateral offset and speed, integrated each step; lane changes are smooth sideways
+// curves in the target lane's frame); pedestrians and vehicles off every lane move freely with
+// the point-mass and bicycle models.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "physics/actors/actor_class.hpp"
+#include "physics/map/lane_queries.hpp"
+#include "physics/simulation/manoeuvre_script.hpp"
+#include "physics/simulation/world_snapshot.hpp"
+
+namespace scenfuzz {
+
+class ManoeuvreDriver {
+ public:
+  // Starts at script.initial. `script` and `map` must outlive the driver.
+  ManoeuvreDriver(const RoadMap& map, const ManoeuvreScript& script, const ActorClass& body,
+                  bool pedestrian);
+
+  const KinematicState& state() const { return state_; }
+  // The index of the phase running, or -1 while none is (before the first, between phases that
+  // wait for their start condition, after the last).
+  int phase() const;
+
+  // Starts and ends phases by what holds in `world` (where this actor is actor `self`), then
+  // moves the actor on by dt.
+  void step(const WorldSnapshot& world, std::uint32_t self, double dt);
+
+ private:
+  void update_phases(const WorldSnapshot& world, std::uint32_t self);
+  void start_phase(const WorldSnapshot& world, std::uint32_t self);
+  bool phase_complete(const WorldSnapshot& world, std::uint32_t self) const;
+  void change_lane(const WorldSnapshot& world, std::uint32_t self, LaneSide side, double duration);
+  void plan_cut_in(const WorldSnapshot& world, const PhaseMotion& phase);
+  double longitudinal_acceleration(double dt) const;
+  void move_on_lane(double acceleration, double dt);
+  void move_free(const WorldSnapshot& world, double acceleration, double dt);
+  LaneIndex next_lane(LaneIndex from) const;
+  const PhaseMotion* current() const;
+
+  const RoadMap* map_;
+  const ManoeuvreScript* script_;
+  ActorClass body_;
+  bool pedestrian_;
+  KinematicState state_;
+
+  std::size_t next_ = 0;  // the phase running, or the next to start
+  bool running_ = false;
+  double phase_start_ = 0;   // s, world time the current phase started
+  double phase_time_ = 0;    // s, how long the current phase has run
+  bool while_held_ = false;  // the current phase's continue_while has held at some step
+  // How long the current primitive takes (the phase's duration, or what its speed change needs).
+  double primitive_duration_ = 0;
+
+  // On a lane: where along it and how far to its left.
+  std::optional<LanePosition> on_lane_;
+  double lateral_rate_ = 0;  // m/s, for the heading
+  // A lateral move towards the lane's centre line: from `lateral_from_` at phase time 0 to 0 at
+  // `lateral_duration_`; none when lateral_duration_ is 0.
+  double lateral_from_ = 0;
+  double lateral_duration_ = 0;
+
+  // A cut-in's accelerations over the first and second half of its duration.
+  std::array<double, 2> cut_in_acceleration_{};
+
+  // Turns: the connector kind wanted at the next fork, and how far the turn got.
+  LaneTurn turn_wanted_ = LaneTurn::none;
+  bool turn_entered_ = false;
+  bool turn_done_ = false;
+  bool turn_available_ = false;
+
+  // Pedestrians: where they walk; crossings: whether they have been on a lane yet.
+  double walk_heading_ = 0;
+  bool crossed_onto_lane_ = false;
+};
+
+}  // namespace scenfuzz

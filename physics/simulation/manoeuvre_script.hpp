@@ -1,0 +1,61 @@
+// A WMG SDL actor's manoeuvre phases resolved for one run (docs/wmg-semantics.md, "Manoeuvre
+// phases"): each MP_TYPE mapped onto a motion primitive, its arguments evaluated at the point of
+// the search space, its reference actor and conditions resolved. ManoeuvreDriver runs it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/actors/kinematics.hpp"
+#include "physics/simulation/manoeuvre_trigger.hpp"
+
+namespace scenfuzz {
+
+enum class MotionPrimitive {
+  keep_lane,     // Drive_*, Misc_*: keep the lane, change speed to `speed` over `duration`
+  lane_change,   // LaneChangeLeft/Right_* (not a cut-in), *_CutOut: to a neighbour lane
+  cut_in,        // *_CutIn: into the reference's lane, ending `gap` ahead of it
+  stop,          // Stop: brake to a standstill over `duration`
+  stopped,       // Stopped: stand still
+  turn_left,     // TurnLeft_*: the left connector at the next junction
+  turn_right,    // TurnRight_*
+  collide,       // Collide_*: head for the reference actor
+  walk,          // Walk/Run/Slide_* (pedestrians): straight on along the heading
+  walk_cross,    // Walk/Run/Slide_Cross: straight across the lane
+  walk_towards,  // Walk/Run/Slide_Towards: towards the reference
+  walk_away,     // Walk/Run/Slide_Away: away from the reference
+};
+
+// Which neighbour lane a lane change goes to.
+enum class LaneSide { towards_reference, left, right, left_else_right };
+
+struct PrimitiveChoice {
+  MotionPrimitive primitive = MotionPrimitive::keep_lane;
+  LaneSide side = LaneSide::towards_reference;
+};
+
+// The primitive an MP_TYPE names ("Drive_CutIn", "LaneChangeLeft_CutOut", "Stop", "Walk_Cross",
+// "turn_left"; case and underscores do not matter); nullopt for one the simulator lacks
+// (Reverse_*, unknown words).
+std::optional<PrimitiveChoice> motion_primitive_named(std::string_view manoeuvre);
+
+struct PhaseMotion {
+  std::string manoeuvre;  // as written, for messages
+  PrimitiveChoice choice;
+  std::optional<double> speed;     // m/s
+  std::optional<double> duration;  // s
+  std::optional<double> gap;       // m, front bumper of the reference to this actor's rear
+  std::uint32_t reference = 0;     // actor id; the ego when the phase names none
+  std::optional<TriggerCondition> start_when;
+  std::optional<TriggerCondition> continue_while;
+};
+
+struct ManoeuvreScript {
+  KinematicState initial;
+  std::vector<PhaseMotion> phases;
+};
+
+}  // namespace scenfuzz

@@ -1,0 +1,27 @@
+// The world at one step as manoeuvre triggers and manoeuvre phases see it: every actor's true
+// state and lane (by actor id, the ego first, as in the trace), the lights, the clock. Views into
+// the simulation loop's own arrays, valid for that step only.
+#pragma once
+
+#include <span>
+
+#include "physics/actors/kinematics.hpp"
+#include "physics/map/map_description.hpp"
+#include "physics/map/road_map.hpp"
+#include "physics/simulation/lane_tracker.hpp"
+#include "physics/simulation/observed_manoeuvre.hpp"
+
+namespace scenfuzz {
+
+struct WorldSnapshot {
+  const RoadMap* map = nullptr;
+  double time = 0;                                // s since the start
+  std::span<const KinematicState> states;         // by actor id
+  std::span<const LaneFix> lanes;                 // by actor id
+  std::span<const ObservedManoeuvre> manoeuvres;  // by actor id
+  std::span<const double> lengths;                // body length by actor id
+  std::span<const SignalColour> lights;           // by index into RoadMap::traffic_lights()
+  bool collided = false;                          // some collision happened at or before `time`
+};
+
+}  // namespace scenfuzz
