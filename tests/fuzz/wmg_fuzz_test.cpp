@@ -1,0 +1,76 @@
+// WMG SDL end to end, through the real executable as a user runs it: every corpora/wmg file (both
+// levels) is searched with the budget of 500 and finishes cleanly; the cut-in yields
+// findings, written as .sdl files that replay to their robustness.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "command_runner.hpp"
+
+namespace scenfuzz {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Outcome;
+using test::slurp;
+
+const fs::path kCorpus = fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "wmg";
+
+class WmgFuzzTest : public test::CommandTest {
+ protected:
+  Outcome fuzz(const fs::path& scenario, const std::string& seed) {
+    return scenfuzz({"--budget", "500", "--seed", seed, "-j", "2", "--quiet", "--out",
+                     (dir_ / "out").string(), scenario.string()});
+  }
+  nlohmann::json summary() const {
+    return nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
+  }
+};
+
+TEST_F(WmgFuzzTest, EveryCorpusFileIsSearchedToTheEndOfItsBudget) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(kCorpus))
+    if (entry.path().extension() == ".sdl") files.push_back(entry.path());
+  ASSERT_GE(files.size(), 10u);
+  for (const fs::path& file : files) {
+    fs::remove_all(dir_ / "out");
+    const Outcome run = fuzz(file, "1");
+    // 0: no finding, 1: findings; never bad input or an internal error.
+    EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 1) << file << "\n" << run.err;
+    if (run.exit_code > 1) continue;
+    const nlohmann::json summary = this->summary();
+    EXPECT_EQ(summary["complete"], true) << file;
+    EXPECT_EQ(summary["stop"], "budget") << file;
+    EXPECT_GE(summary["judged"].get<int>(), 400) << file << ": most points should simulate";
+  }
+}
+
+TEST_F(WmgFuzzTest, TheCutInYieldsFindingsThatReplay) {
+  const Outcome run = fuzz(kCorpus / "cut_in.sdl", "1");
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  const nlohmann::json findings = summary()["findings"];
+  ASSERT_GE(findings.size(), 1u);
+  const std::string scenario = findings[0]["file"].get<std::string>();
+  EXPECT_EQ(fs::path(scenario).extension(), ".sdl");
+  const std::string text = slurp(scenario);
+  // The concrete file has no range (`a to b`) left outside comments, and says how to replay it
+  // in a `#` comment.
+  EXPECT_FALSE(
+      std::regex_search(text, std::regex("^[^#\\n]*[0-9] to -?[0-9]", std::regex::multiline)))
+      << text;
+  std::smatch replay;
+  ASSERT_TRUE(
+      std::regex_search(text, replay, std::regex("# replay: scenfuzz run (\\S+) --seed (\\d+)")));
+  const Outcome replayed = scenfuzz(
+      {"run", scenario, "--seed", replay[2].str(), "--json", "--out", (dir_ / "replay").string()});
+  ASSERT_EQ(replayed.exit_code, 1) << replayed.err;
+  EXPECT_NEAR(nlohmann::json::parse(replayed.out)["specs"][0]["robustness"].get<double>(),
+              findings[0]["robustness"].get<double>(), 1e-9);
+}
+
+}  // namespace
+}  // namespace scenfuzz
