@@ -8,6 +8,7 @@
 
 #include "lang/avunit/builtins.hpp"
 #include "lang/avunit/item.hpp"
+#include "lang/edit_distance.hpp"
 #include "lang/number_format.hpp"
 #include "lang/walk_values.hpp"
 
@@ -57,21 +58,6 @@ std::string describe(const Item& item) {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1u : 0u)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
 
 ValueOp value_op(TokenKind kind) {
   switch (kind) {

@@ -5,6 +5,8 @@
 #include <string>
 #include <string_view>
 
+#include "lang/text_cursor.hpp"
+
 namespace scenfuzz::avunit {
 
 std::string describe(TokenKind kind) {
@@ -65,7 +67,6 @@ namespace {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool is_continuation_byte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
 // Typographic quotes are three UTF-8 bytes: E2 80 98/99 (single) and E2 80 9C/9D (double).
 enum class Quote { none, single, double_ };
@@ -83,10 +84,10 @@ Quote quote_at(std::string_view text, std::size_t i, std::size_t& width) {
   return Quote::none;
 }
 
-class Lexer {
+class Lexer : private TextCursor {
  public:
   Lexer(const SourceFile& file, Diagnostics& diagnostics)
-      : text_(file.text()), diagnostics_(diagnostics) {}
+      : TextCursor(file.text()), diagnostics_(diagnostics) {}
 
   std::vector<Token> run() {
     std::vector<Token> tokens;
@@ -103,29 +104,6 @@ class Lexer {
   }
 
  private:
-  bool at_end() const { return pos_ >= text_.size(); }
-  char peek(std::size_t ahead = 0) const {
-    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-  }
-
-  SourceLocation here() const { return {line_, column_, static_cast<std::uint32_t>(pos_), 0}; }
-
-  void advance() {
-    if (text_[pos_] == '\n') {
-      ++pos_;
-      ++line_;
-      column_ = 1;
-      return;
-    }
-    ++pos_;
-    // Columns count characters: a UTF-8 continuation byte does not start a new one.
-    if (pos_ >= text_.size() || !is_continuation_byte(text_[pos_])) ++column_;
-  }
-
-  void advance(std::size_t n) {
-    for (std::size_t i = 0; i < n && !at_end(); ++i) advance();
-  }
-
   void skip_space_and_comments() {
     while (!at_end()) {
       char c = peek();
@@ -212,9 +190,9 @@ class Lexer {
           while (is_digit(peek())) advance();
           Token number = make(TokenKind::number, start);
           number.number = std::stod("0" + number.text);
-          diagnostics_.error(number.location,
-                             "a number needs a digit before its decimal point (write 0" +
-                                 number.text + ")");
+          diagnostics_.error(
+              number.location,
+              "a number needs a digit before its decimal point (write 0" + number.text + ")");
           return number;
         }
         return single(TokenKind::dot);
@@ -247,8 +225,9 @@ class Lexer {
     }
     Token bad = make(TokenKind::invalid, start);
     bad.location.length = static_cast<std::uint32_t>(width);
-    diagnostics_.error(bad.location, "unterminated string: expected a closing quote before the "
-                                     "end of the line");
+    diagnostics_.error(bad.location,
+                       "unterminated string: expected a closing quote before the "
+                       "end of the line");
     return bad;
   }
 
@@ -304,9 +283,9 @@ class Lexer {
     Token token = make(TokenKind::number, start);
     auto [end, error] =
         std::from_chars(token.text.data(), token.text.data() + token.text.size(), token.number);
-    bool underflow = error == std::errc::result_out_of_range &&
-                     (token.text.find("e-") != std::string::npos ||
-                      token.text.find("E-") != std::string::npos);
+    bool underflow =
+        error == std::errc::result_out_of_range &&
+        (token.text.find("e-") != std::string::npos || token.text.find("E-") != std::string::npos);
     if (underflow) {
       token.number = 0.0;  // too small to represent: as good as zero
     } else if (error != std::errc() || !std::isfinite(token.number)) {
@@ -316,11 +295,7 @@ class Lexer {
     return token;
   }
 
-  std::string_view text_;
   Diagnostics& diagnostics_;
-  std::size_t pos_ = 0;
-  std::uint32_t line_ = 1;
-  std::uint32_t column_ = 1;
 };
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "lang/text_cursor.hpp"
+
 namespace scenfuzz::wmg {
 
 std::string describe(TokenKind kind) {
@@ -52,7 +54,6 @@ namespace {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool is_continuation_byte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
 // Typographic single quotes are three UTF-8 bytes: E2 80 98 (opening) and E2 80 99 (closing).
 std::size_t single_quote_width(std::string_view text, std::size_t i) {
@@ -65,10 +66,10 @@ std::size_t single_quote_width(std::string_view text, std::size_t i) {
   return 0;
 }
 
-class Lexer {
+class Lexer : private TextCursor {
  public:
   Lexer(const SourceFile& file, Diagnostics& diagnostics)
-      : text_(file.text()), diagnostics_(diagnostics) {}
+      : TextCursor(file.text()), diagnostics_(diagnostics) {}
 
   std::vector<Token> run() {
     std::vector<Token> tokens;
@@ -85,29 +86,6 @@ class Lexer {
   }
 
  private:
-  bool at_end() const { return pos_ >= text_.size(); }
-  char peek(std::size_t ahead = 0) const {
-    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-  }
-
-  SourceLocation here() const { return {line_, column_, static_cast<std::uint32_t>(pos_), 0}; }
-
-  void advance() {
-    if (text_[pos_] == '\n') {
-      ++pos_;
-      ++line_;
-      column_ = 1;
-      return;
-    }
-    ++pos_;
-    // Columns count characters: a UTF-8 continuation byte does not start a new one.
-    if (pos_ >= text_.size() || !is_continuation_byte(text_[pos_])) ++column_;
-  }
-
-  void advance(std::size_t n) {
-    for (std::size_t i = 0; i < n && !at_end(); ++i) advance();
-  }
-
   void skip_space_and_comments() {
     while (!at_end()) {
       char c = peek();
@@ -257,11 +235,7 @@ class Lexer {
     return token;
   }
 
-  std::string_view text_;
   Diagnostics& diagnostics_;
-  std::size_t pos_ = 0;
-  std::uint32_t line_ = 1;
-  std::uint32_t column_ = 1;
 };
 
 }  // namespace
