@@ -19,6 +19,7 @@
 #include "lang/avunit/avunit.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/source_file.hpp"
+#include "tests/lang/malformed_harness.hpp"
 
 namespace scenfuzz::avunit {
 namespace {
@@ -35,28 +36,10 @@ const std::string kScenario =
 // An ego and nothing else, for the CreateScenario cases (line 1).
 const std::string kEgo = "ego = AV((\"lane_1\"->0), (\"lane_1\"->50));\n";
 
-int failed_parts() {
-  const ::testing::TestResult* result =
-      ::testing::UnitTest::GetInstance()->current_test_info()->result();
-  int failed = 0;
-  for (int i = 0; i < result->total_part_count(); ++i)
-    if (result->GetTestPartResult(i).failed()) ++failed;
-  return failed;
-}
-
-// Parses `text` in a forked child and expects it to come back: a crash (stack overflow, bad
-// optional access, ...) fails this expectation only, and the caller then skips parsing it
-// in-process. Returns whether the child survived.
+// Parses `text` in a forked child: see malformed_harness.hpp.
 bool parse_survives(const std::string& text, const std::string& label) {
-  int before = failed_parts();
-  EXPECT_EXIT(
-      {
-        (void)parse(SourceFile("t.avu", text));
-        std::_Exit(0);
-      },
-      ::testing::ExitedWithCode(0), "")
-      << "parse crashed on " << label;
-  return failed_parts() == before;
+  return test::parse_survives({text}, label,
+                              [](const std::string& t) { (void)parse(SourceFile("t.avu", t)); });
 }
 
 const Diagnostic* first_error(const Diagnostics& diagnostics) {
@@ -65,24 +48,11 @@ const Diagnostic* first_error(const Diagnostics& diagnostics) {
   return nullptr;
 }
 
-std::vector<const Diagnostic*> errors_of(const Diagnostics& diagnostics) {
-  std::vector<const Diagnostic*> errors;
-  for (const Diagnostic& d : diagnostics.all())
-    if (d.severity == Severity::error) errors.push_back(&d);
-  return errors;
-}
+using test::errors_of;
 
 // ---- one mistake, one first error ----------------------------------------------------------
 
-struct MalformedCase {
-  std::string name;
-  std::string text;
-  std::uint32_t line = 0;
-  std::uint32_t column = 0;
-  std::string message;  // a distinctive part of the first error's message
-};
-
-std::ostream& operator<<(std::ostream& out, const MalformedCase& c) { return out << c.name; }
+using test::MalformedCase;
 
 std::vector<MalformedCase> malformed_cases() {
   const std::string& S = kScenario;
@@ -270,12 +240,14 @@ std::vector<MalformedCase> malformed_cases() {
        kEgo + "s = CreateScenario{load(\"m\"); ego; {}; {}; {};\nTrace t = EXE(s);\n" +
            "t |= G(speed > 1);\n",
        2, 47, "expected '}' to close CreateScenario{...}"},
-      // Regression: check_not_negative only looks at constants and bare ranges, so an offset written as
+      // Regression: check_not_negative only looks at constants and bare ranges, so an offset
+      // written as
       // arithmetic that is negative everywhere ([-9, -8] here) is accepted.
       {"negative_lane_offset_through_arithmetic",
        "p = \"lane_1\"->(range(1, 2) - 10);\ne = AV((p), (\"lane_1\"->9));\n", 1, 16,
        "an arc length along a lane cannot be negative"},
-      // Regression: the message gives the bounds in seconds since midnight ("the lower bound 43200 is
+      // Regression: the message gives the bounds in seconds since midnight ("the lower bound 43200
+      // is
       // above the upper bound 39600") although the user wrote times of day.
       {"inverted_time_of_day_range", "r = range(12:00, 11:00);\n", 1, 5,
        "the lower bound 12:00 is above the upper bound 11:00"},
@@ -338,9 +310,10 @@ TEST(MalformedRecovery, ThreeIndependentErrorsAreAllReportedInOrder) {
   EXPECT_EQ(lines, (std::vector<std::uint32_t>{2, 5, 8})) << all;
 }
 
-// Regression: after a syntax error the parser skips to the next ';' outside brackets, counting brackets
-// from the start of the statement; an unclosed '(' (or '[', '{') therefore never closes and the
-// whole rest of the file is skipped: the errors on lines 8 and 9 are never reported. A ';' inside
+// Regression: after a syntax error the parser skips to the next ';' outside brackets, counting
+// brackets from the start of the statement; an unclosed '(' (or '[', '{') therefore never closes
+// and the whole rest of the file is skipped: the errors on lines 8 and 9 are never reported. A ';'
+// inside
 // '(' or '[' can only end the statement.
 TEST(MalformedRecovery, UnclosedParenthesisDoesNotSwallowTheRestOfTheFile) {
   const std::string text =
@@ -384,8 +357,8 @@ TEST(MalformedRecovery, EveryPhaseReportsAfterEarlierPhasesFailed) {
   EXPECT_EQ(lines, (std::set<std::uint32_t>{2, 5, 8})) << all;
 }
 
-// Regression: the parser drops a statement it cannot parse, so the elaborator then reports every use of
-// the name it defined as "'x' is not defined; did you mean 's'?" — an error the user did not
+// Regression: the parser drops a statement it cannot parse, so the elaborator then reports every
+// use of the name it defined as "'x' is not defined; did you mean 's'?" — an error the user did not
 // make. A name whose definition failed to parse should be known (as erroneous) and stay silent.
 TEST(MalformedRecovery, ErrorInsideCreateScenarioDoesNotCascade) {
   const std::string text = kScenario +
@@ -418,11 +391,11 @@ TEST(MalformedRecovery, AssignmentThatFailedToParseDoesNotMakeItsNameUndefined) 
   EXPECT_EQ(errors[0]->location.column, 6u);
 }
 
-// Regression: when the lexer drops a bad token (a bad character, `.5`, `5.`, an unterminated string),
-// the parser then reports a second error about the hole it left ("expected ';' ... found number
-// '2'", "expected a value, found ';'"). One mistake should give one error: the lexer could keep
-// the token (0.5 for `.5`, the string up to the end of the line) or pass an error token that the
-// parser skips silently.
+// Regression: when the lexer drops a bad token (a bad character, `.5`, `5.`, an unterminated
+// string), the parser then reports a second error about the hole it left ("expected ';' ... found
+// number '2'", "expected a value, found ';'"). One mistake should give one error: the lexer could
+// keep the token (0.5 for `.5`, the string up to the end of the line) or pass an error token that
+// the parser skips silently.
 TEST(MalformedRecovery, LexerErrorsDoNotCascadeIntoParserErrors) {
   const std::vector<std::string> texts = {"x = 1 @ 2;\n", "x = .5;\n", "x = 5.;\n",
                                           "m = \"abc;\nn = 1;\n"};
@@ -455,7 +428,8 @@ TEST(MalformedRecovery, StopsAtTheErrorLimit) {
 
 // ---- inputs that look malformed but are not, and inputs that must not crash ----------------
 
-// Regression: `[0:60]` and `[30:45]` are lexed as times of day (H:MM) and rejected as invalid times;
+// Regression: `[0:60]` and `[30:45]` are lexed as times of day (H:MM) and rejected as invalid
+// times;
 // `[0:60]` even becomes the interval [1, 0] ("inverted interval"). As interval bounds they are
 // plain seconds: G[0:60] is the first minute.
 TEST(MalformedLookalike, IntervalWrittenLikeAnInvalidTimeOfDayIsAnInterval) {
@@ -478,10 +452,10 @@ TEST(MalformedLookalike, IntervalWrittenLikeAnInvalidTimeOfDayIsAnInterval) {
   }
 }
 
-// Regression: long operator chains build left-deep trees the parser's nesting limit does not count, and
-// the elaborator (and, from about 100000 operands, the syntax tree's destructor) recurse once per
-// operand: about 500 operands overflow the stack in a Debug build. A chain must either be handled
-// or rejected with an error, never crash.
+// Regression: long operator chains build left-deep trees the parser's nesting limit does not count,
+// and the elaborator (and, from about 100000 operands, the syntax tree's destructor) recurse once
+// per operand: about 500 operands overflow the stack in a Debug build. A chain must either be
+// handled or rejected with an error, never crash.
 TEST(MalformedPathological, LongOperatorChainsDoNotCrash) {
   auto repeat = [](const std::string& piece, int n) {
     std::string out;

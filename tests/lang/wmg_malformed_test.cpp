@@ -18,6 +18,7 @@
 #include "lang/diagnostic.hpp"
 #include "lang/source_file.hpp"
 #include "lang/wmg/parser.hpp"
+#include "tests/lang/malformed_harness.hpp"
 #include "tests/lang/wmg_test_files.hpp"
 
 namespace scenfuzz::wmg {
@@ -27,47 +28,15 @@ using test::Parts;
 using test::road;
 using test::scenery_with_roads;
 
-int failed_parts() {
-  const ::testing::TestResult* result =
-      ::testing::UnitTest::GetInstance()->current_test_info()->result();
-  int failed = 0;
-  for (int i = 0; i < result->total_part_count(); ++i)
-    if (result->GetTestPartResult(i).failed()) ++failed;
-  return failed;
-}
+using scenfuzz::test::error_lines;
+using scenfuzz::test::errors_of;
+using scenfuzz::test::MalformedCase;
+using scenfuzz::test::replaced;
 
-// Parses every text in a forked child and expects it to come back: a crash (stack overflow, bad
-// optional access, ...) fails this expectation only, and the caller then skips parsing in-process.
+// Parses every text in a forked child: see malformed_harness.hpp.
 bool parse_survives(const std::vector<std::string>& texts, const std::string& label) {
-  int before = failed_parts();
-  EXPECT_EXIT(
-      {
-        for (const std::string& text : texts) (void)parse_level2(SourceFile("t.sdl", text));
-        std::_Exit(0);
-      },
-      ::testing::ExitedWithCode(0), "")
-      << "parse crashed on " << label;
-  return failed_parts() == before;
-}
-
-std::vector<const Diagnostic*> errors_of(const Diagnostics& diagnostics) {
-  std::vector<const Diagnostic*> errors;
-  for (const Diagnostic& d : diagnostics.all())
-    if (d.severity == Severity::error) errors.push_back(&d);
-  return errors;
-}
-
-std::vector<std::uint32_t> error_lines(const Diagnostics& diagnostics) {
-  std::vector<std::uint32_t> lines;
-  for (const Diagnostic* d : errors_of(diagnostics)) lines.push_back(d->location.line);
-  return lines;
-}
-
-// `text` with the first `from` replaced by `to`; `from` must occur.
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  std::size_t at = text.find(from);
-  if (at == std::string::npos) throw std::logic_error("'" + from + "' is not in the base text");
-  return text.replace(at, from.size(), to);
+  return scenfuzz::test::parse_survives(
+      texts, label, [](const std::string& text) { (void)parse_level2(SourceFile("t.sdl", text)); });
 }
 
 const Parts kParts;
@@ -98,16 +67,6 @@ const std::string kTraffic = kBase +
                              "DO: TRAFFIC [F1]: [C1: R1.L1, C1: R1.L1] at [1, 2]\n";
 
 // ---- one mistake, one first error ------------------------------------------------------------
-
-struct MalformedCase {
-  std::string name;
-  std::string text;
-  std::uint32_t line = 0;
-  std::uint32_t column = 0;
-  std::string message;  // a distinctive part of the first error's message
-};
-
-std::ostream& operator<<(std::ostream& out, const MalformedCase& c) { return out << c.name; }
 
 std::vector<MalformedCase> malformed_cases() {
   return {
