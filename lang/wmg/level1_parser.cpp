@@ -4,7 +4,6 @@
 // together; names are checked once every sentence has been read.
 #include "lang/wmg/level1_parser.hpp"
 
-#include <charconv>
 
 #include "lang/wmg/level1_parse_parts.hpp"
 #include "lang/wmg/lexer.hpp"
@@ -15,16 +14,6 @@ namespace {
 
 using detail::SentenceCursor;
 using detail::SentenceError;
-
-WholeNumber digits_of(const Token& token, std::size_t begin, std::size_t count) {
-  WholeNumber part;
-  std::from_chars(token.text.data() + begin, token.text.data() + begin + count, part.value);
-  part.location = token.location;
-  part.location.offset += static_cast<std::uint32_t>(begin);
-  part.location.column += static_cast<std::uint32_t>(begin);
-  part.location.length = static_cast<std::uint32_t>(count);
-  return part;
-}
 
 // VERSION ':' INT.INT [AUTHOR ':' STRING]
 Level1Header parse_header(SentenceCursor& cursor) {

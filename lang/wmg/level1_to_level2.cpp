@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "lang/wmg/level1_convert_parts.hpp"
 #include "lang/wmg/level1_phrases.hpp"
@@ -140,13 +141,10 @@ void plan_actors(const Level1File& file, ConversionPlan& plan) {
       actor.first_manoeuvre_kind = first_manoeuvre_kind(file, name.name);
       declared.push_back(actor);
     }
-  if (declared.empty()) {
-    // Only a file that did not come from parse_level1 can lack actors: level 2 needs one.
-    ActorPlan placeholder;
-    placeholder.name.name = "Ego";
-    placeholder.road = plan.roads.empty() ? "R1" : plan.roads.front().id.name;
-    declared.push_back(placeholder);
-  }
+  // parse_level1 never yields a file without actors (the grammar asks for one or more), and
+  // level 2 cannot be written without one: a caller that built such a tree has a bug.
+  if (declared.empty())
+    throw std::logic_error("level1_to_level2 needs a file with at least one actor");
   std::string ego = file.sequences.empty() ? "" : file.sequences.front().autonomous_actor.name;
   std::stable_partition(declared.begin(), declared.end(),
                         [&](const ActorPlan& actor) { return actor.name.name == ego; });

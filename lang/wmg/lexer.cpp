@@ -244,4 +244,14 @@ std::vector<Token> tokenize(const SourceFile& file, Diagnostics& diagnostics) {
   return Lexer(file, diagnostics).run();
 }
 
+WholeNumber digits_of(const Token& token, std::size_t begin, std::size_t count) {
+  WholeNumber part;
+  std::from_chars(token.text.data() + begin, token.text.data() + begin + count, part.value);
+  part.location = token.location;
+  part.location.offset += static_cast<std::uint32_t>(begin);
+  part.location.column += static_cast<std::uint32_t>(begin);
+  part.location.length = static_cast<std::uint32_t>(count);
+  return part;
+}
+
 }  // namespace scenfuzz::wmg

@@ -6,11 +6,16 @@
 
 #include "lang/diagnostic.hpp"
 #include "lang/source_file.hpp"
+#include "lang/wmg/syntax_values.hpp"
 #include "lang/wmg/token.hpp"
 
 namespace scenfuzz::wmg {
 
 // Always ends with an end_of_file token. Bad characters are reported and become invalid tokens.
 std::vector<Token> tokenize(const SourceFile& file, Diagnostics& diagnostics);
+
+// The digits [begin, begin + count) of a token as a whole number with their own location: the
+// two parts of a version `1.0`, which the lexer reads as one number.
+WholeNumber digits_of(const Token& token, std::size_t begin, std::size_t count);
 
 }  // namespace scenfuzz::wmg

@@ -2,7 +2,6 @@
 // its own file; a section with an error is skipped up to the next section keyword.
 #include "lang/wmg/parser.hpp"
 
-#include <charconv>
 #include <functional>
 
 #include "lang/wmg/lexer.hpp"
@@ -14,17 +13,6 @@ namespace {
 
 using detail::Cursor;
 using detail::SyntaxError;
-
-// The digits [begin, begin + count) of a token as a whole number with their own location.
-WholeNumber digits_of(const Token& token, std::size_t begin, std::size_t count) {
-  WholeNumber part;
-  std::from_chars(token.text.data() + begin, token.text.data() + begin + count, part.value);
-  part.location = token.location;
-  part.location.offset += static_cast<std::uint32_t>(begin);
-  part.location.column += static_cast<std::uint32_t>(begin);
-  part.location.length = static_cast<std::uint32_t>(count);
-  return part;
-}
 
 // VERSION ':' INT.INT — the lexer reads `1.0` as one number; its two parts are the version.
 Version parse_version(Cursor& cursor) {
