@@ -29,6 +29,9 @@ struct SearchDimension {
 struct Evaluation {
   // One per objective, in objectives() order; empty when the point was infeasible or failed.
   std::vector<double> robustness;
+  // What the strategies minimise instead, when set (one per objective, negative exactly where
+  // the robustness is): a conjunction's guide (oracle/search_guide.hpp).
+  std::vector<double> guide;
   // Set when the point was rejected before any simulation (actors overlapping at t = 0, a
   // position off every lane): such points do not count against the budget.
   std::string infeasible;

@@ -64,6 +64,11 @@ std::vector<std::vector<std::size_t>> genes_by_label(std::span<const SearchDimen
   return genes;
 }
 
+double usable_objective(const Observation& result) {
+  return result.judged && !std::isnan(result.objective) ? result.objective
+                                                        : std::numeric_limits<double>::infinity();
+}
+
 std::size_t default_population(std::size_t dimensions, std::size_t budget) {
   std::size_t population = std::clamp<std::size_t>(4 + 2 * dimensions, 10, 50);
   if (budget > 0) population = std::min(population, std::max<std::size_t>(budget / 4, 4));
@@ -90,6 +95,15 @@ GeneticAlgorithm::GeneticAlgorithm(std::span<const SearchDimension> dimensions, 
                                                  : default_population(dimensions_.size(), budget);
   }
   elites_ = std::min(options_.elites, status_.population / 2);
+  descending_ = options_.local_search && !dimensions_.empty() &&
+                dimensions_.size() <= options_.local_search_max_dimensions;
+  first_generation_ = status_.population;
+  if (descending_) {
+    first_generation_ =
+        options_.first_generation > 0
+            ? options_.first_generation
+            : std::min(std::max<std::size_t>(dimensions_.size(), 4), first_generation_);
+  }
 
   actor_genes_ =
       genes_by_label(dimensions_, [](const SearchDimension& dimension) { return dimension.group; });
@@ -105,6 +119,10 @@ GeneticAlgorithm::GeneticAlgorithm(std::span<const SearchDimension> dimensions, 
 std::vector<UnitPoint> GeneticAlgorithm::propose(std::size_t limit) {
   if (limit == 0) throw std::invalid_argument("propose needs a limit of at least 1");
   if (awaiting_ > 0) throw std::logic_error("propose called before the last batch was observed");
+  if (std::vector<UnitPoint> batch = descent_points(limit); !batch.empty()) {
+    awaiting_ = batch.size();
+    return batch;
+  }
   if (observed_ == generation_.size()) {
     if (dimensions_.empty() && status_.generations > 0) return {};
     start_generation();
@@ -123,20 +141,31 @@ void GeneticAlgorithm::observe(std::span<const Observation> results) {
     throw std::invalid_argument("observe got " + std::to_string(results.size()) +
                                 " results for a batch of " + std::to_string(awaiting_));
   }
-  for (const Observation& result : results) {
-    // Unjudged points and NaN are the worst there is, so they never win a comparison.
-    const bool usable = result.judged && !std::isnan(result.objective);
-    generation_[observed_++].objective =
-        usable ? result.objective : std::numeric_limits<double>::infinity();
-  }
   awaiting_ = 0;
+  if (descents_in_batch_ > 0) {
+    for (const Observation& result : results) {
+      Descent& descent = descents_[round_observed_++];
+      const double objective = usable_objective(result);
+      descent.run.tell(objective);
+      if (objective < status_.best_objective) {
+        status_.best_objective = objective;
+        status_.best_point = *descent.asked;
+      }
+      if (objective < descent.best.objective) descent.best = {std::move(*descent.asked), objective};
+      descent.asked.reset();
+    }
+    descents_in_batch_ = 0;
+    return;
+  }
+  for (const Observation& result : results)
+    generation_[observed_++].objective = usable_objective(result);
   if (observed_ == generation_.size()) finish_generation();
 }
 
 void GeneticAlgorithm::start_generation() {
   std::vector<UnitPoint> points;
   if (population_.empty()) {
-    points = fresh_points(status_.population);
+    points = fresh_points(first_generation_);
   } else if (restart_pending_) {
     restart_pending_ = false;
     population_.resize(std::min(population_.size(), elites_));
@@ -151,19 +180,23 @@ void GeneticAlgorithm::start_generation() {
   observed_ = 0;
 }
 
-void GeneticAlgorithm::finish_generation() {
-  for (const Individual& individual : generation_) {
-    population_.push_back(individual);
-    if (individual.objective < status_.best_objective) {
-      status_.best_objective = individual.objective;
-      status_.best_point = individual.point;
-    }
+// (mu + lambda) survival of one more individual.
+void GeneticAlgorithm::survive(const Individual& individual) {
+  if (individual.objective < status_.best_objective) {
+    status_.best_objective = individual.objective;
+    status_.best_point = individual.point;
   }
-  // Stable, so that ties keep their order of evaluation and the course stays deterministic.
-  std::stable_sort(
-      population_.begin(), population_.end(),
+  // After the last individual that is not worse, so that ties keep their order of evaluation
+  // and the course stays deterministic.
+  const auto place = std::upper_bound(
+      population_.begin(), population_.end(), individual,
       [](const Individual& a, const Individual& b) { return a.objective < b.objective; });
+  population_.insert(place, individual);
   population_.resize(std::min(population_.size(), status_.population));
+}
+
+void GeneticAlgorithm::finish_generation() {
+  for (const Individual& individual : generation_) survive(individual);
   ++status_.generations;
 
   const double level = std::max(status_.best_objective, options_.progress_floor);
@@ -181,6 +214,49 @@ void GeneticAlgorithm::finish_generation() {
     generations_without_progress_ = 0;
     ++status_.restarts;
   }
+  if (!descending_ || restart_pending_) return;
+  const auto best = std::min_element(
+      generation_.begin(), generation_.end(),
+      [](const Individual& a, const Individual& b) { return a.objective < b.objective; });
+  if (best != generation_.end() && std::isfinite(best->objective) &&
+      best->objective >= options_.progress_floor) {
+    descents_.push_back({LocalRun(best->point, options_.local_run), {}, {}});
+    ++status_.local_runs;
+  }
+  if (options_.random_descent) {
+    descents_.push_back({LocalRun(uniform_fresh_point(), options_.local_run), {}, {}});
+    ++status_.local_runs;
+  }
+}
+
+// Descents advance in rounds: every descent under way asks for one point, and the next round
+// starts once the whole round is observed, so the points never depend on how propose() splits a
+// round into batches. A descent that has ended gives its best point to the population.
+std::vector<UnitPoint> GeneticAlgorithm::descent_points(std::size_t limit) {
+  if (round_observed_ == round_size_) {
+    for (Descent& descent : descents_) {
+      // Snapped like every other point (a discrete gene in the middle of its cell): the same
+      // scenario as the point the descent asked for, so its value answers the descent.
+      descent.asked = descent.run.next_point();
+      if (descent.asked) normalise(*descent.asked);
+    }
+    std::erase_if(descents_, [&](const Descent& descent) {
+      if (descent.asked) return false;
+      if (std::isfinite(descent.best.objective)) survive(descent.best);
+      return true;
+    });
+    round_size_ = descents_.size();
+    round_handed_ = 0;
+    round_observed_ = 0;
+  }
+  descents_in_batch_ = std::min(limit, round_size_ - round_handed_);
+  std::vector<UnitPoint> batch;
+  for (std::size_t i = round_handed_; i < round_handed_ + descents_in_batch_; ++i) {
+    remember(*descents_[i].asked);
+    batch.push_back(*descents_[i].asked);
+  }
+  round_handed_ += descents_in_batch_;
+  return batch;
 }
 
 std::vector<UnitPoint> GeneticAlgorithm::fresh_points(std::size_t count) {

@@ -9,11 +9,13 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 #include <span>
 #include <vector>
 
 #include "fuzz/evaluator.hpp"
+#include "fuzz/local_run.hpp"
 #include "fuzz/search_strategy.hpp"
 #include "sampler/point_samplers.hpp"
 #include "sampler/random.hpp"
@@ -26,7 +28,7 @@ struct GeneticAlgorithmOptions {
   // tournaments to mean something, at most fifty so that a few hundred simulations still make
   // several generations, and at least four generations within the budget.
   std::size_t population = 0;
-  // Children bred per generation after the first (a Latin hypercube of `population` points).
+  // Children bred per generation after the first (a Latin hypercube, see first_generation).
   // The parents of the next generation are the best `population` of parents and children, so
   // a good point stays until better ones replace it. Eight: small generations let the parents
   // improve every few simulations (the first finding came sooner than with whole generations of
@@ -74,8 +76,27 @@ struct GeneticAlgorithmOptions {
   // per-segment draws almost never produce them: the chasing cars' CC4 with 20 segments went
   // from 0/10 to 10/10 (docs/performance.md).
   double hold_probability = 0.5;
-  double hold_extreme_probability =
-      0.5;  // Generations without progress after which the population is re-seeded with fresh Latin
+  double hold_extreme_probability = 0.5;
+  // After each generation, two local descents (LocalRun: COBYLA) at the same time, one
+  // simulation each per batch, until each stops improving; the best point of each then joins
+  // the population. One starts from the generation's best point (not from a violation: that
+  // finding is made, see progress_floor), the other from a uniformly random point: where the
+  // best point sits in a basin without violations (a pedestrian the ego always stops just short
+  // of), a descent from elsewhere finds the slope that leads to one. Where robustness falls
+  // smoothly, descents find violations in a few simulations that blending and random steps take
+  // generations to reach (docs/performance.md, "Search").
+  bool local_search = true;
+  // Beyond this many dimensions a descent's first simplex (d + 1 simulations) costs more than
+  // it gains and the GA runs alone: the chasing cars' 40 input segments are falsified by held
+  // runs, not by linear models (CC4 went from 10/10 to 7/10 with descents).
+  std::size_t local_search_max_dimensions = 20;
+  LocalRunOptions local_run;
+  bool random_descent = true;
+  // Points of the Latin hypercube that starts the search while descents run. 0: max(4, d)
+  // (but at most `population`): the descents need a start, not a survey, and a smaller design
+  // lets them begin sooner. Without descents the first generation is `population` points.
+  std::size_t first_generation = 0;
+  // Generations without progress after which the population is re-seeded with fresh Latin
   // hypercube points, keeping the elites. 0: never restart. Twelve generations of eight
   // children: about a hundred simulations to leave a basin that stopped improving.
   std::size_t stagnation_generations = 12;
@@ -99,6 +120,7 @@ struct GeneticAlgorithmStatus {
   std::size_t population = 0;   // individuals per generation in use
   std::size_t generations = 0;  // generations fully observed
   std::size_t restarts = 0;
+  std::size_t local_runs = 0;  // local descents started
   double best_objective = std::numeric_limits<double>::infinity();
   UnitPoint best_point;  // empty while no point was judged
 };
@@ -123,6 +145,7 @@ class GeneticAlgorithm final : public SearchStrategy {
   };
 
   void start_generation();
+  void survive(const Individual& individual);
   void finish_generation();
   std::vector<UnitPoint> fresh_points(std::size_t count);
   std::vector<UnitPoint> bred_points(std::size_t count);
@@ -152,6 +175,22 @@ class GeneticAlgorithm final : public SearchStrategy {
   std::size_t handed_out_ = 0;
   std::size_t observed_ = 0;
   std::size_t awaiting_ = 0;
+  // The local descent under way, if any, and the point it is waiting on.
+  struct Descent {
+    LocalRun run;
+    std::optional<UnitPoint> asked;  // the point it waits on
+    Individual best;
+  };
+  std::vector<UnitPoint> descent_points(std::size_t limit);
+  // The local descents under way and how far their current round has been handed out and
+  // observed; descents_in_batch_ of them have a point in the batch being evaluated.
+  std::vector<Descent> descents_;
+  std::size_t round_size_ = 0;
+  std::size_t round_handed_ = 0;
+  std::size_t round_observed_ = 0;
+  std::size_t descents_in_batch_ = 0;
+  bool descending_ = false;
+  std::size_t first_generation_ = 0;
   // Grid cells of every point ever proposed.
   std::set<std::vector<std::int64_t>> seen_;
   double progress_reference_ = std::numeric_limits<double>::infinity();

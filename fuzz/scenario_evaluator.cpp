@@ -117,8 +117,10 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
   evaluation.infeasible = run.infeasible;
   evaluation.failure = run.failure;
   if (!evaluation.judged()) return evaluation;
-  for (const SpecVerdict& verdict : run.verdicts)
+  for (const SpecVerdict& verdict : run.verdicts) {
     evaluation.robustness.push_back(verdict.robustness);
+    evaluation.guide.push_back(verdict.guide);
+  }
   evaluation.signature = collision_signature(*run.trace);
   return evaluation;
 }

@@ -134,7 +134,9 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
         observations[i].point = records[i].point;
         observations[i].judged = evaluation.judged();
         if (evaluation.judged())
-          observations[i].objective = evaluation.robustness[target.objective];
+          observations[i].objective = evaluation.guide.empty()
+                                          ? evaluation.robustness[target.objective]
+                                          : evaluation.guide[target.objective];
         ++summary.evaluations;
         if (!evaluation.feasible()) {
           ++summary.infeasible;

@@ -2,6 +2,7 @@
 
 #include "oracle/collision_oracle.hpp"
 #include "oracle/robustness.hpp"
+#include "oracle/search_guide.hpp"
 #include "oracle/trace_signals.hpp"
 
 namespace scenfuzz {
@@ -17,6 +18,7 @@ SpecVerdict no_collision_verdict(const Trace& trace) {
   SpecVerdict verdict;
   verdict.name = kNoCollisionSpec;
   verdict.robustness = collision.robustness;
+  verdict.guide = collision.robustness;
   verdict.time = time_of_sample(trace, collision.sample);
   verdict.atom_text = collision.other == kEgo ? "the ego is alone"
                                               : "the ego and " + trace.actors[collision.other].name;
@@ -37,6 +39,14 @@ std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
     SpecVerdict verdict;
     verdict.name = spec.name;
     verdict.robustness = witness.robustness;
+    verdict.guide = witness.robustness;
+    if (const std::vector<Formula> conjuncts = top_level_conjuncts(spec.formula);
+        conjuncts.size() > 1) {
+      std::vector<double> robustness;
+      for (const Formula& conjunct : conjuncts)
+        robustness.push_back(robustness_signal(conjunct, source).front());
+      verdict.guide = conjunct_guide(robustness);
+    }
     verdict.time = time_of_sample(trace, witness.sample);
     if (witness.atom) {
       verdict.atom = witness.atom->location;

@@ -24,6 +24,9 @@ struct SpecVerdict {
   SourceLocation atom;    // the responsible atom in the file; unknown for the collision oracle
                           // and for an infinity no atom gives
   std::string atom_text;  // that atom as written, or for the collision oracle which bodies
+  // What a search minimises: the robustness, or for a conjunction the conjunct guide
+  // (search_guide.hpp); negative exactly when the robustness is.
+  double guide = 0;
 
   bool violated() const { return robustness < 0; }
 };

@@ -165,6 +165,58 @@ TEST(GeneticAlgorithm, FindsASmallBallSoonerThanUniformRandomSearch) {
   EXPECT_LT(median(genetic), median(uniform));
 }
 
+TEST(GeneticAlgorithm, DescentsStartFromTheGenerationsBestPointAndFromARandomOne) {
+  const UnitPoint centre = {0.7, 0.2, 0.4, 0.9};
+  const Objective cone = [&](const UnitPoint& point) { return distance(point, centre); };
+  GeneticAlgorithm algorithm(continuous_dimensions(4), 21, 500);
+  const std::vector<UnitPoint> first = next_generation(algorithm, cone);
+  EXPECT_EQ(first.size(), 4u);  // max(4, d) points start the search while descents run
+  EXPECT_EQ(algorithm.status().local_runs, 2u);
+  const UnitPoint best =
+      *std::min_element(first.begin(), first.end(),
+                        [&](const UnitPoint& a, const UnitPoint& b) { return cone(a) < cone(b); });
+  // One round: a point from each descent, the first at its start.
+  const std::vector<UnitPoint> round = next_generation(algorithm, cone);
+  ASSERT_EQ(round.size(), 2u);
+  EXPECT_EQ(round[0], best);
+  EXPECT_EQ(std::count(first.begin(), first.end(), round[1]), 0);
+}
+
+TEST(GeneticAlgorithm, NoDescentStartsFromAViolation) {
+  GeneticAlgorithm algorithm(continuous_dimensions(4), 23, 500);
+  next_generation(algorithm, [](const UnitPoint& point) { return point[0] - 0.5; });
+  // Some point of the Latin hypercube violates: only the random descent runs.
+  EXPECT_EQ(algorithm.status().local_runs, 1u);
+  EXPECT_EQ(next_generation(algorithm, sum_objective).size(), 1u);
+}
+
+TEST(GeneticAlgorithm, BeyondTheDimensionLimitTheGenerationsRunAlone) {
+  GeneticAlgorithm algorithm(continuous_dimensions(40), 25, 1500);
+  EXPECT_EQ(next_generation(algorithm, sum_objective).size(), algorithm.status().population);
+  EXPECT_EQ(next_generation(algorithm, sum_objective).size(), 8u);
+  EXPECT_EQ(algorithm.status().local_runs, 0u);
+}
+
+TEST(GeneticAlgorithm, DescentsReachASmoothViolationSoonerThanTheGenerationsAlone) {
+  // A ball in 6 dimensions whose distance guides the way: what the descents are for.
+  const UnitPoint centre = {0.8, 0.2, 0.6, 0.4, 0.9, 0.1};
+  const Objective ball = [&](const UnitPoint& point) { return distance(point, centre) - 0.15; };
+  const auto dimensions = continuous_dimensions(centre.size());
+  GeneticAlgorithmOptions alone;
+  alone.local_search = false;
+  std::vector<std::size_t> with_descents;
+  std::vector<std::size_t> without;
+  for (std::uint64_t seed = 1; seed <= 11; ++seed) {
+    GeneticAlgorithm descending(dimensions, seed, 5000);
+    GeneticAlgorithm plain(dimensions, seed, 5000, alone);
+    with_descents.push_back(evaluations_to_finding(descending, ball, 5000));
+    without.push_back(evaluations_to_finding(plain, ball, 5000));
+  }
+  std::cout << "evaluations to the first finding, median over 11 seeds: with descents "
+            << median(with_descents) << ", generations alone " << median(without) << "\n";
+  EXPECT_LT(median(with_descents), median(without));
+}
+
 TEST(GeneticAlgorithm, DiscreteGenesSitInTheMiddleOfACellAndEveryChoiceAppears) {
   const auto dimensions = mixed_dimensions();
   const auto algorithm = make_genetic_algorithm(dimensions, 3, 300);
@@ -187,6 +239,7 @@ TEST(GeneticAlgorithm, BlendingTakesEachDiscreteChoiceFromAParent) {
   const std::vector<SearchDimension> dimensions = {{"x", GeneKind::continuous, 0, "", ""},
                                                    {"lane", GeneKind::discrete, 997, "", ""}};
   GeneticAlgorithmOptions options;
+  options.local_search = false;  // the generations alone, without descents between them
   options.crossover_probability = 1.0;
   options.mutation_rate = 0.0;
   GeneticAlgorithm algorithm(dimensions, 19, 400, options);
@@ -233,6 +286,7 @@ TEST(GeneticAlgorithm, ActorSwapExchangesExactlyTheGenesOfOneGroup) {
   const auto dimensions = mixed_dimensions();
   const std::vector<std::set<std::size_t>> groups = {{0, 1}, {2, 3, 4}};
   GeneticAlgorithmOptions options;
+  options.local_search = false;  // the generations alone, without descents between them
   options.crossover_probability = 1.0;
   options.actor_swap_probability = 1.0;
   options.mutation_rate = 0.0;
@@ -276,6 +330,7 @@ TEST(GeneticAlgorithm, ActorSwapExchangesExactlyTheGenesOfOneGroup) {
 
 TEST(GeneticAlgorithm, LaterGenerationsHaveTheOffspringCount) {
   GeneticAlgorithmOptions options;
+  options.local_search = false;  // the generations alone, without descents between them
   options.offspring = 5;
   GeneticAlgorithm algorithm(continuous_dimensions(4), 3, 1000, options);
   EXPECT_EQ(next_generation(algorithm, sum_objective).size(), algorithm.status().population);
@@ -285,6 +340,7 @@ TEST(GeneticAlgorithm, LaterGenerationsHaveTheOffspringCount) {
 
 TEST(GeneticAlgorithm, RefinementChildrenSurroundTheBestPointAtSeveralScales) {
   GeneticAlgorithmOptions options;
+  options.local_search = false;  // the generations alone, without descents between them
   options.refinement_fraction = 1.0;
   options.offspring = 40;
   GeneticAlgorithm algorithm(continuous_dimensions(5), 21, 1000, options);
@@ -307,6 +363,7 @@ TEST(GeneticAlgorithm, TheBestPointSurvivesChildrenThatAreAllWorse) {
   // (mu + lambda): parents compete with their children, so a first-generation point that no
   // child beats is still the centre of refinement generations later.
   GeneticAlgorithmOptions options;
+  options.local_search = false;  // the generations alone, without descents between them
   options.refinement_fraction = 1.0;
   options.elites = 0;
   options.stagnation_generations = 0;
@@ -352,6 +409,7 @@ std::size_t longest_run(const UnitPoint& point, std::size_t first, std::size_t c
 
 TEST(GeneticAlgorithm, HoldSetsARunOfOneSignalsSegmentsToOneValue) {
   GeneticAlgorithmOptions options;
+  options.local_search = false;  // the generations alone, without descents between them
   options.hold_probability = 1.0;
   options.refinement_fraction = 0.0;
   options.crossover_probability = 0.0;
@@ -408,6 +466,7 @@ bool is_latin_hypercube(const std::vector<UnitPoint>& points) {
 
 TEST(GeneticAlgorithm, ConstantObjectiveStagnatesAndRestartsWithAFreshDesign) {
   GeneticAlgorithmOptions options;
+  options.local_search = false;  // the generations alone, without descents between them
   options.stagnation_generations = 3;
   GeneticAlgorithm algorithm(continuous_dimensions(4), 5, 1000, options);
   const Objective constant = [](const UnitPoint&) { return 1.0; };
@@ -449,8 +508,9 @@ TEST(GeneticAlgorithm, RestartAfterConvergencePlacesPointsFarFromTheOldPopulatio
 TEST(GeneticAlgorithm, InfiniteObservationsNeverBecomeTheBest) {
   const auto dimensions = continuous_dimensions(3);
   GeneticAlgorithm algorithm(dimensions, 13, 600);
-  for (int generation = 0; generation < 40; ++generation) {
+  for (std::size_t evaluations = 0; evaluations < 400;) {
     const std::vector<UnitPoint> batch = algorithm.propose(1000);
+    evaluations += batch.size();
     std::vector<Observation> results;
     for (const UnitPoint& point : batch) {
       // The lower-left region is infeasible, unjudged or absurd, though the objective says it

@@ -91,6 +91,8 @@ TEST(JudgeTest, EverySpecOfEveryCorpusSeedIsJudgedOnItsTrace) {
         const SpecVerdict& verdict = run.verdicts[i];
         EXPECT_EQ(verdict.name, parsed.scenario.specs[i].name);
         EXPECT_FALSE(std::isnan(verdict.robustness)) << verdict.name;
+        // What the search minimises violates exactly where the spec does.
+        EXPECT_EQ(verdict.guide < 0, verdict.robustness < 0) << verdict.name;
         if (std::isfinite(verdict.robustness)) {
           EXPECT_TRUE(verdict.atom.known()) << verdict.name;
           EXPECT_FALSE(verdict.atom_text.empty()) << verdict.name;
