@@ -202,7 +202,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   bench_falsification
       ->add_option("SCENARIO", bench_options.scenarios,
                    "Logical scenarios, FILE or FILE:SPEC to target one spec (default: five "
-                   "bundled ones in corpora/avunit, run from the repository's root)")
+                   "bundled ones in corpora/, run from the repository's root)")
       ->type_name("");
   bench_falsification->add_option("--seeds", bench_options.seeds, "Runs per algorithm (default 20)")
       ->type_name("N");
@@ -212,7 +212,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   bench_falsification
       ->add_option("--algos", bench_options.algorithms,
                    "Comma-separated algorithms as for --algo (default "
-                   "ga,nlopt:GN_CRS2_LM,halton,random)")
+                   "ga,nlopt:LN_COBYLA,halton,random)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("LIST");

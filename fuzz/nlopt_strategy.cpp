@@ -1,7 +1,7 @@
-// NloptStrategy: the only translation unit that includes NLopt. The NLopt thread runs optimize()
-// in a loop of restarts; its objective callback publishes the point and blocks until observe()
-// (or the destructor) answers, so exactly one side runs at a time and the course of the search
-// depends only on the seed and the results.
+// NloptStrategy (NLopt is included only here and in local_run.cpp). The NLopt thread runs
+// optimize() in a loop of restarts; its objective callback publishes the point and blocks until
+// observe() (or the destructor) answers, so exactly one side runs at a time and the course of the
+// search depends only on the seed and the results.
 #include "fuzz/nlopt_strategy.hpp"
 
 #include <algorithm>
