@@ -1,7 +1,8 @@
 // The scenery to a built-in parametric map (docs/wmg-semantics.md, "Map"): which generator, its
 // parameters from the roads' ranges, and how `Rn.Lk` names that map's lanes. Every range of the
-// scenery becomes a parameter, also those the generators have no knob for (junction angles,
-// structure positions), so that a finding still replaces every range of the file.
+// scenery becomes a parameter, also those the generators have no knob for (all but one junction
+// angle, structure positions), so that a finding still replaces every range of the file.
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -180,16 +181,49 @@ std::optional<JunctionMap> junction_map(const Junction& junction) {
   return std::nullopt;
 }
 
+// The crossroads' and T-junction's `angle`: how far counter-clockwise from the west arm (the
+// first road) the south arm (the second) lies. The generated crossing road is straight, so
+// neighbouring arms meet alternately at that angle (R1/R2, R3/R4) and at its supplement (R2/R3,
+// R4/R1); the first written pair of neighbouring arms, in either direction, gives it. Pairs of
+// opposite arms (straight on) say nothing about it.
+void add_crossing_angle(const Junction& junction, std::size_t arms,
+                        const std::vector<Value>& angles, Translation& translation) {
+  auto arm_of = [&junction](const Identifier& road) {
+    auto found =
+        std::find_if(junction.connected_roads.begin(), junction.connected_roads.end(),
+                     [&road](const Identifier& connected) { return connected.name == road.name; });
+    return static_cast<std::size_t>(found - junction.connected_roads.begin());
+  };
+  for (std::size_t i = 0; i < junction.angle_pairs.size() && i < angles.size(); ++i) {
+    const std::size_t from = arm_of(junction.angle_pairs[i].from);
+    const std::size_t to = arm_of(junction.angle_pairs[i].to);
+    if (from >= junction.connected_roads.size() || to >= junction.connected_roads.size()) continue;
+    const std::size_t low = std::min(from, to);
+    const std::size_t high = std::max(from, to);
+    const bool wraps_round = low == 0 && high == arms - 1 && arms == 4;
+    if (high - low != 1 && !wraps_round) continue;
+    const SourceLocation where = junction.angles[i].location;
+    const bool supplement = low % 2 == 1 || wraps_round;
+    add_map_parameter(
+        translation, "angle",
+        supplement ? binary_value(ValueOp::subtract, constant_value(180.0, where), angles[i], where)
+                   : angles[i],
+        where);
+    return;
+  }
+}
+
 void translate_junction(const Junction& junction, const std::vector<Road>& roads,
                         Translation& translation) {
   const std::string prefix = junction.id.name + ".";
   translation.elements.insert(junction.id.name);
+  std::vector<Value> angles;
   for (std::size_t i = 0; i < junction.angles.size(); ++i) {
     std::string pair = std::to_string(i + 1);
     if (i < junction.angle_pairs.size())
       pair = junction.angle_pairs[i].from.name + "_" + junction.angle_pairs[i].to.name;
-    translation.number(junction.angles[i], prefix + "angle." + pair, "deg", 1.0,
-                       ParameterKind::angle);
+    angles.push_back(translation.number(junction.angles[i], prefix + "angle." + pair, "deg", 1.0,
+                                        ParameterKind::angle));
   }
   std::optional<Value> ring_radius;
   if (junction.dimensions.width)
@@ -250,6 +284,8 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
   if (roundabout && ring_radius)
     add_map_parameter(translation, "ring_radius", *ring_radius,
                       junction.dimensions.diameter->location);
+  // The roundabout's arms are a quarter turn apart whatever the file says.
+  if (!roundabout) add_crossing_angle(junction, map->arms, angles, translation);
 
   // The generated junction has one signal per approach, `light_<arm>`, with its own signal plan:
   // a light placed on a road (or one of its lanes) is that arm's signal. No TrafficLightSetting is

@@ -37,6 +37,17 @@ MapParameterInfo speed_limit_parameter(std::string name, double default_value,
 MapParameterInfo crosswalks_parameter() {
   return {"crosswalks", 1, 0, 1, "", "1: a crosswalk across every arm, 0: none"};
 }
+// Below 45 degrees the roads run side by side for longer than the junction is wide: a fork, which
+// these generators do not build.
+MapParameterInfo junction_angle_parameter(std::string crossing_road) {
+  return {"angle",
+          90,
+          45,
+          135,
+          "deg",
+          "angle from the west arm counter-clockwise to the south arm: where the " +
+              std::move(crossing_road) + " meets the main road"};
+}
 
 std::vector<RegisteredMap> make_registry() {
   std::vector<RegisteredMap> maps;
@@ -64,6 +75,7 @@ std::vector<RegisteredMap> make_registry() {
                    {lanes_parameter(4, "lanes in each direction on every arm"),
                     lane_width_parameter(),
                     {"arm_length", 150, 20, 2000, "m", "length of every arm lane"},
+                    junction_angle_parameter("side road"),
                     speed_limit_parameter("speed_limit", 13.9, "speed limit of every lane"),
                     crosswalks_parameter()}},
                   builtin::generate_t_junction});
@@ -72,6 +84,7 @@ std::vector<RegisteredMap> make_registry() {
                    {lanes_parameter(4, "lanes in each direction on every arm"),
                     lane_width_parameter(),
                     {"arm_length", 150, 20, 2000, "m", "length of every arm lane"},
+                    junction_angle_parameter("crossing road"),
                     speed_limit_parameter("speed_limit", 13.9, "speed limit of every lane"),
                     {"green", 25, 5, 120, "s", "green time of each direction"},
                     {"yellow", 3, 1, 10, "s", "yellow time of each direction"},
@@ -83,9 +96,11 @@ std::vector<RegisteredMap> make_registry() {
   maps.push_back(
       {{"roundabout",
         "a single-lane ring with four two-way arms, yield signs at the entries",
-        {{"ring_radius", 20, 20, 60, "m", "radius of the ring lane's centre line"},
+        {{"ring_radius", 20, 5, 100, "m",
+          "radius of the ring lane's centre line: 5 for a mini roundabout, 100 for a large one"},
          {"entry_angle", 15, 15, 30, "deg",
-          "an entry joins the ring this far after its arm's axis, an exit leaves this far before"},
+          "an entry joins the ring this far after its arm's axis, an exit leaves this far before; "
+          "on a small ring further (up to 42), so that their curves stay drivable"},
          {"arm_length", 100, 20, 2000, "m", "length of every arm lane"},
          lane_width_parameter(),
          speed_limit_parameter("speed_limit", 13.9, "speed limit on the arms"),

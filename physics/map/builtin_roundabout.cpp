@@ -1,14 +1,17 @@
 // The built-in `roundabout` map: a single-lane ring `ring_0` round (0, 0), counter-clockwise, and
 // four two-way arms with one lane each way. Connectors `<arm>_entry` and `<arm>_exit` join the
-// arms to the ring; a yield sign ends every in lane.
+// arms to the ring; a yield sign ends every in lane. Rings range from a mini roundabout's (5 m
+// radius) to a large one's (100 m).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "physics/map/builtin_geometry.hpp"
+#include "physics/map/road_map.hpp"
 
 namespace scenfuzz::builtin {
 
@@ -19,6 +22,13 @@ constexpr double kArmGapOutsideRing = 5;
 constexpr std::size_t kOutlineCorners = 72;
 constexpr const char* kJunctionId = "roundabout";
 constexpr const char* kRingId = "ring_0";
+// An entry or exit curve is never tighter than a car can drive: the sedan's tightest turning
+// circle has a 4.24 m radius (physics/actors/actor_class.cpp).
+constexpr double kMinimumEntryRadius = 4.25;
+// On a small ring the entries join further round than `entry_angle` says, so that their curves
+// stay that wide; but an entry must join before the next arm's exit leaves, 90 degrees minus the
+// angle round, with a few degrees of ring left between them.
+constexpr double kMaximumEntryAngleDegrees = 42;
 
 struct Arm {
   std::string name;
@@ -79,13 +89,39 @@ double entry_curve_start(const RoundaboutLayout& layout) {
   return fit.tangent_point.x;
 }
 
+// The smallest angle after an arm's axis at which an entry can join the ring with a curve of
+// kMinimumEntryRadius: from the in lane, half a lane width off the axis, the curve of radius R
+// that touches the ring at angle a has R = (r sin a - w / 2) / (1 - sin a); solved for sin a.
+double sine_of_smallest_entry_angle(double ring_radius, double lane_width) {
+  return (kMinimumEntryRadius + lane_width / 2) / (ring_radius + kMinimumEntryRadius);
+}
+
+// `entry_angle` (radians), or further round where the ring is too small for a curve that a car
+// can drive at that angle. Throws MapError when even kMaximumEntryAngleDegrees is not enough.
+double entry_angle_for(double ring_radius, double lane_width, double entry_angle) {
+  const double largest = radians(kMaximumEntryAngleDegrees);
+  const double smallest_sine = sine_of_smallest_entry_angle(ring_radius, lane_width);
+  if (smallest_sine > std::sin(largest)) {
+    const double smallest_ring =
+        (kMinimumEntryRadius + lane_width / 2) / std::sin(largest) - kMinimumEntryRadius;
+    std::ostringstream message;
+    message << "built-in map 'roundabout': ring_radius " << ring_radius
+            << " m is too small for lanes " << lane_width << " m wide: entries joining the ring "
+            << kMaximumEntryAngleDegrees << " degrees after their arm with curves no tighter than "
+            << kMinimumEntryRadius << " m need a ring_radius of at least " << smallest_ring << " m";
+    throw MapError(message.str());
+  }
+  return std::max(entry_angle, std::asin(smallest_sine));
+}
+
 }  // namespace
 
 MapDescription generate_roundabout(const MapParameters& parameters) {
   RoundaboutLayout layout;
   layout.ring_radius = parameters.value("ring_radius");
-  layout.entry_angle = radians(parameters.value("entry_angle"));
   layout.lane_width = parameters.value("lane_width");
+  layout.entry_angle = entry_angle_for(layout.ring_radius, layout.lane_width,
+                                       radians(parameters.value("entry_angle")));
   layout.arm_length = parameters.value("arm_length");
   layout.arm_end = std::max(layout.ring_radius + kArmGapOutsideRing, entry_curve_start(layout));
   const double arm_speed_limit = parameters.value("speed_limit");

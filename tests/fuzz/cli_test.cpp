@@ -295,7 +295,7 @@ TEST_F(CliMapTest, ListShowsEveryBuiltinMapWithItsParameters) {
       << run.out;
   EXPECT_NE(run.out.find("  length = 500 [10, 10000] m  length of the road\n"), std::string::npos)
       << run.out;
-  EXPECT_NE(run.out.find("  ring_radius = 20 [20, 60] m "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("  ring_radius = 20 [5, 100] m "), std::string::npos) << run.out;
 }
 
 TEST_F(CliMapTest, SummaryOfABuiltinMap) {

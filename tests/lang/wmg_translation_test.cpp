@@ -175,12 +175,16 @@ TEST(WmgTranslationTest, CurvedRoadIsACurveMapWithRadiusAndThirdsOfTheLength) {
   EXPECT_EQ(scenario.ego.initial.position.lane, "fwd_1");
 }
 
-std::string crossroads_scenery(const std::string& type = "Crossroads") {
+std::string crossroads_scenery(
+    const std::string& type = "Crossroads",
+    const std::string& angles =
+        "[R1 -> R2, R2 -> R3, R3 -> R4, R4 -> R1]\n[80 to 100, 90, 90, 90]") {
   const std::string junction =
       "\nJ1: Junction type [" + type +
       "] as [X1]\nwhich has [Traffic light] connection control and [4] connections\n"
-      "with [R1, R2, R3, R4]\nAngles between roads [R1 -> R2, R2 -> R3, R3 -> R4, R4 -> R1]\n"
-      "[80 to 100, 90, 90, 90]\nRoad lane connections [R1.L1 -> R3.L1]\n"
+      "with [R1, R2, R3, R4]\nAngles between roads " +
+      angles +
+      "\nRoad lane connections [R1.L1 -> R3.L1]\n"
       "Dimensions [Width: 15 to 25, Depth: 20]\n"
       "Traffic light [With pedestrian crossing] as [TL1 -> R1.L1, TL3 -> R3]\n";
   std::string roads;
@@ -229,6 +233,104 @@ TEST(WmgTranslationTest, CrossroadsNamesArmsWestSouthEastNorthAndItsLightsByArm)
   EXPECT_EQ(when.terms[0].operands.at(0).name, "light_west");
   EXPECT_EQ(when.terms.at(1).kind, TermKind::word);
   EXPECT_EQ(when.terms[1].name, "green");
+}
+
+TEST(WmgTranslationTest, TheFirstPairsAngleTurnsTheCrossingRoadAndStaysASearchDimension) {
+  Parts parts;
+  parts.scenery = crossroads_scenery();
+  const std::string text = parts.text();
+  ParseResult result = parse_ok(text);
+  const ScenarioTemplate& scenario = result.scenario;
+  const NamedValue* angle = map_parameter(scenario, "angle");
+  ASSERT_NE(angle, nullptr);
+  expect_spans(angle->location, text, "80 to 100");
+  const int dimension = parameter_index(scenario, "J1.angle.R1_R2");
+  ASSERT_GE(dimension, 0);
+  std::vector<double> values = midpoint(scenario);
+  for (double sampled : {80.0, 87.5, 100.0}) {
+    values[static_cast<std::size_t>(dimension)] = sampled;
+    EXPECT_EQ(at(angle->value, values), sampled);
+  }
+  // The other pairs stay parameters (fixed here), but the map has one angle.
+  EXPECT_EQ(std::count_if(scenario.map.parameters.begin(), scenario.map.parameters.end(),
+                          [](const NamedValue& parameter) { return parameter.name == "angle"; }),
+            1);
+}
+
+TEST(WmgTranslationTest, APairOfTheOtherCornerGivesTheSupplementOfItsAngle) {
+  // R2 (south) -> R3 (east) meet at 180° - angle; a pair of opposite arms says nothing.
+  Parts parts;
+  parts.scenery =
+      crossroads_scenery("Crossroads", "[R1 -> R3, R2 -> R3, R3 -> R4]\n[180, 60 to 80, 100]");
+  ParseResult result = parse_ok(parts.text());
+  const ScenarioTemplate& scenario = result.scenario;
+  const NamedValue* angle = map_parameter(scenario, "angle");
+  ASSERT_NE(angle, nullptr);
+  std::vector<double> values = midpoint(scenario);
+  values[static_cast<std::size_t>(parameter_index(scenario, "J1.angle.R2_R3"))] = 65;
+  EXPECT_EQ(at(angle->value, values), 115.0);
+
+  Parts wrapping;
+  wrapping.scenery = crossroads_scenery("Crossroads", "[R1 -> R4]\n[70]");
+  ParseResult wrapped = parse_ok(wrapping.text());
+  ASSERT_NE(map_parameter(wrapped.scenario, "angle"), nullptr);
+  EXPECT_EQ(at(map_parameter(wrapped.scenario, "angle")->value, {}), 110.0);
+}
+
+TEST(WmgTranslationTest, TJunctionSideRoadAngleComesFromTheFirstTwoRoads) {
+  std::string roads;
+  for (int r = 1; r <= 3; ++r) {
+    const std::string id = "R" + std::to_string(r);
+    roads +=
+        road_text(id, 2, "Horizontal road geometry [Straight]", "Length [100] AND Lane width [3.5]",
+                  r == 1 ? "START" : "START: [J1]", r == 1 ? "END: [J1]" : "END", "48");
+  }
+  Parts parts;
+  parts.scenery =
+      scenery(roads,
+              "\nJ1: Junction type [T-Junction] as [T1]\n"
+              "which has [Give way] connection control and [3] connections with [R1, R2, R3]\n"
+              "Angles between roads [R2 -> R1, R2 -> R3] [70 to 110, 90]\n"
+              "Road lane connections [R1.L1 -> R3.L1]\nDimensions [Width: 10, Depth: 10]\n");
+  ParseResult result = parse_ok(parts.text());
+  const ScenarioTemplate& scenario = result.scenario;
+  EXPECT_EQ(scenario.map.name, "t_junction");
+  const NamedValue* angle = map_parameter(scenario, "angle");
+  ASSERT_NE(angle, nullptr);
+  std::vector<double> values = midpoint(scenario);
+  values[static_cast<std::size_t>(parameter_index(scenario, "J1.angle.R2_R1"))] = 75;
+  EXPECT_EQ(at(angle->value, values), 75.0);
+}
+
+TEST(WmgTranslationTest, EveryRoundaboutSizeIsARoundaboutMapWithHalfItsDiameter) {
+  for (std::string type :
+       {"Mini roundabout", "Compact roundabout", "Normal roundabout", "Large roundabout"}) {
+    SCOPED_TRACE(type);
+    std::string roads;
+    for (int r = 1; r <= 4; ++r) {
+      const std::string id = "R" + std::to_string(r);
+      roads += road_text(id, 1, "Horizontal road geometry [Straight]",
+                         "Length [100] AND Lane width [2.75 to 3.25]",
+                         r == 1 ? "START" : "START: [J1]", r == 1 ? "END: [J1]" : "END", "48");
+    }
+    Parts parts;
+    parts.scenery = scenery(
+        roads, "\nJ1: Junction type [" + type +
+                   "] as [O1]\nwhich has [Give way] connection control and [4] connections\n"
+                   "with [R1, R2, R3, R4]\nAngles between roads [R1 -> R2] [60 to 120]\n"
+                   "Road lane connections [R1.L1 -> R3.L1]\nDimensions [Diameter: 10 to 200]\n");
+    ParseResult result = parse_ok(parts.text());
+    const ScenarioTemplate& scenario = result.scenario;
+    EXPECT_EQ(scenario.map.name, "roundabout");
+    const NamedValue* ring_radius = map_parameter(scenario, "ring_radius");
+    ASSERT_NE(ring_radius, nullptr);
+    std::vector<double> values = midpoint(scenario);
+    values[static_cast<std::size_t>(parameter_index(scenario, "J1.diameter"))] = 13;
+    EXPECT_EQ(at(ring_radius->value, values), 6.5);
+    // The arms are a quarter turn apart whatever the file says: no angle for the map.
+    EXPECT_EQ(map_parameter(scenario, "angle"), nullptr);
+    EXPECT_GE(parameter_index(scenario, "J1.angle.R1_R2"), 0);
+  }
 }
 
 TEST(WmgTranslationTest, LightThatNoJunctionPlacesIsAnError) {

@@ -188,9 +188,20 @@ std::vector<ParameterSet> parameter_sets() {
   sets.push_back({"crossroads", {{"lanes", 4}, {"lane_width", 5}, {"crosswalks", 0}}});
   sets.push_back({"t_junction", {{"lanes", 1}}});
   sets.push_back({"t_junction", {{"lanes", 3}, {"lane_width", 4}, {"arm_length", 60}}});
+  sets.push_back({"crossroads", {{"angle", 45}, {"lanes", 1}, {"arm_length", 20}}});
+  sets.push_back({"crossroads", {{"angle", 60}}});
+  sets.push_back({"crossroads", {{"angle", 135}, {"lanes", 3}, {"lane_width", 3}}});
+  sets.push_back({"crossroads", {{"angle", 100}, {"lanes", 4}, {"lane_width", 5}}});
+  sets.push_back({"t_junction", {{"angle", 45}, {"lanes", 3}}});
+  sets.push_back({"t_junction", {{"angle", 135}, {"lanes", 1}}});
+  sets.push_back({"t_junction", {{"angle", 80}, {"lane_width", 2.5}}});
   sets.push_back({"roundabout", {{"ring_radius", 60}, {"entry_angle", 30}}});
   sets.push_back({"roundabout", {{"entry_angle", 30}, {"lane_width", 5}}});
   sets.push_back({"roundabout", {{"ring_radius", 35}, {"lane_width", 2.5}, {"arm_length", 20}}});
+  sets.push_back({"roundabout", {{"ring_radius", 5}}});
+  sets.push_back({"roundabout", {{"ring_radius", 5}, {"lane_width", 3.75}, {"arm_length", 20}}});
+  sets.push_back({"roundabout", {{"ring_radius", 8}, {"entry_angle", 30}, {"lane_width", 2.5}}});
+  sets.push_back({"roundabout", {{"ring_radius", 100}, {"lane_width", 5}}});
   sets.push_back(
       {"merge", {{"lanes", 1}, {"merge_angle", 45}, {"ramp_radius", 30}, {"ramp_length", 0}}});
   sets.push_back(
@@ -437,7 +448,13 @@ TEST(BuiltinMapParameters, ValuesOutsideTheirRangeAreRejected) {
   EXPECT_THAT(error_of("straight", {{"two_way", 2}}),
               HasSubstr("parameter 'two_way' = 2 must be 0 or 1"));
   EXPECT_THAT(error_of("curve", {{"angle", 181}}), HasSubstr("'angle' = 181 is outside"));
-  EXPECT_THAT(error_of("roundabout", {{"ring_radius", 10}}), HasSubstr("'ring_radius'"));
+  EXPECT_THAT(error_of("roundabout", {{"ring_radius", 4}}),
+              HasSubstr("parameter 'ring_radius' = 4 is outside its range 5..100 m"));
+  EXPECT_THAT(error_of("roundabout", {{"ring_radius", 101}}), HasSubstr("'ring_radius'"));
+  EXPECT_THAT(error_of("crossroads", {{"angle", 30}}),
+              HasSubstr("parameter 'angle' = 30 is outside its range 45..135 deg"));
+  EXPECT_THAT(error_of("t_junction", {{"angle", 140}}),
+              HasSubstr("parameter 'angle' = 140 is outside its range 45..135 deg"));
   EXPECT_THAT(error_of("merge", {{"merge_angle", 90}}), HasSubstr("'merge_angle'"));
   EXPECT_THAT(error_of("straight", {{"length", std::numeric_limits<double>::infinity()}}),
               HasSubstr("'length' = inf is outside its range 10..10000 m"));
@@ -461,6 +478,13 @@ TEST(BuiltinMapParameters, ACurveTooTightForItsRoadIsRejected) {
               HasSubstr("radius 20 m is too tight"));
   EXPECT_THAT(error_of("curve", {{"angle", 0}, {"straight_before", 0}, {"straight_after", 0}}),
               HasSubstr("no length"));
+}
+
+TEST(BuiltinMapParameters, ARingTooSmallForItsLanesIsRejected) {
+  // At 42 degrees a 4.25 m entry curve from a 5 m lane needs (4.25 + 2.5) / sin 42° - 4.25 m.
+  std::string message = error_of("roundabout", {{"ring_radius", 5}, {"lane_width", 5}});
+  EXPECT_THAT(message, HasSubstr("ring_radius 5 m is too small for lanes 5 m wide"));
+  EXPECT_THAT(message, HasSubstr("need a ring_radius of at least 5.83"));
 }
 
 TEST(BuiltinMapParameters, LaterValuesOverrideEarlierOnes) {
@@ -882,6 +906,292 @@ TEST(BuiltinTJunction, WithThreeLanesTheSideRoadsInnerLanesTurnLeft) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// junction angle (crossroads and t_junction)
+
+double distance_to_segment(MapPoint p, MapPoint a, MapPoint b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double squared = dx * dx + dy * dy;
+  double t = squared > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / squared : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return distance(p, {a.x + t * dx, a.y + t * dy});
+}
+
+double distance_to_outline(MapPoint p, const std::vector<MapPoint>& polygon) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    nearest =
+        std::min(nearest, distance_to_segment(p, polygon[i], polygon[(i + 1) % polygon.size()]));
+  return nearest;
+}
+
+// Inside the polygon, or on its outline within `tolerance`.
+bool inside_or_on(MapPoint p, const std::vector<MapPoint>& polygon, double tolerance = 1e-6) {
+  if (distance_to_outline(p, polygon) <= tolerance) return true;
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const MapPoint a = polygon[i], b = polygon[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+      inside = !inside;
+  }
+  return inside;
+}
+
+double signed_area(const std::vector<MapPoint>& polygon) {
+  double twice = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const MapPoint a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return twice / 2;
+}
+
+MapPoint direction_of(double degrees_ccw) {
+  return {std::cos(radians(degrees_ccw)), std::sin(radians(degrees_ccw))};
+}
+double along(MapPoint p, MapPoint direction) { return p.x * direction.x + p.y * direction.y; }
+// Distance from the line through the centre along `direction`.
+double off_axis(MapPoint p, MapPoint direction) {
+  return std::abs(p.x * direction.y - p.y * direction.x);
+}
+
+struct AngledJunction {
+  std::string map;
+  double angle = 90;
+  int lanes = 2;
+};
+
+std::string describe(const AngledJunction& junction) {
+  return junction.map + " angle=" + std::to_string(junction.angle) +
+         " lanes=" + std::to_string(junction.lanes);
+}
+
+std::vector<AngledJunction> angled_junctions() {
+  std::vector<AngledJunction> junctions;
+  for (std::string map : {"crossroads", "t_junction"})
+    for (double angle : {45.0, 60.0, 80.0, 100.0, 120.0, 135.0})
+      for (int lanes : {1, 2, 3}) junctions.push_back({map, angle, lanes});
+  return junctions;
+}
+
+TEST(BuiltinJunctionAngle, TheCrossingRoadsLanesHeadAtTheAngle) {
+  for (const AngledJunction& junction : angled_junctions()) {
+    SCOPED_TRACE(describe(junction));
+    MapDescription map = generate_builtin_map(
+        junction.map, {{"angle", junction.angle}, {"lanes", static_cast<double>(junction.lanes)}});
+    const bool crossroads = junction.map == "crossroads";
+    for (int k = 0; k < junction.lanes; ++k) {
+      const std::string lane = std::to_string(k);
+      // South arm `angle` counter-clockwise from the west arm: its traffic heads at `angle`.
+      expect_heading(start_heading(lane_of(map, "south_in_" + lane)), junction.angle, 1e-9,
+                     "south_in");
+      expect_heading(end_heading(lane_of(map, "south_in_" + lane)), junction.angle, 1e-9,
+                     "south_in");
+      expect_heading(start_heading(lane_of(map, "south_out_" + lane)), junction.angle + 180, 1e-9,
+                     "south_out");
+      expect_heading(start_heading(lane_of(map, "west_in_" + lane)), 0, 1e-9, "west_in");
+      expect_heading(start_heading(lane_of(map, "east_in_" + lane)), 180, 1e-9, "east_in");
+      EXPECT_NEAR(centre_line(lane_of(map, "south_in_" + lane)).length(), 150, 1e-9);
+      if (crossroads) {
+        expect_heading(start_heading(lane_of(map, "north_out_" + lane)), junction.angle, 1e-9,
+                       "north_out");
+        // Straight over: one line from the south arm into the north arm.
+        const LaneDescription& over = lane_of(map, "south_north_" + lane);
+        EXPECT_EQ(over.turn, LaneTurn::none);
+        EXPECT_EQ(over.centre_line.size(), 2u);
+        expect_heading(start_heading(over), junction.angle, 1e-9, "south_north");
+      }
+    }
+    // The turns keep their sides: from the west arm, south is a right turn by 180° - angle,
+    // from the south arm, east is a right turn by the angle (within the half chord by which an
+    // arc's first and last chords turn less than its tangents).
+    const LaneDescription& west_south = lane_of(map, "west_south_0");
+    EXPECT_EQ(west_south.turn, LaneTurn::right);
+    EXPECT_NEAR(degrees(angle_difference(end_heading(west_south), start_heading(west_south))),
+                junction.angle - 180, 0.6);
+    const LaneDescription& south_east = lane_of(map, "south_east_0");
+    EXPECT_EQ(south_east.turn, LaneTurn::right);
+    EXPECT_NEAR(degrees(angle_difference(end_heading(south_east), start_heading(south_east))),
+                -junction.angle, 0.6);
+    const LaneDescription& south_west =
+        lane_of(map, "south_west_" + std::to_string(junction.lanes - 1));
+    EXPECT_EQ(south_west.turn, LaneTurn::left);
+    EXPECT_NEAR(degrees(angle_difference(end_heading(south_west), start_heading(south_west))),
+                180 - junction.angle, 0.6);
+  }
+}
+
+MapPoint arm_direction(const std::string& arm, double angle) {
+  if (arm == "west") return {-1, 0};
+  if (arm == "east") return {1, 0};
+  return direction_of(arm == "north" ? angle : angle + 180);
+}
+
+TEST(BuiltinJunctionAngle, ArmsBeginWhereTheyClearTheCrossingRoadAndConnectorsStayInside) {
+  for (const AngledJunction& junction : angled_junctions()) {
+    SCOPED_TRACE(describe(junction));
+    MapDescription map = generate_builtin_map(
+        junction.map, {{"angle", junction.angle}, {"lanes", static_cast<double>(junction.lanes)}});
+    const bool crossroads = junction.map == "crossroads";
+    const double half_size = junction.lanes * 3.5 + 3;  // road and pavements, from the axis
+    ASSERT_EQ(map.junctions.size(), 1u);
+    const std::vector<MapPoint>& outline = map.junctions[0].outline;
+    EXPECT_GT(signed_area(outline), 0) << "counter-clockwise";
+    for (std::size_t i = 0; i < outline.size(); ++i)
+      EXPECT_GT(distance(outline[i], outline[(i + 1) % outline.size()]), 1e-6) << "repeated";
+
+    const std::vector<std::string> arms =
+        crossroads ? ids({"north", "east", "south", "west"}) : ids({"west", "east", "south"});
+    // Where each arm begins: all its lanes begin (or end) there, on the junction's outline.
+    std::map<std::string, double> starts;
+    for (const std::string& arm : arms) {
+      const MapPoint outward = arm_direction(arm, junction.angle);
+      starts[arm] = along(lane_of(map, arm + "_in_0").centre_line.back(), outward);
+      for (int k = 0; k < junction.lanes; ++k)
+        for (const std::string& way : {std::string("_in_"), std::string("_out_")}) {
+          const LaneDescription& lane = lane_of(map, arm + way + std::to_string(k));
+          const MapPoint at_junction =
+              way == "_in_" ? lane.centre_line.back() : lane.centre_line.front();
+          EXPECT_NEAR(along(at_junction, outward), starts[arm], 1e-9) << lane.id;
+          EXPECT_LT(distance_to_outline(at_junction, outline), 1e-9) << lane.id;
+        }
+    }
+    // Each arm's start, pavements included, is clear of every arm of the other road (at least
+    // half_size from its axis where it lies on that arm's side), touching it at the acute corner.
+    double closest = std::numeric_limits<double>::infinity();
+    for (const std::string& arm : arms) {
+      const MapPoint outward = arm_direction(arm, junction.angle);
+      for (double side : {-1.0, 1.0}) {
+        const MapPoint edge{starts[arm] * outward.x - side * half_size * outward.y,
+                            starts[arm] * outward.y + side * half_size * outward.x};
+        for (const std::string& other : arms) {
+          const MapPoint other_outward = arm_direction(other, junction.angle);
+          if (std::abs(along(other_outward, outward)) > 0.99) continue;  // the same road
+          if (along(edge, other_outward) <= 1e-9) continue;
+          EXPECT_GE(off_axis(edge, other_outward), half_size - 1e-9) << arm << " on " << other;
+          closest = std::min(closest, off_axis(edge, other_outward));
+        }
+      }
+    }
+    EXPECT_NEAR(closest, half_size, 1e-9);
+    // The acute corner's arms begin half_size / tan(acute / 2) out; on the T's main road the arm
+    // at the obtuse corner begins at half_size.
+    const double acute = radians(std::min(junction.angle, 180 - junction.angle));
+    const double acute_start = half_size / std::tan(acute / 2);
+    EXPECT_NEAR(starts["south"], acute_start, 1e-9);
+    EXPECT_NEAR(starts[junction.angle <= 90 ? "west" : "east"], acute_start, 1e-9);
+    EXPECT_NEAR(starts[junction.angle <= 90 ? "east" : "west"],
+                crossroads ? acute_start : half_size, 1e-9);
+
+    for (const LaneDescription& lane : map.lanes) {
+      if (lane.junction.empty()) continue;
+      for (MapPoint point : lane.centre_line)
+        EXPECT_TRUE(inside_or_on(point, outline))
+            << lane.id << " leaves the junction at (" << point.x << ", " << point.y << ")";
+    }
+
+    // Stop lines 6 m and crosswalks 1 to 5 m outside their arm's start, across their arm.
+    auto expect_stop_line = [&](const std::vector<MapPoint>& line, const std::string& arm) {
+      for (MapPoint point : line)
+        EXPECT_NEAR(along(point, arm_direction(arm, junction.angle)), starts[arm] + 6, 1e-9);
+    };
+    if (crossroads) {
+      for (const std::string& arm : arms)
+        expect_stop_line(light_of(map, "light_" + arm).stop_lines.at(0), arm);
+    } else {
+      expect_stop_line(sign_of(map, "stop_south").stop_lines.at(0), "south");
+      double north_edge = -std::numeric_limits<double>::infinity();
+      for (MapPoint corner : outline) north_edge = std::max(north_edge, corner.y);
+      EXPECT_NEAR(north_edge, junction.lanes * 3.5, 1e-9) << "the north pavement runs on";
+    }
+    EXPECT_NEAR(along(centre_line(lane_of(map, "south_in_0")).point_at(144),
+                      arm_direction("south", junction.angle)),
+                starts["south"] + 6, 1e-9);
+    for (const CrosswalkDescription& crosswalk : map.crosswalks) {
+      SCOPED_TRACE(crosswalk.id);
+      const std::string arm = crosswalk.id.substr(std::string("crosswalk_").size());
+      const MapPoint outward = arm_direction(arm, junction.angle);
+      double near = std::numeric_limits<double>::infinity(), far = 0;
+      for (MapPoint corner : crosswalk.outline) {
+        near = std::min(near, along(corner, outward));
+        far = std::max(far, along(corner, outward));
+      }
+      EXPECT_NEAR(near, starts[arm] + 1, 1e-9);
+      EXPECT_NEAR(far, starts[arm] + 5, 1e-9);
+      for (const CrosswalkDescription& other : map.crosswalks) {
+        if (other.id == crosswalk.id) continue;
+        for (MapPoint corner : other.outline)
+          EXPECT_FALSE(inside_or_on(corner, crosswalk.outline, 0)) << other.id << " overlaps";
+      }
+    }
+  }
+}
+
+TEST(BuiltinJunctionAngle, TurnsCircleTheKerbCornerStraightOnFirstAtTheObtuseOne) {
+  // At 60°: the west arm meets the south arm at 60° (acute) and the north arm at 120°
+  // (obtuse). Half-size 10, so the acute corner lies 10 / tan 30° = 17.32 m along both arms,
+  // where they begin, and the obtuse one 10 / tan 60° = 5.77 m along.
+  MapDescription map = generate_builtin_map("crossroads", {{"angle", 60}});
+  const double acute = 10 / std::tan(radians(30));
+  const double obtuse = 10 / std::tan(radians(60));
+  EXPECT_NEAR(-lane_of(map, "west_in_0").centre_line.back().x, acute, 1e-9);
+
+  // Right into the south arm: all arc, radius 10 - 5.25 about the corner (-17.32, -10).
+  const LaneDescription& right = lane_of(map, "west_south_0");
+  for (MapPoint point : right.centre_line) EXPECT_NEAR(distance(point, {-acute, -10}), 4.75, 1e-9);
+  EXPECT_NEAR(centre_line(right).length(), 4.75 * radians(120), 2e-3);
+
+  // Left into the north arm: straight along y = -1.75 to x = -5.77, a 60° arc of radius
+  // 10 + 1.75 about the corner (-5.77, 10), then straight along the north out lane.
+  const LaneDescription& left = lane_of(map, "west_north_1");
+  const MapPoint corner{-obtuse, 10};
+  const MapPoint north = direction_of(60);
+  int straight_in = 0, on_arc = 0, straight_out = 0;
+  for (MapPoint point : left.centre_line) {
+    if (std::abs(point.y + 1.75) < 1e-9 && point.x <= -obtuse + 1e-9) {
+      ++straight_in;
+    } else if (std::abs(distance(point, corner) - 11.75) < 1e-9) {
+      ++on_arc;
+    } else {
+      // On the north out lane's line: 1.75 m right of the north axis.
+      EXPECT_NEAR(point.x * north.y - point.y * north.x, 1.75, 1e-9) << point.x << ", " << point.y;
+      ++straight_out;
+    }
+  }
+  EXPECT_GE(straight_in, 2);
+  EXPECT_GT(on_arc, 10);
+  EXPECT_GE(straight_out, 1);
+  EXPECT_NEAR(centre_line(left).length(), 2 * (acute - obtuse) + 11.75 * radians(60), 2e-3);
+}
+
+TEST(BuiltinJunctionAngle, ARightAngleIsTheDefaultMapExactly) {
+  for (std::string name : {"crossroads", "t_junction"}) {
+    SCOPED_TRACE(name);
+    MapDescription given = generate_builtin_map(name, {{"angle", 90}});
+    MapDescription by_default = generate_builtin_map(name, {});
+    ASSERT_EQ(given.lanes.size(), by_default.lanes.size());
+    for (std::size_t i = 0; i < given.lanes.size(); ++i)
+      EXPECT_EQ(given.lanes[i].centre_line, by_default.lanes[i].centre_line);
+    EXPECT_EQ(given.junctions[0].outline, by_default.junctions[0].outline);
+    EXPECT_EQ(given.junctions[0].outline.size(), 4u);
+  }
+}
+
+TEST(BuiltinJunctionAngle, RoutesThroughAnObliqueJunctionFindTheLightAhead) {
+  RoadMap map = build_road_map(generate_builtin_map("crossroads", {{"angle", 70}}));
+  auto from = map.find_lane("south_in_0");
+  auto to = map.find_lane("east_out_0");
+  ASSERT_TRUE(from && to);
+  auto route = find_route(map, LanePosition{*from, 100, 0}, LanePosition{*to, 50, 0});
+  ASSERT_TRUE(route);
+  ASSERT_EQ(route->segments.size(), 3u);
+  EXPECT_EQ(map.lane(route->segments[1].lane).id, "south_east_0");
+  auto light = next_feature_ahead(map, *route, 0, FeatureKind::traffic_light);
+  ASSERT_TRUE(light);
+  EXPECT_EQ(map.traffic_lights()[light->index].id, "light_south");
+  EXPECT_NEAR(light->distance, 44, 1e-9);
+}
+
+// ---------------------------------------------------------------------------------------------
 // curve
 
 TEST(BuiltinCurve, LanesMatchTheContract) {
@@ -1067,6 +1377,135 @@ TEST(BuiltinRoundabout, LargerRingsPushTheArmsOutWhereTheEntryCurveNeedsIt) {
   const LaneDescription& east_in = lane_of(map, "east_in_0");
   EXPECT_GT(east_in.centre_line.back().x, 65);
   EXPECT_NEAR(centre_line(east_in).length(), 100, 1e-9);
+}
+
+// Whether segments ab and cd cross at a point inside both (touching or running along each other
+// does not count).
+bool segments_cross(MapPoint a, MapPoint b, MapPoint c, MapPoint d) {
+  auto side = [](MapPoint p, MapPoint q, MapPoint r) {
+    return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+  };
+  const double c_side = side(a, b, c), d_side = side(a, b, d);
+  const double a_side = side(c, d, a), b_side = side(c, d, b);
+  return ((c_side > 0 && d_side < 0) || (c_side < 0 && d_side > 0)) &&
+         ((a_side > 0 && b_side < 0) || (a_side < 0 && b_side > 0));
+}
+
+bool centre_lines_cross(const LaneDescription& first, const LaneDescription& second) {
+  for (std::size_t i = 0; i + 1 < first.centre_line.size(); ++i)
+    for (std::size_t j = 0; j + 1 < second.centre_line.size(); ++j)
+      if (segments_cross(first.centre_line[i], first.centre_line[i + 1], second.centre_line[j],
+                         second.centre_line[j + 1]))
+        return true;
+  return false;
+}
+
+// The tightest radius along a centre line: the circle through three neighbouring points.
+double tightest_radius(const LaneDescription& lane) {
+  double tightest = std::numeric_limits<double>::infinity();
+  const std::vector<MapPoint>& points = lane.centre_line;
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const MapPoint a = points[i - 1], b = points[i], c = points[i + 1];
+    const double twice_area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    if (twice_area < 1e-12) continue;
+    tightest =
+        std::min(tightest, distance(a, b) * distance(b, c) * distance(c, a) / (2 * twice_area));
+  }
+  return tightest;
+}
+
+// The polar angle, in degrees from +x, at which a connector meets the ring.
+double ring_angle_at(MapPoint point) { return degrees(std::atan2(point.y, point.x)); }
+
+struct RingSize {
+  double ring_radius = 0;
+  double lane_width = 3.5;
+};
+
+std::string describe(const RingSize& size) {
+  return "ring_radius=" + std::to_string(size.ring_radius) +
+         " lane_width=" + std::to_string(size.lane_width);
+}
+
+TEST(BuiltinRoundabout, MiniToLargeRingsAreClosedUncrossedAndEveryExitIsReachable) {
+  // Mini (10 m diameter, the smallest), compact, normal and large (200 m) roundabouts.
+  for (const RingSize& size : std::vector<RingSize>{
+           {5, 3.5}, {5, 3.75}, {6.5, 2.75}, {12.5, 3.25}, {16, 3.5}, {50, 3.5}, {100, 3.75}}) {
+    SCOPED_TRACE(describe(size));
+    const double r = size.ring_radius;
+    MapDescription map =
+        generate_builtin_map("roundabout", {{"ring_radius", r}, {"lane_width", size.lane_width}});
+    const LaneDescription& ring = lane_of(map, "ring_0");
+    EXPECT_EQ(ring.centre_line.front(), ring.centre_line.back()) << "closed";
+    for (MapPoint point : ring.centre_line) EXPECT_NEAR(distance(point, {0, 0}), r, 1e-9);
+    EXPECT_NEAR(centre_line(ring).length(), 2 * std::numbers::pi * r, 2e-3 * r);
+    EXPECT_GT(r - size.lane_width / 2, 3) << "a central island";
+
+    const std::vector<std::string> arms = {"east", "north", "west", "south"};
+    for (std::size_t a = 0; a < arms.size(); ++a) {
+      SCOPED_TRACE(arms[a]);
+      const LaneDescription& entry = lane_of(map, arms[a] + "_entry");
+      const LaneDescription& exit = lane_of(map, arms[a] + "_exit");
+      const double axis = 90.0 * static_cast<double>(a);
+      // Joins after the arm's axis and before the next arm's exit leaves (90° on, mirrored).
+      const double joins = degrees(
+          angle_difference(radians(ring_angle_at(entry.centre_line.back())), radians(axis)));
+      const double leaves = degrees(
+          angle_difference(radians(axis), radians(ring_angle_at(exit.centre_line.front()))));
+      EXPECT_GE(joins, 15 - 1e-9);
+      EXPECT_LE(joins, 42 + 1e-9);
+      EXPECT_NEAR(leaves, joins, 1e-6);
+      // Curves a car can drive, which never reach inside the ring's centre line.
+      EXPECT_GE(tightest_radius(entry), 4.25 * 0.999);
+      EXPECT_GE(tightest_radius(exit), 4.25 * 0.999);
+      for (const LaneDescription* connector : {&entry, &exit})
+        for (MapPoint point : connector->centre_line)
+          EXPECT_GE(distance(point, {0, 0}), r - 1e-9) << connector->id;
+      // Arm lanes begin outside the ring, clear of the neighbouring arms.
+      MapPoint arm_end = lane_of(map, arms[a] + "_in_0").centre_line.back();
+      EXPECT_GE(distance(arm_end, {0, 0}), r + 5 - 1e-9);
+    }
+    // No two lanes off the ring cross (entries and exits touch the ring only where they join it).
+    for (const LaneDescription& first : map.lanes)
+      for (const LaneDescription& second : map.lanes) {
+        if (first.id >= second.id || first.id == "ring_0" || second.id == "ring_0") continue;
+        EXPECT_FALSE(centre_lines_cross(first, second)) << first.id << " x " << second.id;
+      }
+
+    RoadMap road_map = build_road_map(std::move(map));
+    EXPECT_TRUE(road_map.warnings().empty());
+    for (const std::string& from : arms)
+      for (const std::string& to : arms) {
+        auto in = road_map.find_lane(from + "_in_0");
+        auto out = road_map.find_lane(to + "_out_0");
+        ASSERT_TRUE(in && out);
+        auto route = find_route(road_map, LanePosition{*in, 10, 0}, LanePosition{*out, 10, 0});
+        ASSERT_TRUE(route) << from << " -> " << to;
+        EXPECT_EQ(road_map.lane(route->segments[1].lane).id, from + "_entry");
+      }
+  }
+}
+
+TEST(BuiltinRoundabout, ASmallRingMovesTheEntriesRoundSoThatTheirCurvesStayDrivable) {
+  // A 5 m ring with 3.5 m lanes: at 15° the entry curve would have to be negative; it joins at
+  // asin((4.25 + 1.75) / (5 + 4.25)) = 40.4° with a curve of 4.25 m.
+  MapDescription map = generate_builtin_map("roundabout", {{"ring_radius", 5}});
+  const LaneDescription& entry = lane_of(map, "east_entry");
+  EXPECT_NEAR(ring_angle_at(entry.centre_line.back()), degrees(std::asin(6.0 / 9.25)), 1e-6);
+  EXPECT_NEAR(tightest_radius(entry), 4.25, 0.01);
+  // A ring with room enough keeps the angle it is given.
+  MapDescription roomy =
+      generate_builtin_map("roundabout", {{"ring_radius", 8}, {"entry_angle", 30}});
+  EXPECT_NEAR(ring_angle_at(lane_of(roomy, "east_entry").centre_line.back()), 30, 1e-6);
+}
+
+TEST(BuiltinRoundabout, LargeRingOf200MetresDiameter) {
+  MapDescription map = generate_builtin_map("roundabout", {{"ring_radius", 100}});
+  EXPECT_NEAR(centre_line(lane_of(map, "ring_0")).length(), 200 * std::numbers::pi, 0.2);
+  PolylineProjection joins =
+      centre_line(lane_of(map, "ring_0")).project(lane_of(map, "north_entry").centre_line.back());
+  EXPECT_NEAR(joins.s, 100 * radians(90 + 15), 0.01);
+  EXPECT_GT(lane_of(map, "north_in_0").centre_line.back().y, 105);
 }
 
 // ---------------------------------------------------------------------------------------------

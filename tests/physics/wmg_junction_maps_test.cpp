@@ -1,0 +1,218 @@
+// WMG SDL junctions as generated maps (docs/wmg-semantics.md, "Map"): a junction angle given as a
+// range turns the crossing road of the crossroads and T-junction maps as the search samples it,
+// every roundabout type builds its ring from the diameter, and every WMG corpus file's map builds
+// at the lowest, middle and highest values of its parameters.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "lang/source_file.hpp"
+#include "lang/wmg/wmg.hpp"
+#include "physics/map/lane_route.hpp"
+#include "physics/map/map_source.hpp"
+#include "tests/lang/wmg_test_files.hpp"
+
+namespace scenfuzz {
+namespace {
+
+double heading_degrees(const Polyline& line, double s) {
+  return line.heading_at(s) * 180 / std::numbers::pi;
+}
+
+// A two-lane road joined to J1 (the first road ends there, the others start there).
+std::string junction_road(int number, const std::string& lane_width = "3.5", int lanes = 2) {
+  const std::string id = "R" + std::to_string(number);
+  std::string lane_list;
+  for (int k = 1; k <= lanes; ++k) lane_list += (k > 1 ? ", " : "") + id + ".L" + std::to_string(k);
+  return id + ": " + (number == 1 ? "START" : "START: [J1]") + "\nRoad type [Minor road] as [" +
+         id +
+         "] with zone as [N/A] AND speed limit of [48]\nin an [Urban] environment with Number of "
+         "lanes [" +
+         std::to_string(lanes) + "] as [" + lane_list +
+         "]\nRoad traffic direction [Left-handed] Lane type [Traffic lane] Lane markings [Broken "
+         "line]\nHorizontal road geometry [Straight] Vertical road geometry [Level plane]\n"
+         "Transverse road geometry [Undivided] Road banking angle [Level Plane]\n"
+         "with [No] roadside feature\nLength [100] AND Lane width [" +
+         lane_width + "]\n" + (number == 1 ? "END: [J1]" : "END") + "\n";
+}
+
+std::string junction_file(const std::string& type, int roads, const std::string& angles,
+                          const std::string& dimensions, const std::string& lane_width = "3.5",
+                          int lanes = 2) {
+  std::string road_ids;
+  std::string road_text;
+  for (int r = 1; r <= roads; ++r) {
+    road_ids += (r > 1 ? ", R" : "R") + std::to_string(r);
+    road_text += junction_road(r, lane_width, lanes);
+  }
+  wmg::test::Parts parts;
+  parts.scenery = wmg::test::scenery_with_roads(
+      road_text, "\nJ1: Junction type [" + type + "] as [J]\nwhich has [Give way] connection " +
+                     "control and [" + std::to_string(roads) + "] connections with [" + road_ids +
+                     "]\nAngles between roads " + angles +
+                     "\nRoad lane connections [R1.L1 -> R2.L1]\nDimensions [" + dimensions + "]\n");
+  return parts.text();
+}
+
+wmg::ParseResult parse_ok(const std::string& text) {
+  SourceFile file("t.sdl", text);
+  wmg::ParseResult result = wmg::parse(file);
+  EXPECT_TRUE(result.ok()) << format_diagnostics(file, result.diagnostics) << text;
+  return result;
+}
+
+std::size_t parameter_index(const ScenarioTemplate& scenario, const std::string& name) {
+  for (std::size_t i = 0; i < scenario.parameters.size(); ++i)
+    if (scenario.parameters[i].name == name) return i;
+  ADD_FAILURE() << "no parameter " << name;
+  return 0;
+}
+
+std::vector<double> midpoint(const ScenarioTemplate& scenario) {
+  std::vector<double> values;
+  for (const Parameter& parameter : scenario.parameters)
+    values.push_back((parameter.lower + parameter.upper) / 2);
+  return values;
+}
+
+// The parameter points to try: all lowest, all middle, all highest.
+std::vector<std::vector<double>> corner_points(const ScenarioTemplate& scenario) {
+  std::vector<std::vector<double>> points(3);
+  for (const Parameter& parameter : scenario.parameters) {
+    points[0].push_back(parameter.lower);
+    points[1].push_back((parameter.lower + parameter.upper) / 2);
+    points[2].push_back(parameter.upper);
+  }
+  return points;
+}
+
+RoadMap map_at(const ScenarioTemplate& scenario, const std::vector<double>& values) {
+  return load_scenario_map(scenario.map, map_search_path({}), values);
+}
+
+TEST(WmgJunctionMaps, TheSampledAngleTurnsTheCrossroadsCrossingRoad) {
+  wmg::ParseResult result = parse_ok(junction_file(
+      "Crossroads", 4, "[R1 -> R2, R2 -> R3, R3 -> R4, R4 -> R1]\n[60 to 120, 90, 90, 90]",
+      "Width: 15 to 25, Depth: 20"));
+  const ScenarioTemplate& scenario = result.scenario;
+  ASSERT_EQ(scenario.map.name, "crossroads");
+  const std::size_t angle = parameter_index(scenario, "J1.angle.R1_R2");
+  std::vector<double> values = midpoint(scenario);
+  for (double sampled : {60.0, 75.0, 90.0, 112.5, 120.0}) {
+    SCOPED_TRACE(sampled);
+    values[angle] = sampled;
+    RoadMap map = map_at(scenario, values);
+    // R2 is the south arm: its traffic heads `sampled` degrees from east, towards the centre.
+    auto south_in = map.find_lane("south_in_0");
+    auto north_out = map.find_lane("north_out_1");
+    auto west_in = map.find_lane("west_in_0");
+    ASSERT_TRUE(south_in && north_out && west_in);
+    EXPECT_NEAR(heading_degrees(map.lane(*south_in).centre_line, 0), sampled, 1e-9);
+    EXPECT_NEAR(heading_degrees(map.lane(*north_out).centre_line, 0), sampled, 1e-9);
+    EXPECT_NEAR(heading_degrees(map.lane(*west_in).centre_line, 0), 0, 1e-9);
+    // Whatever the angle, R1 traffic can still turn onto R2 and go on to R3.
+    auto south_out = map.find_lane("south_out_0");
+    auto east_out = map.find_lane("east_out_0");
+    ASSERT_TRUE(south_out && east_out);
+    EXPECT_TRUE(find_route(map, LanePosition{*west_in, 10, 0}, LanePosition{*south_out, 10, 0}));
+    EXPECT_TRUE(find_route(map, LanePosition{*west_in, 10, 0}, LanePosition{*east_out, 10, 0}));
+  }
+}
+
+TEST(WmgJunctionMaps, TheSampledAngleTurnsTheTJunctionsSideRoad) {
+  wmg::ParseResult result = parse_ok(
+      junction_file("T-Junction", 3, "[R1 -> R2, R2 -> R3, R3 -> R1]\n[80 to 100, 90, 180]",
+                    "Width: 10 to 20, Depth: 10 to 20"));
+  const ScenarioTemplate& scenario = result.scenario;
+  ASSERT_EQ(scenario.map.name, "t_junction");
+  std::vector<double> values = midpoint(scenario);
+  values[parameter_index(scenario, "J1.angle.R1_R2")] = 83;
+  RoadMap map = map_at(scenario, values);
+  auto side_road = map.find_lane("south_in_1");
+  ASSERT_TRUE(side_road);
+  EXPECT_NEAR(heading_degrees(map.lane(*side_road).centre_line, 0), 83, 1e-9);
+  EXPECT_EQ(map.stop_sign_count(), 1u);
+}
+
+TEST(WmgJunctionMaps, EveryRoundaboutTypeBuildsOverItsDefaultDiameters) {
+  // The level-1 defaults' diameters (docs/wmg-sdl.md), with the lane widths of a minor road and
+  // of a motorway.
+  struct Roundabout {
+    std::string type;
+    std::string diameter;
+  };
+  for (const Roundabout& roundabout : std::vector<Roundabout>{{"Mini roundabout", "10 to 28"},
+                                                              {"Compact roundabout", "28 to 36"},
+                                                              {"Normal roundabout", "36 to 100"},
+                                                              {"Large roundabout", "100 to 200"}})
+    for (std::string lane_width : {"2.75 to 3.25", "3.5 to 3.75"}) {
+      SCOPED_TRACE(roundabout.type + ", lane width " + lane_width);
+      wmg::ParseResult result = parse_ok(junction_file(
+          roundabout.type, 4, "[R1 -> R2, R2 -> R3, R3 -> R4, R4 -> R1]\n[60 to 120, 90, 90, 90]",
+          "Diameter: " + roundabout.diameter, lane_width, 1));
+      const ScenarioTemplate& scenario = result.scenario;
+      ASSERT_EQ(scenario.map.name, "roundabout");
+      const std::size_t diameter = parameter_index(scenario, "J1.diameter");
+      for (const std::vector<double>& values : corner_points(scenario)) {
+        RoadMap map = map_at(scenario, values);
+        auto ring = map.find_lane("ring_0");
+        auto in = map.find_lane("west_in_0");
+        auto out = map.find_lane("north_out_0");
+        ASSERT_TRUE(ring && in && out);
+        EXPECT_NEAR(map.lane(*ring).centre_line.length(), std::numbers::pi * values[diameter],
+                    1e-3 * values[diameter]);
+        EXPECT_TRUE(find_route(map, LanePosition{*in, 10, 0}, LanePosition{*out, 10, 0}));
+      }
+    }
+}
+
+TEST(WmgJunctionMaps, ALevel1MiniRoundaboutBuilds) {
+  const std::string text =
+      "VERSION: 1.0\nAUTHOR: 'scenfuzz'\n\n"
+      "During the day, there is a bright, clear sky, with no particulates.\n"
+      "There is a mini roundabout, J1, which has connections with R1, R2 and R3.\n"
+      "R1 to R2 is to the left.\n"
+      "R1, R2 and R3 are straight, minor roads.\n"
+      "There is 1 vehicle, Ego.\n"
+      "Ego is in R1.\n"
+      "When Ego is driving towards J1, Ego turns left onto R2.\n"
+      "Ego operates autonomously.\n";
+  wmg::ParseResult result = parse_ok(text);
+  const ScenarioTemplate& scenario = result.scenario;
+  ASSERT_EQ(scenario.map.name, "roundabout");
+  for (const std::vector<double>& values : corner_points(scenario)) {
+    RoadMap map = map_at(scenario, values);
+    EXPECT_TRUE(map.find_lane("ring_0"));
+    EXPECT_TRUE(map.warnings().empty());
+  }
+}
+
+TEST(WmgJunctionMaps, EveryCorpusFilesMapBuildsAtItsLowestMiddleAndHighestPoint) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(wmg::test::wmg_corpus_dir())) {
+    if (entry.path().extension() != ".sdl") continue;
+    SCOPED_TRACE(entry.path().string());
+    std::optional<SourceFile> file = read_source_file(entry.path().string());
+    ASSERT_TRUE(file);
+    wmg::ParseResult result = wmg::parse(*file);
+    ASSERT_TRUE(result.ok()) << format_diagnostics(*file, result.diagnostics);
+    ++files;
+    // An ego placed `at [x, y]` has no lane to look for; building the map is the check then.
+    const std::string& ego_lane = result.scenario.ego.initial.position.lane;
+    for (const std::vector<double>& values : corner_points(result.scenario)) {
+      RoadMap map = map_at(result.scenario, values);
+      if (!ego_lane.empty()) {
+        EXPECT_TRUE(map.find_lane(ego_lane)) << ego_lane;
+      }
+    }
+  }
+  EXPECT_GE(files, 10);
+}
+
+}  // namespace
+}  // namespace scenfuzz
