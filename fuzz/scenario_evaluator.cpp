@@ -1,5 +1,8 @@
 #include "fuzz/scenario_evaluator.hpp"
 
+#include <cmath>
+#include <numbers>
+
 #include "physics/simulation/initial_overlap.hpp"
 #include "physics/simulation/scenario_setup.hpp"
 
@@ -14,10 +17,18 @@ bool map_has_parameters(const MapReference& map) {
   return !parameters.empty();
 }
 
-GeneKind gene_kind(ParameterKind kind) {
-  switch (kind) {
+// Whether the ends of an angle's interval are one heading: only then may a search wrap from
+// one end to the other (a heading in range(25, 45) deg is not next to 45 at 25).
+bool spans_one_turn(const Dimension& dimension) {
+  const double turn = dimension.unit == "rad" ? 2.0 * std::numbers::pi : 360.0;
+  return std::abs((dimension.upper - dimension.lower) - turn) <= 1e-9 * turn;
+}
+
+GeneKind gene_kind(const Dimension& dimension) {
+  switch (dimension.kind) {
     case ParameterKind::continuous: return GeneKind::continuous;
-    case ParameterKind::angle: return GeneKind::angle;
+    case ParameterKind::angle:
+      return spans_one_turn(dimension) ? GeneKind::angle : GeneKind::continuous;
     case ParameterKind::discrete: return GeneKind::discrete;
   }
   return GeneKind::continuous;
@@ -59,7 +70,7 @@ std::vector<SearchDimension> ScenarioEvaluator::dimensions() const {
   for (const Dimension& dimension : space_.dimensions) {
     SearchDimension gene;
     gene.name = dimension.name;
-    gene.kind = gene_kind(dimension.kind);
+    gene.kind = gene_kind(dimension);
     gene.choices = dimension.choices.size();
     gene.group = dimension.name.substr(0, dimension.name.find('.'));
     dimensions.push_back(std::move(gene));

@@ -589,6 +589,28 @@ TEST(SearchDeterminismTest, ScenarioSearchIsTheSameForAnyThreadCount) {
   expect_same_for_any_thread_count(evaluator, options, {1, 2, 4});
 }
 
+TEST(ScenarioEvaluatorTest, OnlyAnAngleOverAWholeTurnIsAWrappingGene) {
+  // 25 deg and 45 deg are not the same heading; -180 deg and 180 deg are.
+  const SourceFile file("angles.avu", R"(
+ego = AV((("east_0" -> 20.0), range(25, 45) deg, 10.0), (("east_0" -> 400.0), , ));
+npc = Vehicle((("east_1" -> 60.0), range(-180, 180) deg, 5.0));
+npc2 = Vehicle((("east_1" -> 90.0), range(0, 6.283185307179586) rad, 5.0));
+scenario = CreateScenario{load("straight"); ego; {npc, npc2}; {}; {};};
+)");
+  const avunit::ParseResult parsed = avunit::parse(file);
+  ASSERT_TRUE(parsed.ok()) << format_diagnostics(file, parsed.diagnostics);
+  const ScenarioEvaluator evaluator(file, parsed.scenario, map_search_path({}),
+                                    SimulationOptions{});
+  std::unordered_map<std::string, GeneKind> kinds;
+  for (const SearchDimension& dimension : evaluator.dimensions())
+    kinds[dimension.name] = dimension.kind;
+  ASSERT_EQ(kinds.size(), 3u);
+  for (const auto& [name, kind] : kinds) {
+    const bool whole_turn = name.starts_with("npc");
+    EXPECT_EQ(kind, whole_turn ? GeneKind::angle : GeneKind::continuous) << name;
+  }
+}
+
 TEST(SearchDeterminismTest, ChasingCarsSearchIsTheSameForAnyThreadCount) {
   const ChasingCarsEvaluator evaluator("CC1");
   SearchOptions options;
