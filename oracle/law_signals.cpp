@@ -40,7 +40,7 @@ constexpr double kOncoming = 3 * std::numbers::pi / 4;
 // isTrafficJam: this many vehicles slower than kStoppedSpeed in the junction ahead.
 constexpr std::size_t kJamVehicles = 3;
 constexpr double kStoppedSpeed = 1;  // m/s
-// Apollo's gear code for DRIVE: our vehicles never reverse.
+// Apollo's gear code for DRIVE: the ego never reverses (only WMG SDL NPCs do).
 constexpr double kDriveGear = 1;
 
 double colour_code(SignalColour colour) {

@@ -52,7 +52,9 @@ struct PerceivedAcceleration {
 PerceivedAcceleration perceived_acceleration(const Trace& trace, const PerceivedActor& seen) {
   const std::size_t count = trace.sample_count();
   PerceivedAcceleration result{std::vector<PlaneVector>(count), std::vector<std::uint8_t>(count)};
-  auto velocity = [&](std::size_t i) { return along(seen.heading[i], seen.speed[i]); };
+  auto velocity = [&](std::size_t i) {
+    return along(seen.heading[i], longitudinal_velocity_at(seen.speed, seen.reversing, i));
+  };
   for (std::size_t i = 0; i < count; ++i) {
     if (!seen.detected[i]) continue;
     std::size_t before = i, after = i;
@@ -101,19 +103,25 @@ double speed(const Trace& trace, const Argument& argument, std::size_t i) {
 
 PlaneVector velocity(const Trace& trace, const Argument& argument, std::size_t i) {
   if (argument.kind == Argument::Kind::vector) return {argument.first[i], argument.second[i]};
-  if (argument.perceived)
-    return along(argument.perceived->heading[i], argument.perceived->speed[i]);
+  if (argument.perceived) {
+    const PerceivedActor& seen = *argument.perceived;
+    return along(seen.heading[i], longitudinal_velocity_at(seen.speed, seen.reversing, i));
+  }
   const TraceActor& actor = trace.actors[argument.actor];
-  return along(actor.heading[i], actor.speed[i]);
+  return along(actor.heading[i], longitudinal_velocity_at(actor.speed, actor.reversing, i));
 }
 
-// Longitudinal acceleration along the heading plus the centripetal speed * yaw rate across it.
+// Longitudinal acceleration along the heading plus the centripetal speed * yaw rate across it;
+// a reversing actor's velocity points backwards, and so do both (the trace's acceleration is the
+// rate of change of the speed, a magnitude).
 PlaneVector acceleration(const Trace& trace, const Argument& argument, std::size_t i) {
   if (argument.kind == Argument::Kind::vector) return {argument.first[i], argument.second[i]};
   if (argument.perceived) return argument.acceleration.value[i];
   const TraceActor& actor = trace.actors[argument.actor];
-  const PlaneVector forward = along(actor.heading[i], actor.acceleration[i]);
-  const PlaneVector sideways = along(actor.heading[i], actor.speed[i] * actor.yaw_rate[i]);
+  const double direction = reversing_at(actor.reversing, i) ? -1 : 1;
+  const PlaneVector forward = along(actor.heading[i], direction * actor.acceleration[i]);
+  const PlaneVector sideways =
+      along(actor.heading[i], direction * actor.speed[i] * actor.yaw_rate[i]);
   return {forward.x - sideways.y, forward.y + sideways.x};
 }
 

@@ -224,7 +224,11 @@ void translate_dynamics(const Dynamics& dynamics, Translation& translation) {
 
   for (Actor& actor : actors) {
     actor.type = ir_type(actor.kind, actor.location);
-    if (!actor.motion.phases.empty())
+    // A car about to reverse stands still: it sets off backwards when its phase starts, rather
+    // than arriving forwards at its reversing speed.
+    const bool reverses_first = !actor.motion.phases.empty() &&
+                                actor.motion.phases.front().manoeuvre.starts_with("Reverse");
+    if (!actor.motion.phases.empty() && !reverses_first)
       for (const NamedValue& parameter : actor.motion.phases.front().parameters)
         if (parameter.name == "speed") actor.initial.speed = parameter.value;
     if (actor.name == ego) {

@@ -41,7 +41,7 @@ double chord_ratio(double turn) {
 }
 
 // Moves (x, y) along an arc of length `distance` that starts in direction `direction` and turns
-// by `turn` on the way.
+// by `turn` on the way; a negative distance runs the arc backwards.
 void move_along_arc(KinematicState& state, double direction, double distance, double turn) {
   const double chord = distance * chord_ratio(turn);
   const double chord_direction = direction + turn / 2;
@@ -72,13 +72,19 @@ KinematicState step_bicycle(const KinematicState& state, const VehicleControl& c
   const SpeedProfile profile =
       accelerate_towards(speed, acceleration, acceleration > 0 ? vehicle.max_speed : 0.0, dt);
 
+  const bool backwards = speed > 0 ? state.reversing : control.reverse;
+  // Reversing runs the same arc the other way: the heading turns the other way for the same
+  // steering, as a car's does.
+  const double travelled = backwards ? -profile.distance : profile.distance;
+
   const double rear_to_centre = vehicle.wheelbase / 2;
   const double slip = std::atan(rear_to_centre / vehicle.wheelbase * std::tan(next.steering_angle));
-  const double turn = profile.distance * std::sin(slip) / rear_to_centre;
-  move_along_arc(next, state.heading + slip, profile.distance, turn);
+  const double turn = travelled * std::sin(slip) / rear_to_centre;
+  move_along_arc(next, state.heading + slip, travelled, turn);
 
   next.heading = angle_difference(state.heading + turn, 0);
   next.speed = profile.end_speed;
+  next.reversing = backwards && profile.end_speed > 0;
   next.acceleration = profile.acceleration;
   next.yaw_rate = turn / dt;
   return next;
@@ -103,6 +109,7 @@ KinematicState step_pedestrian(const KinematicState& state, const PedestrianCont
   next.acceleration = profile.acceleration;
   next.yaw_rate = angle_difference(next.heading, state.heading) / dt;
   next.steering_angle = 0;
+  next.reversing = false;  // a pedestrian turns to face where it walks
   return next;
 }
 

@@ -191,7 +191,8 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
   output_.clear();
   for (const Track& track : tracks_) {
     WorldObject object = track.object;
-    const double coasted = object.speed * (time_ - track.last_seen);
+    const double coasted =
+        (object.reversing ? -object.speed : object.speed) * (time_ - track.last_seen);
     if (coasted != 0) {  // most tracks were detected this step
       object.x += coasted * std::cos(object.heading);
       object.y += coasted * std::sin(object.heading);

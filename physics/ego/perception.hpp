@@ -49,6 +49,7 @@ struct WorldObject {
   TraceActorKind kind = TraceActorKind::vehicle;
   double x = 0, y = 0, heading = 0, speed = 0;
   double length = 0, width = 0;
+  bool reversing = false;  // moving against its heading (KinematicState::reversing)
 };
 
 class Perception {

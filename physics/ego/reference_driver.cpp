@@ -139,8 +139,10 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     double across = extent_across(object, relative);
     double along = extent_along(object, relative);
     double gap = at->s - along - front_s;
-    double lead_speed = object.speed * std::cos(relative);
-    double lateral_speed = object.speed * std::sin(relative);
+    // A reversing object moves against its heading: one backing towards the ego closes in.
+    double velocity = object.reversing ? -object.speed : object.speed;
+    double lead_speed = velocity * std::cos(relative);
+    double lateral_speed = velocity * std::sin(relative);
     double clearance = std::abs(at->lateral) - across - half_width;
 
     bool in_path = clearance <= 0;

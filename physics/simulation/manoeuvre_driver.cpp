@@ -13,6 +13,8 @@ namespace {
 constexpr double kDefaultLaneChangeTime = 4;  // s
 // A pedestrian phase without a speed walks at a typical pace.
 constexpr double kDefaultWalkingSpeed = 1.4;  // m/s
+// A reversing phase without a speed backs up at the pace of a parking manoeuvre.
+constexpr double kDefaultReversingSpeed = 2;  // m/s
 // How far ahead a turn looks for a junction connector of its kind.
 constexpr double kTurnSearchDistance = 1000;  // m
 // A speed within this of its target counts as reached.
@@ -101,11 +103,8 @@ void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self
 
   // Without a duration, a speed change takes what a calm driver needs for it.
   primitive_duration_ = 0;
-  if (phase.speed) {
-    double change = *phase.speed - speed;
-    primitive_duration_ =
-        change > 0 ? change / body_.max_acceleration : -change / body_.comfortable_deceleration;
-  }
+  if (auto target = target_velocity(phase))
+    primitive_duration_ = calm_change_time(longitudinal_velocity(state_), *target);
   if (phase.duration) primitive_duration_ = *phase.duration;
 
   switch (phase.choice.primitive) {
@@ -143,6 +142,22 @@ void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self
     case MotionPrimitive::collide:
       on_lane_.reset();  // it leaves the lanes to head for its reference
       break;
+    case MotionPrimitive::reverse_towards:
+    case MotionPrimitive::reverse_away: {
+      // A gap the actor is already past (closer than it for Towards) is not one reversing
+      // reaches: such a phase ends on its duration alone.
+      const double clearance = clearance_to(world, phase.reference);
+      const bool towards = phase.choice.primitive == MotionPrimitive::reverse_towards;
+      gap_ahead_ = phase.gap && (towards ? clearance > *phase.gap : clearance < *phase.gap);
+      walk_heading_ = state_.heading + std::numbers::pi;  // a pedestrian turns round
+      break;
+    }
+    case MotionPrimitive::reverse_cut_in:
+    case MotionPrimitive::reverse_cut_out:
+      primitive_duration_ = phase.duration.value_or(kDefaultLaneChangeTime);
+      change_lane(world, self, phase.choice.side, primitive_duration_);
+      walk_heading_ = state_.heading + std::numbers::pi;
+      break;
     case MotionPrimitive::walk: walk_heading_ = state_.heading; break;
     case MotionPrimitive::walk_cross: {
       // Across the nearest lane: from a pavement, towards the road; standing in a lane (WMG SDL
@@ -168,7 +183,8 @@ void ManoeuvreDriver::change_lane(const WorldSnapshot& world, std::uint32_t self
   const PhaseMotion& phase = script_->phases[next_];
   const Lane& lane = map_->lane(on_lane_->lane);
   const std::int32_t reference_lane = world.lanes[phase.reference].lane;
-  const bool cut_in = phase.choice.primitive == MotionPrimitive::cut_in;
+  const bool cut_in = phase.choice.primitive == MotionPrimitive::cut_in ||
+                      phase.choice.primitive == MotionPrimitive::reverse_cut_in;
   const auto& left = lane.left_forward_neighbours;
   const auto& right = lane.right_forward_neighbours;
   std::optional<LaneIndex> target;
@@ -237,29 +253,72 @@ void ManoeuvreDriver::plan_cut_in(const WorldSnapshot& world, const PhaseMotion&
   cut_in_acceleration_[1] = limited((*phase.speed - reached) / half);
 }
 
+std::optional<double> ManoeuvreDriver::target_velocity(const PhaseMotion& phase) const {
+  // A pedestrian turns round to walk back, so it still moves along its heading.
+  if (reverses(phase.choice.primitive) && !pedestrian_)
+    return -phase.speed.value_or(kDefaultReversingSpeed);
+  return phase.speed;
+}
+
+double ManoeuvreDriver::calm_change_time(double from, double to) const {
+  // A change of direction passes through a standstill: braking to it, then setting off.
+  if (from * to < 0) return calm_change_time(from, 0) + calm_change_time(0, to);
+  const double faster = std::abs(to) - std::abs(from);
+  return faster > 0 ? faster / body_.max_acceleration : -faster / body_.comfortable_deceleration;
+}
+
+double ManoeuvreDriver::clearance_to(const WorldSnapshot& world, std::uint32_t reference) const {
+  return std::abs(longitudinal_offset(state_, world.states[reference])) -
+         (world.lengths[reference] + body_.length) / 2;
+}
+
+bool ManoeuvreDriver::gap_reached(const WorldSnapshot& world, const PhaseMotion& phase) const {
+  if (!gap_ahead_) return false;
+  const double clearance = clearance_to(world, phase.reference);
+  return phase.choice.primitive == MotionPrimitive::reverse_towards ? clearance <= *phase.gap
+                                                                    : clearance >= *phase.gap;
+}
+
 double ManoeuvreDriver::longitudinal_acceleration(double dt) const {
   const PhaseMotion* phase = current();
   if (!phase) return 0;
-  const double speed = state_.speed;
+  const double velocity = longitudinal_velocity(state_);
   const double remaining = primitive_duration_ - phase_time_;
-  auto towards_speed = [&](double target) { return (target - speed) / std::max(remaining, dt); };
+  auto towards = [&](double target) { return (target - velocity) / std::max(remaining, dt); };
   double acceleration = 0;
   switch (phase->choice.primitive) {
-    case MotionPrimitive::stop: acceleration = towards_speed(0); break;
-    case MotionPrimitive::stopped: acceleration = -body_.max_deceleration; break;
+    case MotionPrimitive::stop: acceleration = towards(0); break;
+    case MotionPrimitive::stopped:
+      // Full braking, whichever way the actor moves; move_on_lane stops it at 0.
+      if (velocity > 0) acceleration = -body_.max_deceleration;
+      if (velocity < 0) acceleration = body_.max_deceleration;
+      break;
     case MotionPrimitive::cut_in:
       if (phase->gap && remaining > 0) {
         acceleration = phase_time_ < primitive_duration_ / 2 ? cut_in_acceleration_[0]
                                                              : cut_in_acceleration_[1];
       } else if (phase->speed) {
-        acceleration = towards_speed(*phase->speed);
+        acceleration = towards(*phase->speed);
       }
       break;
     default:
-      if (phase->speed) acceleration = towards_speed(*phase->speed);
+      if (auto target = target_velocity(*phase)) acceleration = towards(*target);
       break;
   }
+  // The class's limits bound the change of speed: braking a reversing actor pushes it forwards,
+  // and an actor setting off backwards accelerates towards its rear.
+  const bool backwards = velocity < 0 || (velocity == 0 && acceleration < 0);
+  if (backwards) return std::clamp(acceleration, -body_.max_acceleration, body_.max_deceleration);
   return std::clamp(acceleration, -body_.max_deceleration, body_.max_acceleration);
+}
+
+LaneIndex ManoeuvreDriver::previous_lane(LaneIndex to) const {
+  // Backing out of a lane: into the lane that leads straight into it, if one does.
+  const auto& predecessors = map_->lane(to).predecessors;
+  if (predecessors.empty()) return to;
+  for (LaneIndex predecessor : predecessors)
+    if (map_->lane(predecessor).turn == LaneTurn::none) return predecessor;
+  return predecessors.front();
 }
 
 LaneIndex ManoeuvreDriver::next_lane(LaneIndex from) const {
@@ -275,9 +334,25 @@ LaneIndex ManoeuvreDriver::next_lane(LaneIndex from) const {
 
 void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
   LanePosition& at = *on_lane_;
-  const double v0 = state_.speed;
-  double v1 = std::clamp(v0 + acceleration * dt, 0.0, body_.max_speed);
+  const double v0 = longitudinal_velocity(state_);
+  double v1 = std::clamp(v0 + acceleration * dt, -body_.max_speed, body_.max_speed);
+  // The direction of travel changes only at a standstill, as a gearbox allows, and only a
+  // reversing phase sets off backwards (a braking actor stops rather than reverses).
+  const PhaseMotion* phase = current();
+  const bool may_set_off_backwards = phase && reverses(phase->choice.primitive);
+  if (v0 * v1 < 0 || (v0 == 0 && v1 < 0 && !may_set_off_backwards)) v1 = 0;
   at.s += (v0 + v1) / 2 * dt;
+  while (at.s < 0) {
+    LaneIndex previous = previous_lane(at.lane);
+    if (previous == at.lane) {  // the start of a lane nothing leads into: it stops there
+      at.s = 0;
+      v1 = 0;
+      break;
+    }
+    LinkPoints link = link_points(*map_, previous, at.lane);
+    at.s = at.s - link.entry_s + link.exit_s;
+    at.lane = previous;
+  }
   while (at.s > map_->lane(at.lane).length()) {
     LaneIndex next = next_lane(at.lane);
     if (next == at.lane) {  // a dead end: the actor stops there
@@ -302,14 +377,17 @@ void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
   auto pose = lane_pose_at(*map_, at.lane, at.s, at.lateral);
   if (!pose) return;
   // The heading follows the path the sideways move draws (at walking pace or less, the body
-  // would swing round; a vehicle there turns no further than a slow one would).
-  double heading = pose->heading + std::atan2(lateral_rate_, std::max(v1, 1.0));
-  state_.acceleration = (v1 - v0) / dt;
+  // would swing round; a vehicle there turns no further than a slow one would). Backing up
+  // sideways, the body turns the other way: its rear leads.
+  double sideways = std::atan2(lateral_rate_, std::max(std::abs(v1), 1.0));
+  double heading = pose->heading + (v1 < 0 ? -sideways : sideways);
+  state_.acceleration = (std::abs(v1) - std::abs(v0)) / dt;
   state_.yaw_rate = angle_difference(heading, state_.heading) / dt;
   state_.x = pose->position.x;
   state_.y = pose->position.y;
   state_.heading = heading;
-  state_.speed = v1;
+  state_.speed = std::abs(v1);
+  state_.reversing = v1 < 0;
 }
 
 void ManoeuvreDriver::move_free(const WorldSnapshot& world, double acceleration, double dt) {
@@ -321,9 +399,10 @@ void ManoeuvreDriver::move_free(const WorldSnapshot& world, double acceleration,
     const KinematicState& reference = world.states[phase->reference];
     target_heading = std::atan2(reference.y - state_.y, reference.x - state_.x);
     if (primitive == MotionPrimitive::walk_away) target_heading += std::numbers::pi;
-  } else if (phase &&
-             (primitive == MotionPrimitive::walk || primitive == MotionPrimitive::walk_cross)) {
-    target_heading = walk_heading_;
+  } else if (phase && (primitive == MotionPrimitive::walk ||
+                       primitive == MotionPrimitive::walk_cross || reverses(primitive))) {
+    // A reversing vehicle keeps its heading; a reversing pedestrian has turned round.
+    target_heading = pedestrian_ || !reverses(primitive) ? walk_heading_ : state_.heading;
   }
 
   if (pedestrian_) {
@@ -339,8 +418,11 @@ void ManoeuvreDriver::move_free(const WorldSnapshot& world, double acceleration,
     state_ = step_pedestrian(state_, control, body_, dt);
     return;
   }
-  // Pure pursuit of the target direction, looking a speed-dependent distance ahead.
-  VehicleControl control{acceleration, 0};
+  // Pure pursuit of the target direction, looking a speed-dependent distance ahead. The bicycle
+  // model takes the acceleration on the speed, whichever way the vehicle moves.
+  const bool reversing_phase = phase && reverses(primitive);
+  const bool backwards = state_.speed > 0 ? state_.reversing : reversing_phase;
+  VehicleControl control{backwards ? -acceleration : acceleration, 0, reversing_phase};
   double bearing = angle_difference(target_heading, state_.heading);
   double look_ahead = std::max(5.0, state_.speed);
   control.steering_angle = std::atan(2 * body_.wheelbase * std::sin(bearing) / look_ahead);
@@ -350,8 +432,9 @@ void ManoeuvreDriver::move_free(const WorldSnapshot& world, double acceleration,
 bool ManoeuvreDriver::phase_complete(const WorldSnapshot& world, std::uint32_t self) const {
   const PhaseMotion& phase = script_->phases[next_];
   const bool elapsed = phase_time_ >= primitive_duration_;
+  const std::optional<double> target = target_velocity(phase);
   const bool speed_reached =
-      !phase.speed || std::abs(state_.speed - *phase.speed) < kSpeedTolerance;
+      !target || std::abs(longitudinal_velocity(state_) - *target) < kSpeedTolerance;
   switch (phase.choice.primitive) {
     case MotionPrimitive::keep_lane: return elapsed && speed_reached;
     case MotionPrimitive::lane_change:
@@ -363,6 +446,11 @@ bool ManoeuvreDriver::phase_complete(const WorldSnapshot& world, std::uint32_t s
       return turn_available_ ? turn_done_ : elapsed && speed_reached;
     case MotionPrimitive::walk_cross:
       return (phase.duration && elapsed) || (crossed_onto_lane_ && world.lanes[self].lane < 0);
+    case MotionPrimitive::reverse_towards:
+    case MotionPrimitive::reverse_away:
+      return (elapsed && speed_reached) || gap_reached(world, phase);
+    case MotionPrimitive::reverse_cut_in:
+    case MotionPrimitive::reverse_cut_out: return elapsed && speed_reached;
     case MotionPrimitive::collide:
     case MotionPrimitive::walk:
     case MotionPrimitive::walk_towards:

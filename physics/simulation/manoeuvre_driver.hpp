@@ -1,9 +1,9 @@
 // Drives one WMG SDL actor through its manoeuvre phases, online: its phases start and end on
 // conditions over the current world (the ego's speed, offsets, lights, timers), so its motion
 // cannot be planned before the run as scripted NPCs' is. Vehicles move along the lane graph
-// (arc length, lateral offset and speed, integrated each step; lane changes are smooth sideways
-// curves in the target lane's frame); pedestrians and vehicles off every lane move freely with
-// the point-mass and bicycle models.
+// (arc length, lateral offset and velocity along the heading, negative when reversing, integrated
+// each step; lane changes are smooth sideways curves in the target lane's frame); pedestrians and
+// vehicles off every lane move freely with the point-mass and bicycle models.
 #pragma once
 
 #include <array>
@@ -38,10 +38,19 @@ class ManoeuvreDriver {
   bool phase_complete(const WorldSnapshot& world, std::uint32_t self) const;
   void change_lane(const WorldSnapshot& world, std::uint32_t self, LaneSide side, double duration);
   void plan_cut_in(const WorldSnapshot& world, const PhaseMotion& phase);
+  // The velocity along the heading the phase aims for (negative backwards), if it sets one.
+  std::optional<double> target_velocity(const PhaseMotion& phase) const;
+  // How long a calm driver takes to go from one velocity along the heading to another.
+  double calm_change_time(double from, double to) const;
+  // Bumper-to-bumper distance along the reference's heading, negative while level with it.
+  double clearance_to(const WorldSnapshot& world, std::uint32_t reference) const;
+  bool gap_reached(const WorldSnapshot& world, const PhaseMotion& phase) const;
+  // Along the heading, negative backwards.
   double longitudinal_acceleration(double dt) const;
   void move_on_lane(double acceleration, double dt);
   void move_free(const WorldSnapshot& world, double acceleration, double dt);
   LaneIndex next_lane(LaneIndex from) const;
+  LaneIndex previous_lane(LaneIndex to) const;
   const PhaseMotion* current() const;
 
   const RoadMap* map_;
@@ -68,6 +77,10 @@ class ManoeuvreDriver {
 
   // A cut-in's accelerations over the first and second half of its duration.
   std::array<double, 2> cut_in_acceleration_{};
+
+  // Reverse_Towards / Away: whether the phase started on the far side of its `gap` (beyond it for
+  // Towards, within it for Away), so that reversing can bring the actor to it.
+  bool gap_ahead_ = false;
 
   // Turns: the connector kind wanted at the next fork, and how far the turn got.
   LaneTurn turn_wanted_ = LaneTurn::none;

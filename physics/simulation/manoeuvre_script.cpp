@@ -26,6 +26,15 @@ std::optional<PrimitiveChoice> motion_primitive_named(std::string_view manoeuvre
   for (char c : manoeuvre)
     if (std::isalnum(static_cast<unsigned char>(c)))
       key += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  // Before the cut-ins and cut-outs, which would otherwise claim Reverse_CutIn and _CutOut.
+  if (starts_with(key, "reverse")) {
+    if (ends_with(key, "cutin"))
+      return PrimitiveChoice{MotionPrimitive::reverse_cut_in, LaneSide::towards_reference};
+    if (ends_with(key, "cutout"))
+      return PrimitiveChoice{MotionPrimitive::reverse_cut_out, LaneSide::left_else_right};
+    if (ends_with(key, "away")) return PrimitiveChoice{MotionPrimitive::reverse_away, {}};
+    return PrimitiveChoice{MotionPrimitive::reverse_towards, {}};
+  }
   if (ends_with(key, "cutin"))
     return PrimitiveChoice{MotionPrimitive::cut_in, named_side(key, LaneSide::towards_reference)};
   if (ends_with(key, "cutout"))
@@ -48,6 +57,13 @@ std::optional<PrimitiveChoice> motion_primitive_named(std::string_view manoeuvre
   if (starts_with(key, "drive") || starts_with(key, "misc"))
     return PrimitiveChoice{MotionPrimitive::keep_lane, {}};
   return std::nullopt;
+}
+
+bool reverses(MotionPrimitive primitive) {
+  return primitive == MotionPrimitive::reverse_towards ||
+         primitive == MotionPrimitive::reverse_away ||
+         primitive == MotionPrimitive::reverse_cut_in ||
+         primitive == MotionPrimitive::reverse_cut_out;
 }
 
 }  // namespace scenfuzz

@@ -15,18 +15,23 @@
 namespace scenfuzz {
 
 enum class MotionPrimitive {
-  keep_lane,     // Drive_*, Misc_*: keep the lane, change speed to `speed` over `duration`
-  lane_change,   // LaneChangeLeft/Right_* (not a cut-in), *_CutOut: to a neighbour lane
-  cut_in,        // *_CutIn: into the reference's lane, ending `gap` ahead of it
-  stop,          // Stop: brake to a standstill over `duration`
-  stopped,       // Stopped: stand still
-  turn_left,     // TurnLeft_*: the left connector at the next junction
-  turn_right,    // TurnRight_*
-  collide,       // Collide_*: head for the reference actor
-  walk,          // Walk/Run/Slide_* (pedestrians): straight on along the heading
-  walk_cross,    // Walk/Run/Slide_Cross: straight across the lane
-  walk_towards,  // Walk/Run/Slide_Towards: towards the reference
-  walk_away,     // Walk/Run/Slide_Away: away from the reference
+  keep_lane,    // Drive_*, Misc_*: keep the lane, change speed to `speed` over `duration`
+  lane_change,  // LaneChangeLeft/Right_* (not a cut-in), *_CutOut: to a neighbour lane
+  cut_in,       // *_CutIn: into the reference's lane, ending `gap` ahead of it
+  stop,         // Stop: brake to a standstill over `duration`
+  stopped,      // Stopped: stand still
+  turn_left,    // TurnLeft_*: the left connector at the next junction
+  turn_right,   // TurnRight_*
+  collide,      // Collide_*: head for the reference actor
+  // Reverse_*: backwards at `speed`, facing the way it did.
+  reverse_towards,  // Reverse_Towards: along the lane; ends early within `gap` of the reference
+  reverse_away,     // Reverse_Away: along the lane; ends early `gap` away from the reference
+  reverse_cut_in,   // Reverse_CutIn: into the reference's lane, as Drive_CutIn picks it
+  reverse_cut_out,  // Reverse_CutOut: out of the lane, as Drive_CutOut
+  walk,             // Walk/Run/Slide_* (pedestrians): straight on along the heading
+  walk_cross,       // Walk/Run/Slide_Cross: straight across the lane
+  walk_towards,     // Walk/Run/Slide_Towards: towards the reference
+  walk_away,        // Walk/Run/Slide_Away: away from the reference
 };
 
 // Which neighbour lane a lane change goes to.
@@ -38,9 +43,11 @@ struct PrimitiveChoice {
 };
 
 // The primitive an MP_TYPE names ("Drive_CutIn", "LaneChangeLeft_CutOut", "Stop", "Walk_Cross",
-// "turn_left"; case and underscores do not matter); nullopt for one the simulator lacks
-// (Reverse_*, unknown words).
+// "turn_left"; case and underscores do not matter); nullopt for an unknown word.
 std::optional<PrimitiveChoice> motion_primitive_named(std::string_view manoeuvre);
+
+// Whether the primitive drives backwards (Reverse_*).
+bool reverses(MotionPrimitive primitive);
 
 struct PhaseMotion {
   std::string manoeuvre;  // as written, for messages

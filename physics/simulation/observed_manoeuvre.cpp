@@ -12,6 +12,7 @@ namespace scenfuzz {
 
 ObservedManoeuvre observe_manoeuvre(const RoadMap& map, const KinematicState& state, LaneFix lane) {
   if (state.speed < kStoppedSpeed) return ObservedManoeuvre::stopped;
+  if (state.reversing) return ObservedManoeuvre::reverse;
   if (lane.lane < 0) return ObservedManoeuvre::going_ahead;
   const Lane& on = map.lane(static_cast<LaneIndex>(lane.lane));
   const double relative = angle_difference(

@@ -26,11 +26,11 @@ inline constexpr double kStoppedSpeed = 0.1;  // m/s
 // Above this sideways speed relative to its lane an actor is changing lane.
 inline constexpr double kLaneChangeLateralSpeed = 0.3;  // m/s
 
-// Stopped below kStoppedSpeed; TurnLeft/TurnRight on a junction connector of that turn;
-// LaneChangeLeft/Right while its velocity across its lane exceeds kLaneChangeLateralSpeed;
-// Reverse when it moves against its lane's direction (speeds are never negative in the
-// simulation, so backing up shows as a heading opposed to the lane); else GoingAhead, also off
-// every lane.
+// Stopped below kStoppedSpeed; Reverse while it moves backwards (KinematicState::reversing, on a
+// lane or off every lane) or against its lane's direction (a heading opposed to the lane's);
+// TurnLeft/TurnRight on a junction connector of that turn; LaneChangeLeft/Right while its
+// velocity across its lane exceeds kLaneChangeLateralSpeed; else GoingAhead, also off every
+// lane.
 ObservedManoeuvre observe_manoeuvre(const RoadMap& map, const KinematicState& state, LaneFix lane);
 
 // The manoeuvre a condition's word names: "GoingAhead", "Going Ahead", "going_ahead", ... (case,

@@ -53,6 +53,7 @@ void append_sample(TraceActor& actor, const KinematicState& state, LaneFix lane)
   actor.yaw_rate.push_back(state.yaw_rate);
   actor.lane.push_back(lane.lane);
   actor.s.push_back(lane.s);
+  actor.reversing.push_back(state.reversing ? 1 : 0);
 }
 
 void append_perceived(PerceivedActor& column, const WorldObject* seen) {
@@ -62,6 +63,7 @@ void append_perceived(PerceivedActor& column, const WorldObject* seen) {
   column.y.push_back(seen ? seen->y : nan);
   column.heading.push_back(seen ? seen->heading : nan);
   column.speed.push_back(seen ? seen->speed : nan);
+  column.reversing.push_back(seen && seen->reversing ? 1 : 0);
 }
 
 // Room for every sample the run can take, so that recording never reallocates mid-run.
@@ -71,9 +73,13 @@ void reserve_samples(Trace& trace, std::size_t samples) {
     for (auto* column : {&actor.x, &actor.y, &actor.heading, &actor.speed, &actor.acceleration,
                          &actor.yaw_rate, &actor.s})
       column->reserve(samples);
-  for (TraceActor& actor : trace.actors) actor.lane.reserve(samples);
+  for (TraceActor& actor : trace.actors) {
+    actor.lane.reserve(samples);
+    actor.reversing.reserve(samples);
+  }
   for (PerceivedActor& perceived : trace.perceived) {
     perceived.detected.reserve(samples);
+    perceived.reversing.reserve(samples);
     for (auto* column : {&perceived.x, &perceived.y, &perceived.heading, &perceived.speed})
       column->reserve(samples);
   }
@@ -135,7 +141,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   }
   const std::size_t actor_count = trace.actors.size();
   for (std::size_t k = 1; k < actor_count; ++k)
-    trace.perceived.push_back({static_cast<ActorId>(k), {}, {}, {}, {}, {}});
+    trace.perceived.push_back({static_cast<ActorId>(k), {}, {}, {}, {}, {}, {}});
   for (const TrafficLight& light : map.traffic_lights()) trace.lights.push_back({light.id, {}});
 
   std::vector<WorldObject> truth(actor_count - 1);
@@ -209,6 +215,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       object.y = states[k].y;
       object.heading = states[k].heading;
       object.speed = states[k].speed;
+      object.reversing = states[k].reversing;
     }
     const std::vector<WorldObject>& seen = perception.observe(states[kEgo], truth);
     for (std::size_t k = 1, next = 0; k < actor_count; ++k) {

@@ -33,18 +33,33 @@ struct TraceActor {
   double width = 0;   // box: across; round shapes: diameter
   double height = 0;
 
-  // One entry per sample.
+  // One entry per sample. `speed` is a magnitude and `acceleration` how fast it grows: the
+  // velocity is `speed` along `heading`, or against it where `reversing` is 1.
   std::vector<double> x, y, heading, speed, acceleration, yaw_rate;
-  std::vector<std::int32_t> lane;  // LaneIndex of the lane the centre is on, -1 on none
-  std::vector<double> s;           // arc length on `lane`; 0 when lane is -1
+  std::vector<std::int32_t> lane;       // LaneIndex of the lane the centre is on, -1 on none
+  std::vector<double> s;                // arc length on `lane`; 0 when lane is -1
+  std::vector<std::uint8_t> reversing;  // one per sample, or empty: it never reverses
 };
 
+// Whether `reversing` (a TraceActor's or PerceivedActor's column) says sample i moved backwards.
+inline bool reversing_at(const std::vector<std::uint8_t>& reversing, std::size_t i) {
+  return !reversing.empty() && reversing[i] != 0;
+}
+
+// The velocity along the heading at sample i: the speed, negative while reversing.
+inline double longitudinal_velocity_at(const std::vector<double>& speed,
+                                       const std::vector<std::uint8_t>& reversing, std::size_t i) {
+  return reversing_at(reversing, i) ? -speed[i] : speed[i];
+}
+
 // How the ego saw one other actor at each sample (after range, field of view, misses, noise and
-// latency). Samples where it was not detected have detected == 0 and NaN elsewhere.
+// latency). Samples where it was not detected have detected == 0 and NaN elsewhere (reversing
+// 0).
 struct PerceivedActor {
   ActorId actor = 0;
   std::vector<std::uint8_t> detected;
   std::vector<double> x, y, heading, speed;
+  std::vector<std::uint8_t> reversing;  // as TraceActor's: one per sample, or empty
 };
 
 struct TraceLight {

@@ -102,6 +102,13 @@ void append_csv_lane(std::string& out, std::int32_t lane, std::span<const std::s
 
 // ---- JSON writing ----
 
+// One boolean per sample (an empty column: all false, as it means).
+ordered_json reversing_json(const std::vector<std::uint8_t>& reversing, std::size_t sample_count) {
+  ordered_json flags = ordered_json::array();
+  for (std::size_t i = 0; i < sample_count; ++i) flags.push_back(reversing_at(reversing, i));
+  return flags;
+}
+
 ordered_json actor_json(const TraceActor& actor) {
   ordered_json samples = ordered_json::object();
   samples["x"] = actor.x;
@@ -112,6 +119,7 @@ ordered_json actor_json(const TraceActor& actor) {
   samples["yaw_rate"] = actor.yaw_rate;
   samples["lane"] = actor.lane;
   samples["s"] = actor.s;
+  samples["reversing"] = reversing_json(actor.reversing, actor.x.size());
   return ordered_json{{"name", actor.name},
                       {"kind", trace_actor_kind_name(actor.kind)},
                       {"category", category_name(actor.category)},
@@ -125,9 +133,13 @@ ordered_json actor_json(const TraceActor& actor) {
 ordered_json perceived_json(const PerceivedActor& perceived) {
   ordered_json detected = ordered_json::array();
   for (const std::uint8_t flag : perceived.detected) detected.push_back(flag != 0);
-  return ordered_json{
-      {"actor", perceived.actor}, {"detected", std::move(detected)}, {"x", perceived.x},
-      {"y", perceived.y},         {"heading", perceived.heading},    {"speed", perceived.speed}};
+  return ordered_json{{"actor", perceived.actor},
+                      {"detected", std::move(detected)},
+                      {"x", perceived.x},
+                      {"y", perceived.y},
+                      {"heading", perceived.heading},
+                      {"speed", perceived.speed},
+                      {"reversing", reversing_json(perceived.reversing, perceived.x.size())}};
 }
 
 ordered_json light_json(const TraceLight& light) {
@@ -253,6 +265,26 @@ std::vector<double> read_number_column(const json& object, std::string_view key,
   return values;
 }
 
+std::vector<std::uint8_t> read_flag_column(const json& object, std::string_view key,
+                                           const std::string& where, std::size_t sample_count) {
+  const json& column = read_column(object, key, where, sample_count);
+  const std::string path = member_path(where, key);
+  std::vector<std::uint8_t> flags;
+  flags.reserve(column.size());
+  for (std::size_t i = 0; i < column.size(); ++i) {
+    if (!column[i].is_boolean()) fail(element_path(path, i), "expected true or false");
+    flags.push_back(column[i].get<bool>() ? 1 : 0);
+  }
+  return flags;
+}
+
+// Traces written before the column existed have none: nothing in them reverses.
+std::vector<std::uint8_t> read_reversing_column(const json& object, const std::string& where,
+                                                std::size_t sample_count) {
+  if (!object.contains("reversing")) return {};
+  return read_flag_column(object, "reversing", where, sample_count);
+}
+
 std::vector<std::int32_t> read_lane_column(const json& object, const std::string& where,
                                            std::size_t sample_count) {
   const json& column = read_column(object, "lane", where, sample_count);
@@ -291,6 +323,7 @@ TraceActor read_actor(const json& value, const std::string& where, std::size_t s
   actor.yaw_rate = read_number_column(samples, "yaw_rate", samples_path, sample_count);
   actor.lane = read_lane_column(samples, samples_path, sample_count);
   actor.s = read_number_column(samples, "s", samples_path, sample_count);
+  actor.reversing = read_reversing_column(samples, samples_path, sample_count);
   return actor;
 }
 
@@ -300,16 +333,12 @@ PerceivedActor read_perceived(const json& value, const std::string& where, std::
   PerceivedActor perceived;
   perceived.actor =
       read_actor_id(member(value, "actor", where), member_path(where, "actor"), actor_count);
-  const json& detected = read_column(value, "detected", where, sample_count);
-  for (std::size_t i = 0; i < detected.size(); ++i) {
-    if (!detected[i].is_boolean())
-      fail(element_path(member_path(where, "detected"), i), "expected true or false");
-    perceived.detected.push_back(detected[i].get<bool>() ? 1 : 0);
-  }
+  perceived.detected = read_flag_column(value, "detected", where, sample_count);
   perceived.x = read_number_column(value, "x", where, sample_count);
   perceived.y = read_number_column(value, "y", where, sample_count);
   perceived.heading = read_number_column(value, "heading", where, sample_count);
   perceived.speed = read_number_column(value, "speed", where, sample_count);
+  perceived.reversing = read_reversing_column(value, where, sample_count);
   return perceived;
 }
 
@@ -367,12 +396,14 @@ TraceEvent read_event(const json& value, const std::string& where, std::size_t c
   const bool actors = std::ranges::all_of(trace.actors, [n](const TraceActor& actor) {
     return actor.x.size() == n && actor.y.size() == n && actor.heading.size() == n &&
            actor.speed.size() == n && actor.acceleration.size() == n &&
-           actor.yaw_rate.size() == n && actor.lane.size() == n && actor.s.size() == n;
+           actor.yaw_rate.size() == n && actor.lane.size() == n && actor.s.size() == n &&
+           (actor.reversing.empty() || actor.reversing.size() == n);
   });
   return actors && std::ranges::all_of(trace.perceived, [n](const PerceivedActor& perceived) {
            return perceived.detected.size() == n && perceived.x.size() == n &&
                   perceived.y.size() == n && perceived.heading.size() == n &&
-                  perceived.speed.size() == n;
+                  perceived.speed.size() == n &&
+                  (perceived.reversing.empty() || perceived.reversing.size() == n);
          });
 }
 
@@ -386,8 +417,9 @@ std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids)
       perceived_by_actor[perceived.actor] = &perceived;
 
   std::string out =
-      "time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,perceived_detected,"
-      "perceived_x,perceived_y,perceived_heading,perceived_speed\n";
+      "time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,reversing,"
+      "perceived_detected,perceived_x,perceived_y,perceived_heading,perceived_speed,"
+      "perceived_reversing\n";
   out.reserve(out.size() + trace.sample_count() * trace.actors.size() * 160);
   for (std::size_t i = 0; i < trace.sample_count(); ++i) {
     for (std::size_t id = 0; id < trace.actors.size(); ++id) {
@@ -406,9 +438,10 @@ std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids)
       append_csv_lane(out, actor.lane[i], lane_ids);
       out += ',';
       if (actor.lane[i] >= 0) append_csv_number(out, actor.s[i]);
+      out += reversing_at(actor.reversing, i) ? ",1" : ",0";
       const PerceivedActor* perceived = perceived_by_actor[id];
       if (id == kEgo || perceived == nullptr) {
-        out += ",,,,,\n";
+        out += ",,,,,,\n";
         continue;
       }
       out += perceived->detected[i] != 0 ? ",1" : ",0";
@@ -417,6 +450,8 @@ std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids)
         out += ',';
         if (perceived->detected[i] != 0) append_csv_number(out, (*column)[i]);
       }
+      out += ',';
+      if (perceived->detected[i] != 0) out += reversing_at(perceived->reversing, i) ? '1' : '0';
       out += '\n';
     }
   }

@@ -11,10 +11,12 @@
 namespace scenfuzz {
 
 // Header row, then one row per (sample, actor), samples in time order and actors in id order:
-//   time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,
-//   perceived_detected,perceived_x,perceived_y,perceived_heading,perceived_speed
-// The perceived columns are empty on the ego's rows, and all but perceived_detected (0) are
-// empty where the ego did not detect the actor. Lanes print as `lane_ids[lane]` when ids are
+//   time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,reversing,
+//   perceived_detected,perceived_x,perceived_y,perceived_heading,perceived_speed,
+//   perceived_reversing
+// `reversing` is 1 where the actor moved backwards (its speed against its heading), else 0. The
+// perceived columns are empty on the ego's rows, and all but perceived_detected (0) are empty
+// where the ego did not detect the actor. Lanes print as `lane_ids[lane]` when ids are
 // given (the map's lane ids, in LaneIndex order), else as the index; empty off the lanes.
 // Numbers are the shortest text that reads back to the same double. Text is quoted as RFC 4180
 // says. Throws std::out_of_range when a lane index has no entry in a non-empty `lane_ids`.
@@ -23,8 +25,9 @@ std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids 
 // {"format": "scenfuzz-trace", "version": 1, "map", "seed", "dt", "end", "time": [...],
 //  "actors": [{"name", "kind", "category", "shape", "length", "width", "height",
 //              "samples": {"x": [...], "y", "heading", "speed", "acceleration", "yaw_rate",
-//                          "lane", "s"}}],
-//  "perceived": [{"actor", "detected": [true, ...], "x": [...], "y", "heading", "speed"}],
+//                          "lane", "s", "reversing": [false, ...]}}],
+//  "perceived": [{"actor", "detected": [true, ...], "x": [...], "y", "heading", "speed",
+//                 "reversing"}],
 //  "lights": [{"id", "colour": ["red", ...]}],
 //  "collisions": [{"time", "first", "second", "point": [x, y], "first_side", "second_side"}],
 //  "events": [{"kind", "time", "collision", "message"}]}
@@ -35,6 +38,7 @@ std::string trace_json(const Trace& trace);
 // Reads what trace_json writes. Throws std::runtime_error naming the offending place
 // ("trace JSON: actors[1].samples.speed: ...") for malformed JSON, a missing or mistyped field,
 // an unknown name, a column whose length differs from "time", or an actor id out of range.
+// "reversing" may be missing (traces written before it existed): nothing reverses then.
 Trace trace_from_json(const std::string& text);
 
 }  // namespace scenfuzz

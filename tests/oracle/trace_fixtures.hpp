@@ -79,6 +79,7 @@ inline void perceive_perfectly(Trace& trace) {
     seen.y = actor.y;
     seen.heading = actor.heading;
     seen.speed = actor.speed;
+    seen.reversing = actor.reversing;
     trace.perceived.push_back(std::move(seen));
   }
 }
@@ -87,6 +88,7 @@ inline void perceive_perfectly(Trace& trace) {
 inline void miss(PerceivedActor& seen, std::size_t i) {
   seen.detected[i] = 0;
   seen.x[i] = seen.y[i] = seen.heading[i] = seen.speed[i] = NAN;
+  if (!seen.reversing.empty()) seen.reversing[i] = 0;
 }
 
 struct ParsedScenario {

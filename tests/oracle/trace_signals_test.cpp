@@ -155,6 +155,26 @@ TEST_F(TraceSignalsTest, VelIsTheNormOfTheVelocityDifference) {
   EXPECT_DOUBLE_EQ(perceived[4], 1000);
 }
 
+TEST_F(TraceSignalsTest, AReversingAgentsVelocityAndAccelerationPointBackwards) {
+  // The npc backs up towards the ego at 4 m/s, facing east, and speeds up at 1 m/s^2; the ego
+  // drives east at 10 m/s.
+  TraceActor& npc = actor("npc");
+  for (std::size_t i = 0; i < 5; ++i) {
+    actor("ego").speed[i] = 10;
+    npc.speed[i] = 4;
+    npc.acceleration[i] = 1;
+  }
+  npc.reversing.assign(trace.sample_count(), 1);
+  perceive_perfectly(trace);
+  EXPECT_NEAR(values_of("vel(trace[ego], trace[truth][npc])")[0], 14, 1e-12);
+  EXPECT_NEAR(values_of("vel(trace[truth][npc], (-4, 0))")[0], 0, 1e-12);
+  EXPECT_NEAR(values_of("vel(trace[ego], trace[perception][npc])")[0], 14, 1e-12);
+  EXPECT_NEAR(values_of("acc(trace[truth][npc], (-1, 0))")[0], 0, 1e-12);
+  EXPECT_DOUBLE_EQ(values_of("spd(trace[ego], trace[truth][npc])")[0], 6)
+      << "speeds stay magnitudes";
+  EXPECT_NEAR(values_of("diff(trace[perception][npc], trace[truth][npc])")[0], 0, 1e-12);
+}
+
 TEST_F(TraceSignalsTest, SpdIsTheSignedDifferenceOfSpeeds) {
   for (std::size_t i = 0; i < 5; ++i) {
     actor("ego").speed[i] = 10;

@@ -81,6 +81,42 @@ TEST(KinematicsBicycle, TheStoppingStepReportsTheActualDeceleration) {
   EXPECT_NEAR(state.acceleration, -1 / 0.5, 1e-12);
 }
 
+TEST(KinematicsBicycle, ReverseGearSetsOffBackwardsFacingTheSameWay) {
+  const double a = 2, heading = 0.5;
+  const int steps = 40;  // 2 s
+  KinematicState state = drive({.heading = heading}, {.acceleration = a, .reverse = true}, steps);
+  const double t = steps * kDt;
+  EXPECT_TRUE(state.reversing);
+  EXPECT_NEAR(state.speed, a * t, 1e-9) << "the speed stays a magnitude";
+  EXPECT_NEAR(state.acceleration, a, 1e-9);
+  EXPECT_NEAR(longitudinal_velocity(state), -a * t, 1e-9);
+  EXPECT_NEAR(state.x, -a * t * t / 2 * std::cos(heading), 1e-9);
+  EXPECT_NEAR(state.y, -a * t * t / 2 * std::sin(heading), 1e-9);
+  EXPECT_NEAR(state.heading, heading, 1e-12);
+
+  // Braking stops it where the closed form says, backwards, and it stays there.
+  const double x_before = state.x;
+  const double b = 5;
+  state = drive(state, {.acceleration = -b, .reverse = true}, 40);
+  EXPECT_EQ(state.speed, 0);
+  EXPECT_FALSE(state.reversing) << "no direction at a standstill";
+  EXPECT_NEAR(state.x - x_before, -(a * t) * (a * t) / (2 * b) * std::cos(heading), 1e-9);
+}
+
+TEST(KinematicsBicycle, TheDirectionChangesOnlyAtAStandstill) {
+  // Moving forwards, reverse gear does not make it go backwards: it brakes to a stop first.
+  KinematicState state =
+      step_bicycle({.speed = 5}, {.acceleration = 2, .reverse = true}, car(), kDt);
+  EXPECT_FALSE(state.reversing);
+  EXPECT_GT(state.x, 0);
+  // Reversing, a forward gear keeps it reversing until it stands.
+  KinematicState backing{.speed = 3, .reversing = true};
+  backing = step_bicycle(backing, {.acceleration = 1}, car(), kDt);
+  EXPECT_TRUE(backing.reversing);
+  EXPECT_LT(backing.x, 0);
+  EXPECT_NEAR(backing.speed, 3 + kDt, 1e-12);
+}
+
 // The centre of curvature for a centre point moving in direction heading + beta on a circle of
 // radius R = l_r / sin(beta), turning left for positive beta.
 MapPoint curvature_centre(const KinematicState& state, double slip, double radius) {
@@ -112,6 +148,26 @@ TEST(KinematicsBicycle, ConstantSteeringDrivesACircle) {
   EXPECT_NEAR(angle_difference(state.heading, 0), 0, 1e-9);
   EXPECT_NEAR(state.x, 0, 1e-8);
   EXPECT_NEAR(state.y, 0, 1e-8);
+}
+
+TEST(KinematicsBicycle, ReversingWithTheWheelTurnedRunsTheSameCircleTheOtherWay) {
+  const ActorClass& vehicle = car();
+  const double steering = 0.2;
+  const double rear_to_centre = vehicle.wheelbase / 2;
+  const double slip = std::atan(rear_to_centre / vehicle.wheelbase * std::tan(steering));
+  const double radius = rear_to_centre / std::sin(slip);
+  KinematicState state{.speed = 4, .steering_angle = steering, .reversing = true};
+  const MapPoint centre = curvature_centre(state, slip, radius);
+  for (int i = 0; i < 100; ++i) {
+    state = step_bicycle(state, {.steering_angle = steering, .reverse = true}, vehicle, kDt);
+    const MapPoint now = curvature_centre(state, slip, radius);
+    ASSERT_NEAR(now.x, centre.x, 1e-9) << "step " << i;
+    ASSERT_NEAR(now.y, centre.y, 1e-9) << "step " << i;
+  }
+  // Wheel to the left, backing up: the nose swings right, the car goes round clockwise.
+  EXPECT_NEAR(state.yaw_rate, -4 * std::sin(slip) / rear_to_centre, 1e-9);
+  EXPECT_LT(state.heading, 0);
+  EXPECT_LT(state.x, 0);
 }
 
 TEST(KinematicsBicycle, CircleDoesNotDependOnTheStepSize) {

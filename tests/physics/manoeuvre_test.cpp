@@ -306,12 +306,178 @@ TEST(ManoeuvreTest, ConditionsThatCannotBeEvaluatedAreErrors) {
             std::string::npos)
       << run.messages;
 
-  ScenarioTemplate reverse = lead_with(phase("Reverse_Away", 2, 2));
-  ManoeuvreRun unsupported = run_manoeuvres(reverse);
+  ScenarioTemplate unknown_manoeuvre = lead_with(phase("Hover_Away", 2, 2));
+  ManoeuvreRun unsupported = run_manoeuvres(unknown_manoeuvre);
   EXPECT_FALSE(unsupported.setup);
-  EXPECT_NE(unsupported.messages.find("20: Lead's manoeuvre 'Reverse_Away' is not simulated"),
+  EXPECT_NE(unsupported.messages.find("20: Lead's manoeuvre 'Hover_Away' is not simulated"),
             std::string::npos)
       << unsupported.messages;
+}
+
+TEST(ManoeuvreTest, AReverseAwayPhaseBacksTheCarAlongItsLaneAtItsSpeed) {
+  // From a standstill in east_1 (eastbound), 3 m/s backwards reached evenly over 2 s.
+  ScenarioTemplate scenario = three_lane_road(50, 10, 8);
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Reverser",
+                                          relative_state("Ego", "FSL", 200, 0),
+                                          {phase("Reverse_Away", 3, 2)}));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  const Trace& trace = *run.trace;
+  const TraceActor& reverser = actor_named(trace, "Reverser");
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_NEAR(reverser.speed[sample_at(trace, 1)], 1.5, 0.05) << "speeding up evenly";
+  for (std::size_t i = sample_at(trace, 2.05); i < trace.sample_count(); ++i) {
+    ASSERT_NEAR(reverser.speed[i], 3, 0.05) << "the speed is a magnitude, at t = " << trace.time[i];
+    ASSERT_EQ(reverser.reversing[i], 1) << trace.time[i];
+  }
+  const std::size_t from = sample_at(trace, 3), to = sample_at(trace, 8);
+  EXPECT_NEAR((reverser.x[to] - reverser.x[from]) / (trace.time[to] - trace.time[from]), -3, 0.01)
+      << "westwards, against its heading";
+  RoadMap map = scenario_map(scenario);
+  for (std::size_t i = 1; i < trace.sample_count(); ++i) {
+    ASSERT_LE(reverser.x[i], reverser.x[i - 1]) << "never forwards, at t = " << trace.time[i];
+    ASSERT_NEAR(reverser.heading[i], 0, 1e-9) << "still facing east";
+    ASSERT_NEAR(reverser.y[i], -5.25, 1e-9) << "in its lane";
+    ASSERT_EQ(reverser.lane[i], static_cast<std::int32_t>(*map.find_lane("east_1")));
+  }
+  EXPECT_LT(reverser.x.back(), reverser.x.front() - 15);
+}
+
+TEST(ManoeuvreTest, AReversingCarStopsWhereNoLaneLeadsIntoItsOwn) {
+  // 5 m from the start of the road, backing up at 3 m/s: it gets there after about 2.7 s.
+  ScenarioTemplate scenario = three_lane_road(50, 10, 5);
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Reverser",
+                                          relative_state("Ego", "FSL", -45, 0),
+                                          {phase("Reverse_Away", 3, 2)}));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  const TraceActor& reverser = actor_named(*run.trace, "Reverser");
+  EXPECT_NEAR(reverser.x.front(), 5, 1e-9);
+  const std::size_t after = sample_at(*run.trace, 2.8);
+  EXPECT_NEAR(reverser.x[after], 0, 1e-9);
+  EXPECT_EQ(reverser.speed[after], 0);
+  EXPECT_EQ(reverser.reversing[after], 0);
+  EXPECT_NEAR(reverser.x.back(), 0, 1e-9) << "and stays";
+}
+
+TEST(ManoeuvreTest, AManoeuvreConditionSeesAnotherActorReverse) {
+  // Reverser backs up from t = 2 s; Watcher, ahead in the kerb lane, stops as soon as it sees
+  // Reverser reversing.
+  ScenarioTemplate scenario = three_lane_road(20, 10);
+  scenario.timers.push_back({"T", constant_value(0), {}});
+  ManoeuvrePhase back = phase("Reverse_Towards", 2, 1);
+  back.start_when = compare(signal_term("timer", {"T"}), CompareOp::greater_equal, number_term(2));
+  scenario.vehicles.push_back(
+      manoeuvring(ActorKind::vehicle, "Reverser", relative_state("Ego", "FSL", 150, 0), {back}));
+  ManoeuvrePhase stop = phase("Stop", {}, 1);
+  stop.start_when =
+      compare(signal_term("manoeuvre", {"Reverser"}), CompareOp::equal, word_term("Reverse"));
+  scenario.vehicles.push_back(
+      manoeuvring(ActorKind::vehicle, "Watcher", relative_state("Ego", "F", 80, 10), {stop}));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  const Trace& trace = *run.trace;
+  const TraceActor& reverser = actor_named(trace, "Reverser");
+  const TraceActor& watcher = actor_named(trace, "Watcher");
+  std::size_t braking = 0;
+  while (braking < watcher.speed.size() && watcher.speed[braking] >= 10) ++braking;
+  ASSERT_LT(braking, watcher.speed.size()) << "Watcher never saw Reverser reverse";
+  // The sample before Watcher began braking is the first where Reverser backed up at 0.1 m/s or
+  // more (slower is Stopped).
+  EXPECT_GE(trace.time[braking - 1], 2.0);
+  EXPECT_LE(trace.time[braking - 1], 2.15);
+  EXPECT_GE(reverser.speed[braking - 1], 0.1 - 1e-9);
+  EXPECT_EQ(reverser.reversing[braking - 1], 1);
+  EXPECT_LT(reverser.speed[braking - 2], 0.1);
+}
+
+// Parked stands in east_1; Reverser starts `offset` metres (centre to centre) ahead of it in the
+// same lane, at rest.
+ScenarioTemplate reversing_near_parked(double offset, std::vector<ManoeuvrePhase> phases) {
+  ScenarioTemplate scenario = three_lane_road(20, 10);
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Parked",
+                                          relative_state("Ego", "FSL", 150, 0),
+                                          {phase("Stopped", {}, {})}));
+  scenario.vehicles.push_back(manoeuvring(
+      ActorKind::vehicle, "Reverser", relative_state("Parked", "F", offset, 0), std::move(phases)));
+  return scenario;
+}
+
+TEST(ManoeuvreTest, AReversingCarHitsTheStoppedCarBehindIt) {
+  // 7.3 m between the bumpers: 2.25 m while reaching 3 m/s over 1.5 s, the rest at 3 m/s.
+  ManoeuvreRun run = run_manoeuvres(reversing_near_parked(12, {phase("Reverse_Towards", 3, 1.5)}));
+  ASSERT_TRUE(run.trace) << run.messages;
+  const Trace& trace = *run.trace;
+  ASSERT_EQ(trace.collisions.size(), 1u);
+  const Collision& hit = trace.collisions[0];
+  EXPECT_EQ(hit.first, *trace.find_actor("Parked"));
+  EXPECT_EQ(hit.second, *trace.find_actor("Reverser"));
+  EXPECT_EQ(hit.first_side, BodySide::front);
+  EXPECT_EQ(hit.second_side, BodySide::rear) << "it backed into it";
+  EXPECT_NEAR(hit.time, 1.5 + (7.3 - 2.25) / 3, 0.1);
+  EXPECT_EQ(trace.end, EndReason::duration) << "a collision between NPCs does not end the run";
+}
+
+TEST(ManoeuvreTest, ReverseTowardsAndAwayEndAtTheirGap) {
+  const double length = kCarLength;
+  // Towards: from 10.3 m between the bumpers, speeding up to 3 m/s over 6 s, reaches 3 m from
+  // Parked's front after 5.4 s, at 2.7 m/s, and brakes over 0.5 s (0.675 m).
+  ScenarioTemplate towards = reversing_near_parked(
+      15, {phase("Reverse_Towards", 3, 6, 3, "Parked"), phase("Stop", {}, 0.5)});
+  ManoeuvreRun closing = run_manoeuvres(towards);
+  ASSERT_TRUE(closing.trace) << closing.messages;
+  const TraceActor& parked = actor_named(*closing.trace, "Parked");
+  const TraceActor& reverser = actor_named(*closing.trace, "Reverser");
+  EXPECT_TRUE(closing.trace->collisions.empty());
+  double clearance = reverser.x.back() - parked.x.back() - length;
+  EXPECT_GT(clearance, 3 - 0.675 - 0.15);
+  EXPECT_LT(clearance, 3 - 0.675 + 0.01);
+  EXPECT_EQ(reverser.speed.back(), 0);
+
+  // Away: from behind Parked (2.3 m between the bumpers), speeding up to 3 m/s over 4 s, is 6 m
+  // away after 3.1 s, at 2.4 m/s, and stops at full braking (0.35 m).
+  ScenarioTemplate away = reversing_near_parked(
+      -7, {phase("Reverse_Away", 3, 4, 6, "Parked"), phase("Stopped", {}, {})});
+  ManoeuvreRun opening = run_manoeuvres(away);
+  ASSERT_TRUE(opening.trace) << opening.messages;
+  const TraceActor& still = actor_named(*opening.trace, "Parked");
+  const TraceActor& leaver = actor_named(*opening.trace, "Reverser");
+  clearance = still.x.back() - leaver.x.back() - length;
+  EXPECT_GT(clearance, 6 + 0.3);
+  EXPECT_LT(clearance, 6 + 0.5);
+  EXPECT_EQ(leaver.speed.back(), 0);
+
+  // A gap it is already past ends the phase on its duration: Towards from 2.3 m with a 3 m gap.
+  ScenarioTemplate past =
+      reversing_near_parked(7, {phase("Reverse_Towards", 1, 1, 3, "Parked"), phase("Stop", {}, 1)});
+  ManoeuvreRun backed = run_manoeuvres(past);
+  ASSERT_TRUE(backed.trace) << backed.messages;
+  const TraceActor& mover = actor_named(*backed.trace, "Reverser");
+  EXPECT_NEAR(mover.x.front() - mover.x.back(), 0.5 + 0.5, 0.1)
+      << "1 s speeding up to 1 m/s, 1 s braking";
+}
+
+TEST(ManoeuvreTest, AReverseCutOutChangesLaneBackwards) {
+  // From the middle lane, out to the left lane while backing up at 2 m/s over 3 s.
+  ScenarioTemplate scenario = three_lane_road(20, 10);
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Reverser",
+                                          relative_state("Ego", "FSL", 150, 0),
+                                          {phase("Reverse_CutOut", 2, 3)}));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  const Trace& trace = *run.trace;
+  const TraceActor& reverser = actor_named(trace, "Reverser");
+  RoadMap map = scenario_map(scenario);
+  const std::size_t end = sample_at(trace, 3.05);
+  EXPECT_EQ(reverser.lane[end], static_cast<std::int32_t>(*map.find_lane("east_2")));
+  EXPECT_NEAR(reverser.y[end], -1.75, 0.01);
+  EXPECT_NEAR(reverser.speed[end], 2, 0.05);
+  EXPECT_EQ(reverser.reversing[end], 1);
+  // Half-way, backing to the left: the rear leads, so the nose points right of the lane.
+  const std::size_t middle = sample_at(trace, 1.5);
+  EXPECT_GT(reverser.y[middle], -5.0);
+  EXPECT_LT(reverser.heading[middle], -0.01);
+  EXPECT_LT(reverser.x[end], reverser.x[0]);
 }
 
 TEST(ManoeuvreTest, TheSameSeedGivesTheSameTrace) {

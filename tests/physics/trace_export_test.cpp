@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -57,6 +58,7 @@ Trace sample_trace() {
   npc.yaw_rate = {0, 0, 0};
   npc.lane = {2, 2, -1};
   npc.s = {3, 4, 0};
+  npc.reversing = {1, 1, 0};  // backing up, then standing
 
   TraceActor pedestrian;
   pedestrian.name = "ped";
@@ -83,6 +85,7 @@ Trace sample_trace() {
   seen_npc.y = {-5.3, nan, -5.1};
   seen_npc.heading = {3.1, nan, 3.0};
   seen_npc.speed = {2.1, nan, 0.1};
+  seen_npc.reversing = {1, 0, 0};
   PerceivedActor seen_pedestrian;
   seen_pedestrian.actor = 2;
   seen_pedestrian.detected = {0, 0, 0};
@@ -161,6 +164,9 @@ void expect_equal_traces(const Trace& actual, const Trace& expected) {
     expect_same_column(a.yaw_rate, e.yaw_rate, e.name + ".yaw_rate");
     EXPECT_EQ(a.lane, e.lane);
     expect_same_column(a.s, e.s, e.name + ".s");
+    for (std::size_t k = 0; k < actual.time.size(); ++k)
+      EXPECT_EQ(reversing_at(a.reversing, k), reversing_at(e.reversing, k))
+          << e.name << ".reversing[" << k << "]";
   }
   ASSERT_EQ(actual.perceived.size(), expected.perceived.size());
   for (std::size_t i = 0; i < actual.perceived.size(); ++i) {
@@ -172,6 +178,9 @@ void expect_equal_traces(const Trace& actual, const Trace& expected) {
     expect_same_column(a.y, e.y, "perceived.y");
     expect_same_column(a.heading, e.heading, "perceived.heading");
     expect_same_column(a.speed, e.speed, "perceived.speed");
+    for (std::size_t k = 0; k < actual.time.size(); ++k)
+      EXPECT_EQ(reversing_at(a.reversing, k), reversing_at(e.reversing, k))
+          << "perceived.reversing[" << k << "]";
   }
   ASSERT_EQ(actual.lights.size(), expected.lights.size());
   for (std::size_t i = 0; i < actual.lights.size(); ++i) {
@@ -229,10 +238,11 @@ TEST(TraceExport, CsvHasAHeaderAndOneRowPerSampleAndActor) {
   const std::vector<std::string> lines = lines_of(trace_csv(sample_trace()));
   ASSERT_EQ(lines.size(), 1u + 3 * 3);
   EXPECT_EQ(lines[0],
-            "time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,perceived_detected,"
-            "perceived_x,perceived_y,perceived_heading,perceived_speed");
+            "time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,reversing,"
+            "perceived_detected,perceived_x,perceived_y,perceived_heading,perceived_speed,"
+            "perceived_reversing");
   for (std::size_t i = 1; i < lines.size(); ++i)
-    EXPECT_EQ(csv_fields(lines[i]).size(), 16u) << lines[i];
+    EXPECT_EQ(csv_fields(lines[i]).size(), 18u) << lines[i];
   // Samples in time order, actors in id order within a sample.
   EXPECT_EQ(csv_fields(lines[1])[1], "ego");
   EXPECT_EQ(csv_fields(lines[3])[1], "ped");
@@ -257,19 +267,28 @@ TEST(TraceExport, CsvNumbersReadBackExactly) {
 TEST(TraceExport, CsvPerceivedColumnsAreEmptyForTheEgoAndUndetectedSamples) {
   const std::vector<std::string> lines = lines_of(trace_csv(sample_trace()));
   const std::vector<std::string> ego = csv_fields(lines[1]);
-  for (std::size_t column = 11; column < 16; ++column) EXPECT_EQ(ego[column], "") << column;
+  for (std::size_t column = 12; column < 18; ++column) EXPECT_EQ(ego[column], "") << column;
 
   const std::vector<std::string> detected = csv_fields(lines[2]);  // npc at t = 0
-  EXPECT_EQ(detected[11], "1");
-  EXPECT_EQ(detected[12], "15.2");
-  EXPECT_EQ(detected[13], "-5.3");
-  EXPECT_EQ(detected[14], "3.1");
-  EXPECT_EQ(detected[15], "2.1");
+  EXPECT_EQ(detected[12], "1");
+  EXPECT_EQ(detected[13], "15.2");
+  EXPECT_EQ(detected[14], "-5.3");
+  EXPECT_EQ(detected[15], "3.1");
+  EXPECT_EQ(detected[16], "2.1");
+  EXPECT_EQ(detected[17], "1");
 
   const std::vector<std::string> missed = csv_fields(lines[5]);  // npc at t = 0.5
   EXPECT_EQ(missed[1], "npc, \"the second\"");
-  EXPECT_EQ(missed[11], "0");
-  for (std::size_t column = 12; column < 16; ++column) EXPECT_EQ(missed[column], "") << column;
+  EXPECT_EQ(missed[12], "0");
+  for (std::size_t column = 13; column < 18; ++column) EXPECT_EQ(missed[column], "") << column;
+}
+
+TEST(TraceExport, CsvSaysWhereAnActorReverses) {
+  const std::vector<std::string> lines = lines_of(trace_csv(sample_trace()));
+  EXPECT_EQ(csv_fields(lines[1])[11], "0");  // the ego at t = 0
+  EXPECT_EQ(csv_fields(lines[2])[11], "1");  // the npc backing up at t = 0
+  EXPECT_EQ(csv_fields(lines[8])[11], "0");  // and standing at t = 1
+  EXPECT_EQ(csv_fields(lines[3])[11], "0");  // the pedestrian, whose column is empty
 }
 
 TEST(TraceExport, CsvLanesPrintAsMapIdsWhenGiven) {
@@ -302,6 +321,19 @@ TEST(TraceExport, JsonRoundTripOfAnEmptyTrace) {
   Trace trace;
   trace.actors.push_back({});
   expect_equal_traces(trace_from_json(trace_json(trace)), trace);
+}
+
+TEST(TraceExport, JsonWithoutReversingColumnsReadsAsNeverReversing) {
+  // As traces written before the columns existed.
+  const std::string json =
+      std::regex_replace(trace_json(sample_trace()), std::regex(R"(,"reversing":\[[a-z,]*\])"), "");
+  ASSERT_EQ(json.find("reversing"), std::string::npos);
+  const Trace trace = trace_from_json(json);
+  for (const TraceActor& actor : trace.actors) EXPECT_TRUE(actor.reversing.empty()) << actor.name;
+  for (const PerceivedActor& seen : trace.perceived) EXPECT_TRUE(seen.reversing.empty());
+  EXPECT_NE(read_error(replaced(trace_json(sample_trace()), "[true,true,false]", "[1,1,0]"))
+                .find("actors[1].samples.reversing[0]: expected true or false"),
+            std::string::npos);
 }
 
 TEST(TraceExport, JsonWritesNaNAsNullAndColumnsAsArrays) {
