@@ -32,6 +32,7 @@ struct Translation {
   std::map<std::string, RoadLanes> roads;
   std::map<std::string, ActorKind> actors;  // every initialised actor, the ego included
   std::set<std::string> timers;
+  std::set<std::string> local_timers;  // those declared `Local timer`
   // A junction's light (`TL1`) to the map's signal controlling its approach (`light_west`).
   std::map<std::string, std::string> traffic_lights;
   std::set<std::string> elements;  // junction and structure ids an actor can be "in"
@@ -60,8 +61,9 @@ void translate_traffic(const TrafficModel& traffic, Translation& translation);
 // `at a speed of` also lands in `speeds` (actor name to m/s): the speed that actor starts with.
 Formula when_formula(const std::vector<WhenCondition>& conditions, const std::string& prefix,
                      Translation& translation, std::map<std::string, Value>& speeds);
+// `actor`: whose phase the WHILE holds; a local timer in it counts from that actor's phase 1.
 Formula while_formula(const WhileConstraint& constraint, const std::string& prefix,
-                      Translation& translation);
+                      Translation& translation, const std::string& actor);
 Formula end_formula(const EndCondition& condition, const std::string& prefix,
                     Translation& translation);
 

@@ -102,12 +102,27 @@ void add_lane_formula(const std::string& actor, const LaneName& lane, Translatio
                                word(*id, lane.location), lane.location));
 }
 
+// `timer(T)`, or for a local timer in a phase of `owner`'s, `timer(T, owner)`: it counts from
+// the owner's first phase. Without an owner (an END condition) a local timer counts from the
+// start, with a warning.
 Formula timer_formula(const TimerConstraint& constraint, const std::string& prefix,
-                      Translation& translation) {
-  if (!translation.timers.contains(constraint.timer.name))
+                      Translation& translation, const std::string* owner) {
+  const std::string& name = constraint.timer.name;
+  if (!translation.timers.contains(name))
     translation.diagnostics.error(constraint.timer.location,
-                                  "timer '" + constraint.timer.name + "' is not initialised");
-  return compare(signal("timer", {constraint.timer.name}, constraint.timer.location),
+                                  "timer '" + name + "' is not initialised");
+  std::vector<std::string> operands = {name};
+  if (translation.local_timers.contains(name)) {
+    if (owner) {
+      operands.push_back(*owner);
+    } else {
+      translation.diagnostics.warning(constraint.timer.location,
+                                      "local timer '" + name +
+                                          "' outside a manoeuvre phase counts from the start, as a "
+                                          "global timer does");
+    }
+  }
+  return compare(signal("timer", operands, constraint.timer.location),
                  compare_op(constraint.comparison.value),
                  number(translation.number(constraint.value, prefix + constraint.timer.name, "s"),
                         constraint.value.location),
@@ -246,9 +261,9 @@ Formula when_formula(const std::vector<WhenCondition>& conditions, const std::st
 }
 
 Formula while_formula(const WhileConstraint& constraint, const std::string& prefix,
-                      Translation& translation) {
+                      Translation& translation, const std::string& actor) {
   if (const auto* timer = std::get_if<TimerConstraint>(&constraint))
-    return timer_formula(*timer, prefix, translation);
+    return timer_formula(*timer, prefix, translation, &actor);
   if (const auto* offset = std::get_if<OffsetConstraint>(&constraint))
     return offset_formula(*offset, prefix, translation);
   return lane_formula(std::get<LaneConstraint>(constraint), prefix, translation);
@@ -257,7 +272,7 @@ Formula while_formula(const WhileConstraint& constraint, const std::string& pref
 Formula end_formula(const EndCondition& condition, const std::string& prefix,
                     Translation& translation) {
   if (const auto* timer = std::get_if<TimerConstraint>(&condition))
-    return timer_formula(*timer, prefix, translation);
+    return timer_formula(*timer, prefix, translation, nullptr);
   if (const auto* offset = std::get_if<OffsetConstraint>(&condition))
     return offset_formula(*offset, prefix, translation);
   if (const auto* lane = std::get_if<LaneConstraint>(&condition))

@@ -128,7 +128,7 @@ std::string ego_name(const Dynamics& dynamics) {
   return dynamics.initialisation.first.actor.name;
 }
 
-scenfuzz::ManoeuvrePhase translate_phase(const wmg::ManoeuvrePhase& phase,
+scenfuzz::ManoeuvrePhase translate_phase(const wmg::ManoeuvrePhase& phase, const std::string& actor,
                                          const std::string& prefix, Translation& translation) {
   scenfuzz::ManoeuvrePhase result;
   result.manoeuvre = phase.type.text;
@@ -146,7 +146,8 @@ scenfuzz::ManoeuvrePhase translate_phase(const wmg::ManoeuvrePhase& phase,
     result.reference = phase.relative.reference.name;
   result.relative_location = sector_text(phase.relative.relative_location.value);
   if (phase.while_constraint)
-    result.continue_while = while_formula(*phase.while_constraint, prefix + "while.", translation);
+    result.continue_while =
+        while_formula(*phase.while_constraint, prefix + "while.", translation, actor);
   return result;
 }
 
@@ -175,10 +176,7 @@ void translate_dynamics(const Dynamics& dynamics, Translation& translation) {
   }
   for (const TimerInit& timer : init.timers) {
     translation.timers.insert(timer.timer.name);
-    if (timer.scope.value == TimerScope::local)
-      translation.diagnostics.warning(
-          timer.scope.location,
-          "local timer '" + timer.timer.name + "' runs from the start, as a global timer does");
+    if (timer.scope.value == TimerScope::local) translation.local_timers.insert(timer.timer.name);
     translation.scenario.timers.push_back(NamedValue{
         timer.timer.name, translation.number(timer.value, "timer." + timer.timer.name, "s"),
         timer.location});
@@ -210,7 +208,8 @@ void translate_dynamics(const Dynamics& dynamics, Translation& translation) {
       for (std::size_t p = 0; p < sequence.phases.size(); ++p) {
         const wmg::ManoeuvrePhase& phase = sequence.phases[p];
         scenfuzz::ManoeuvrePhase translated = translate_phase(
-            phase, actor->name + ".phase" + std::to_string(phase.number.value) + ".", translation);
+            phase, actor->name, actor->name + ".phase" + std::to_string(phase.number.value) + ".",
+            translation);
         if (p == 0) translated.start_when = start_when;
         actor->motion.phases.push_back(std::move(translated));
       }

@@ -121,6 +121,11 @@ void translate_traffic(const TrafficModel& traffic, Translation& translation) {
                                     "unknown road '" + centroid.road.name + "'");
     translation.number(centroid.distance, "traffic." + centroid.id.name + ".distance", "m");
   }
+  if (!traffic.flows.empty())
+    translation.diagnostics.warning(traffic.flows.front().location,
+                                    "traffic flows are not simulated yet: their ranges are "
+                                    "search dimensions that change nothing "
+                                    "(docs/wmg-semantics.md)");
   for (const TrafficFlow& flow : traffic.flows) {
     scenfuzz::TrafficFlow result;
     result.name = flow.id.name;

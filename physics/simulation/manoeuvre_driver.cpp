@@ -86,6 +86,7 @@ void ManoeuvreDriver::update_phases(const WorldSnapshot& world, std::uint32_t se
     if (phase.start_when && !trigger_holds(*phase.start_when, world)) return;
     running_ = true;
     phase_start_ = world.time;
+    if (std::isnan(sequence_start_)) sequence_start_ = world.time;
     phase_time_ = 0;
     start_phase(world, self);
   }

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "physics/actors/actor_class.hpp"
@@ -27,6 +28,8 @@ class ManoeuvreDriver {
   // The index of the phase running, or -1 while none is (before the first, between phases that
   // wait for their start condition, after the last).
   int phase() const;
+  // When the first phase began (world time, s); NaN before.
+  double sequence_start() const { return sequence_start_; }
 
   // Starts and ends phases by what holds in `world` (where this actor is actor `self`), then
   // moves the actor on by dt.
@@ -61,7 +64,8 @@ class ManoeuvreDriver {
 
   std::size_t next_ = 0;  // the phase running, or the next to start
   bool running_ = false;
-  double phase_start_ = 0;   // s, world time the current phase started
+  double phase_start_ = 0;  // s, world time the current phase started
+  double sequence_start_ = std::numeric_limits<double>::quiet_NaN();
   double phase_time_ = 0;    // s, how long the current phase has run
   bool while_held_ = false;  // the current phase's continue_while has held at some step
   // How long the current primitive takes (the phase's duration, or what its speed change needs).

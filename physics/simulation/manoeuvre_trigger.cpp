@@ -3,6 +3,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace scenfuzz {
@@ -259,8 +260,16 @@ class Compiler {
                                                  (id ? *id : std::string()) + "'");
     }
     if (name == "timer") {
+      // timer(T) counts from the start; timer(T, A), a local timer, from A's first phase.
       quantity.signal = TriggerSignal::timer;
-      if (!arity(1)) return std::nullopt;
+      if (term.operands.size() == 2) {
+        quantity.signal = TriggerSignal::local_timer;
+        const auto owner = actor(term.operands[1]);
+        if (!owner) return std::nullopt;
+        quantity.actor = *owner;
+      } else if (!arity(1)) {
+        return std::nullopt;
+      }
       const std::string* id = operand_name(term.operands[0]);
       for (std::size_t i = 0; id && i < names_.timers.size(); ++i)
         if (names_.timers[i] == *id) {
@@ -301,6 +310,13 @@ double value_of(const TriggerQuantity& quantity, const WorldSnapshot& world) {
                  ? static_cast<double>(world.lights[quantity.actor])
                  : -1;
     case TriggerSignal::timer: return world.time + quantity.number;
+    case TriggerSignal::local_timer: {
+      // It stands at its initial value until its actor's first phase begins.
+      const double began = quantity.actor < world.sequence_starts.size()
+                               ? world.sequence_starts[quantity.actor]
+                               : std::numeric_limits<double>::quiet_NaN();
+      return std::isnan(began) ? quantity.number : quantity.number + (world.time - began);
+    }
     case TriggerSignal::lateral_offset:
       return lateral_offset(world.states[quantity.actor], world.states[quantity.other]);
     case TriggerSignal::longitudinal_offset:

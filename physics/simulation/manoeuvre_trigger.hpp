@@ -26,6 +26,7 @@ enum class TriggerSignal {
   manoeuvre,            // manoeuvre(actor): an ObservedManoeuvre
   light,                // light(index): a SignalColour
   timer,                // timer(T): time + `number` (the timer's initial value)
+  local_timer,          // timer(T, actor): `number` + the time since actor's first phase began
   lateral_offset,       // lateral_offset(actor, other): m, left of other positive
   longitudinal_offset,  // longitudinal_offset(actor, other): m, ahead of other positive
   collision,            // collision(): 1 once any collision has happened, else 0

@@ -161,6 +161,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   std::vector<LaneFix> fixes(actor_count);
   std::vector<ObservedManoeuvre> manoeuvres(actor_count, ObservedManoeuvre::going_ahead);
   std::vector<double> lengths(actor_count);
+  std::vector<double> sequence_starts(actor_count, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 0; k < actor_count; ++k) lengths[k] = trace.actors[k].length;
 
   std::optional<PluginDriver> plugin;
@@ -228,7 +229,17 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     if (watches_world) {
       for (std::size_t k = 0; k < first_obstacle; ++k)
         manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
-      snapshot = {&map, t, states, fixes, manoeuvres, lengths, colours, !trace.collisions.empty()};
+      for (std::size_t k = 1; k <= drivers.size(); ++k)
+        if (drivers[k - 1]) sequence_starts[k] = drivers[k - 1]->sequence_start();
+      snapshot = {&map,
+                  t,
+                  states,
+                  fixes,
+                  manoeuvres,
+                  lengths,
+                  colours,
+                  sequence_starts,
+                  !trace.collisions.empty()};
     }
 
     route.update({states[kEgo].x, states[kEgo].y});

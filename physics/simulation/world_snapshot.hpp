@@ -21,7 +21,9 @@ struct WorldSnapshot {
   std::span<const ObservedManoeuvre> manoeuvres;  // by actor id
   std::span<const double> lengths;                // body length by actor id
   std::span<const SignalColour> lights;           // by index into RoadMap::traffic_lights()
-  bool collided = false;                          // some collision happened at or before `time`
+  // When each actor's first manoeuvre phase began (s), NaN while it has not (or it has none).
+  std::span<const double> sequence_starts;
+  bool collided = false;  // some collision happened at or before `time`
 };
 
 }  // namespace scenfuzz

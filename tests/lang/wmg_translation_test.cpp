@@ -633,6 +633,28 @@ TEST(WmgTranslationTest, EndConditionsAndTimers) {
   EXPECT_TRUE(scenario.specs.empty());
 }
 
+TEST(WmgTranslationTest, ALocalTimerInAPhaseCountsFromThatActorsFirstPhase) {
+  std::string dynamics = cut_in_dynamics();
+  dynamics.replace(dynamics.find("Global timer"), 12, "Local timer");
+  Parts parts;
+  parts.scenery = scenery(straight_road());
+  parts.dynamics = dynamics;
+  ParseResult result = parse_ok(parts.text());
+  const Formula& timer = *result.scenario.vehicles.at(0).motion.phases.at(0).continue_while;
+  ASSERT_EQ(timer.terms.at(0).name, "timer");
+  ASSERT_EQ(timer.terms[0].operands.size(), 2u);
+  EXPECT_EQ(timer.terms[0].operands[0].name, "Clock");
+  EXPECT_EQ(timer.terms[0].operands[1].name, "Cutter");
+  // In END, outside every phase, it counts from the start: one operand, and a warning.
+  EXPECT_EQ(result.scenario.end_conditions.at(0).terms.at(0).operands.size(), 1u);
+  std::size_t warnings = 0;
+  for (const Diagnostic& diagnostic : result.diagnostics.all())
+    if (diagnostic.severity == Severity::warning &&
+        diagnostic.message.find("local timer 'Clock'") != std::string::npos)
+      ++warnings;
+  EXPECT_EQ(warnings, 1u);
+}
+
 TEST(WmgTranslationTest, WithoutEndTheRunLastsThirtySeconds) {
   Parts parts;
   parts.scenery = scenery(straight_road());

@@ -167,6 +167,26 @@ TEST(ManoeuvreTest, AWhileConditionEndsThePhaseEarly) {
       << "after its last phase a car holds its speed";
 }
 
+TEST(ManoeuvreTest, ALocalTimerCountsFromItsActorsFirstPhase) {
+  // Phase 1 starts at t = 2 (a global timer's condition); its WHILE on a local timer then holds
+  // for 1.5 s more, where a global timer would already read past it.
+  ManoeuvrePhase slow = phase("Drive_Away", 5, 10);
+  slow.start_when = compare(signal_term("timer", {"G"}), CompareOp::greater_equal, number_term(2));
+  ScenarioTemplate scenario = lead_with(slow);
+  scenario.timers.push_back({"G", constant_value(0), {}});
+  scenario.timers.push_back({"L", constant_value(0), {}});
+  scenario.vehicles[0].motion.phases[0].continue_while =
+      compare(signal_term("timer", {"L", "Lead"}), CompareOp::less, number_term(1.5));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  const TraceActor& lead = actor_named(*run.trace, "Lead");
+  EXPECT_DOUBLE_EQ(lead.speed[sample_at(*run.trace, 2.0)], 15);
+  EXPECT_LT(lead.speed[sample_at(*run.trace, 3.0)], 15 - 0.5) << "slowing down after t = 2";
+  EXPECT_NEAR(lead.speed.back(), lead.speed[sample_at(*run.trace, 3.6)], 1e-9)
+      << "the phase ended at t = 3.5, when the local timer reached 1.5";
+  EXPECT_LT(lead.speed.back(), lead.speed[sample_at(*run.trace, 3.4)] - 0.05) << "and not before";
+}
+
 TEST(ManoeuvreTest, ATimerConditionStartsThePhaseOnTime) {
   ManoeuvrePhase stop = phase("Stop", {}, 2);
   stop.start_when = compare(signal_term("timer", {"T"}), CompareOp::greater_equal, number_term(4));
