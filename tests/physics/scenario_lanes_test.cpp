@@ -16,6 +16,7 @@
 #include "lang/source_file.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/map_source.hpp"
+#include "tests/support/parameter_points.hpp"
 #include "tests/support/shared_dir.hpp"
 
 namespace scenfuzz {
@@ -38,16 +39,7 @@ std::vector<fs::path> scenario_files(const fs::path& folder) {
   return files;
 }
 
-// The parameter points to try: all lowest, all middle, all highest.
-std::vector<std::vector<double>> corner_points(const ScenarioTemplate& scenario) {
-  std::vector<std::vector<double>> points(3);
-  for (const Parameter& parameter : scenario.parameters) {
-    points[0].push_back(parameter.lower);
-    points[1].push_back((parameter.lower + parameter.upper) / 2);
-    points[2].push_back(parameter.upper);
-  }
-  return points;
-}
+using test::corner_points;
 
 struct NamedState {
   std::string where;

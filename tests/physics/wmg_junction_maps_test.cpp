@@ -16,6 +16,7 @@
 #include "physics/map/lane_route.hpp"
 #include "physics/map/map_source.hpp"
 #include "tests/lang/wmg_test_files.hpp"
+#include "tests/support/parameter_points.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -80,16 +81,7 @@ std::vector<double> midpoint(const ScenarioTemplate& scenario) {
   return values;
 }
 
-// The parameter points to try: all lowest, all middle, all highest.
-std::vector<std::vector<double>> corner_points(const ScenarioTemplate& scenario) {
-  std::vector<std::vector<double>> points(3);
-  for (const Parameter& parameter : scenario.parameters) {
-    points[0].push_back(parameter.lower);
-    points[1].push_back((parameter.lower + parameter.upper) / 2);
-    points[2].push_back(parameter.upper);
-  }
-  return points;
-}
+using test::corner_points;
 
 RoadMap map_at(const ScenarioTemplate& scenario, const std::vector<double>& values) {
   return load_scenario_map(scenario.map, map_search_path({}), values);
