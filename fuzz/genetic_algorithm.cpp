@@ -98,6 +98,8 @@ GeneticAlgorithm::GeneticAlgorithm(std::span<const SearchDimension> dimensions, 
   descending_ = options_.local_search && !dimensions_.empty() &&
                 dimensions_.size() <= options_.local_search_max_dimensions;
   first_generation_ = status_.population;
+  descent_yield_points_ =
+      options_.descent_yield_points > 0 ? options_.descent_yield_points : dimensions_.size() + 1;
   if (descending_) {
     first_generation_ =
         options_.first_generation > 0
@@ -144,7 +146,7 @@ void GeneticAlgorithm::observe(std::span<const Observation> results) {
   awaiting_ = 0;
   if (descents_in_batch_ > 0) {
     for (const Observation& result : results) {
-      Descent& descent = descents_[round_observed_++];
+      Descent& descent = descents_[round_[round_observed_++]];
       const double objective = usable_objective(result);
       descent.run.tell(objective);
       if (objective < status_.best_objective) {
@@ -224,36 +226,57 @@ void GeneticAlgorithm::finish_generation() {
     ++status_.local_runs;
   }
   if (options_.random_descent) {
-    descents_.push_back({LocalRun(uniform_fresh_point(), options_.local_run), {}, {}});
+    // Waits only when there is a descent to wait for.
+    const bool waiting = !descents_.empty();
+    descents_.push_back({LocalRun(uniform_fresh_point(), options_.local_run), {}, {}, waiting});
     ++status_.local_runs;
   }
 }
 
-// Descents advance in rounds: every descent under way asks for one point, and the next round
-// starts once the whole round is observed, so the points never depend on how propose() splits a
-// round into batches. A descent that has ended gives its best point to the population.
-std::vector<UnitPoint> GeneticAlgorithm::descent_points(std::size_t limit) {
-  if (round_observed_ == round_size_) {
+bool GeneticAlgorithm::yields(const Descent& descent) const {
+  return descent.waiting || descent.run.points_without_improvement() >= descent_yield_points_;
+}
+
+// Descents advance in rounds: every descent that does not yield asks for one point (all of
+// them when every one yields), and the next round starts once the whole round is observed, so
+// the points never depend on how propose() splits a round into batches. A descent that has
+// ended gives its best point to the population.
+void GeneticAlgorithm::start_descent_round() {
+  round_.clear();
+  // Each pass either fills the round or removes an ended descent.
+  while (round_.empty() && !descents_.empty()) {
+    const bool any_improving =
+        std::any_of(descents_.begin(), descents_.end(),
+                    [&](const Descent& descent) { return !yields(descent); });
     for (Descent& descent : descents_) {
+      if (any_improving && yields(descent)) continue;
+      descent.waiting = false;
       // Snapped like every other point (a discrete gene in the middle of its cell): the same
       // scenario as the point the descent asked for, so its value answers the descent.
       descent.asked = descent.run.next_point();
       if (descent.asked) normalise(*descent.asked);
     }
     std::erase_if(descents_, [&](const Descent& descent) {
-      if (descent.asked) return false;
+      if (!descent.run.ended()) return false;
       if (std::isfinite(descent.best.objective)) survive(descent.best);
       return true;
     });
-    round_size_ = descents_.size();
-    round_handed_ = 0;
-    round_observed_ = 0;
+    for (std::size_t i = 0; i < descents_.size(); ++i) {
+      if (descents_[i].asked) round_.push_back(i);
+    }
   }
-  descents_in_batch_ = std::min(limit, round_size_ - round_handed_);
+  round_handed_ = 0;
+  round_observed_ = 0;
+}
+
+std::vector<UnitPoint> GeneticAlgorithm::descent_points(std::size_t limit) {
+  if (round_observed_ == round_.size()) start_descent_round();
+  descents_in_batch_ = std::min(limit, round_.size() - round_handed_);
   std::vector<UnitPoint> batch;
   for (std::size_t i = round_handed_; i < round_handed_ + descents_in_batch_; ++i) {
-    remember(*descents_[i].asked);
-    batch.push_back(*descents_[i].asked);
+    const UnitPoint& point = *descents_[round_[i]].asked;
+    remember(point);
+    batch.push_back(point);
   }
   round_handed_ += descents_in_batch_;
   return batch;

@@ -77,13 +77,13 @@ struct GeneticAlgorithmOptions {
   // from 0/10 to 10/10 (docs/performance.md).
   double hold_probability = 0.5;
   double hold_extreme_probability = 0.5;
-  // After each generation, two local descents (LocalRun: COBYLA) at the same time, one
-  // simulation each per batch, until each stops improving; the best point of each then joins
-  // the population. One starts from the generation's best point (not from a violation: that
-  // finding is made, see progress_floor), the other from a uniformly random point: where the
-  // best point sits in a basin without violations (a pedestrian the ego always stops just short
-  // of), a descent from elsewhere finds the slope that leads to one. Where robustness falls
-  // smoothly, descents find violations in a few simulations that blending and random steps take
+  // After each generation, two local descents (LocalRun: COBYLA) until each stops improving;
+  // the best point of each then joins the population. One starts from the generation's best
+  // point (not from a violation: that finding is made, see progress_floor), the other from a
+  // uniformly random point: where the best point sits in a basin without violations (a
+  // pedestrian the ego always stops just short of), a descent from elsewhere finds the slope
+  // that leads to one. They take turns (descent_yield_points). Where robustness falls smoothly,
+  // descents find violations in a few simulations that blending and random steps take
   // generations to reach (docs/performance.md, "Search").
   bool local_search = true;
   // Beyond this many dimensions a descent's first simplex (d + 1 simulations) costs more than
@@ -92,6 +92,13 @@ struct GeneticAlgorithmOptions {
   std::size_t local_search_max_dimensions = 20;
   LocalRunOptions local_run;
   bool random_descent = true;
+  // A descent that has gone this many points without improving its best by
+  // local_run.improvement yields its turn to descents that still improve, and the random
+  // descent waits until the one from the best point yields; when none improves, all go on (and
+  // end by their patience). Running both side by side spent half the simulations on whichever
+  // start was the poorer, the random one on most scenarios, the best point's on a trap
+  // (docs/performance.md, "Search"). 0: d + 1, a simplex's worth of points.
+  std::size_t descent_yield_points = 0;
   // Points of the Latin hypercube that starts the search while descents run. 0: max(4, d)
   // (but at most `population`): the descents need a start, not a survey, and a smaller design
   // lets them begin sooner. Without descents the first generation is `population` points.
@@ -175,20 +182,25 @@ class GeneticAlgorithm final : public SearchStrategy {
   std::size_t handed_out_ = 0;
   std::size_t observed_ = 0;
   std::size_t awaiting_ = 0;
-  // The local descent under way, if any, and the point it is waiting on.
+  // A local descent under way and the point it is waiting on.
   struct Descent {
     LocalRun run;
     std::optional<UnitPoint> asked;  // the point it waits on
     Individual best;
+    bool waiting = false;  // has not asked for a point yet and waits for the others to yield
   };
   std::vector<UnitPoint> descent_points(std::size_t limit);
-  // The local descents under way and how far their current round has been handed out and
-  // observed; descents_in_batch_ of them have a point in the batch being evaluated.
+  void start_descent_round();
+  bool yields(const Descent& descent) const;
+  // The local descents under way and their current round: the descents that ask for a point in
+  // it (indices into descents_) and how far it has been handed out and observed;
+  // descents_in_batch_ of them have a point in the batch being evaluated.
   std::vector<Descent> descents_;
-  std::size_t round_size_ = 0;
+  std::vector<std::size_t> round_;
   std::size_t round_handed_ = 0;
   std::size_t round_observed_ = 0;
   std::size_t descents_in_batch_ = 0;
+  std::size_t descent_yield_points_ = 0;
   bool descending_ = false;
   std::size_t first_generation_ = 0;
   // Grid cells of every point ever proposed.

@@ -14,6 +14,18 @@ namespace {
 // Finer steps than this (unit-cube units) rarely change a simulation: NLopt's convergence.
 constexpr double converged_step = 1e-4;
 
+// Counts the points since the best last improved by more than `improvement`; a run that only
+// creeps down a plateau by millimetres counts as not improving.
+void count_improvement(double value, double improvement, double& best,
+                       std::size_t& without_improvement) {
+  if (value < best - improvement) {
+    without_improvement = 0;
+  } else {
+    ++without_improvement;
+  }
+  best = std::min(best, value);
+}
+
 // One replay: answers NLopt from the values told so far and notes where the run stops.
 struct Replay {
   Replay(const std::map<UnitPoint, double>& told_values, const LocalRunOptions& run_options)
@@ -39,13 +51,7 @@ struct Replay {
       throw nlopt::forced_stop();
     }
     const double value = found->second;
-    if (value < best - options.improvement) {
-      best = value;
-      without_improvement = 0;
-    } else {
-      best = std::min(best, value);
-      ++without_improvement;
-    }
+    count_improvement(value, options.improvement, best, without_improvement);
     return value;
   }
 
@@ -97,6 +103,7 @@ void LocalRun::tell(double objective) {
   if (!asked_) throw std::logic_error("LocalRun::tell called without a point asked for");
   double value = std::isnan(objective) ? nlopt_penalty : objective;
   value = std::clamp(value, -nlopt_penalty, nlopt_penalty);
+  count_improvement(value, options_.improvement, best_, points_without_improvement_);
   told_.emplace(std::move(*asked_), value);
   asked_.reset();
 }

@@ -50,6 +50,8 @@ class LocalRun {
 
   bool ended() const { return ended_; }
   std::size_t points() const { return told_.size(); }
+  // Points told since the last one that improved the run's best by more than `improvement`.
+  std::size_t points_without_improvement() const { return points_without_improvement_; }
 
  private:
   UnitPoint start_;
@@ -57,6 +59,8 @@ class LocalRun {
   std::map<UnitPoint, double> told_;
   std::optional<UnitPoint> asked_;
   bool ended_ = false;
+  double best_ = std::numeric_limits<double>::infinity();
+  std::size_t points_without_improvement_ = 0;
 };
 
 }  // namespace scenfuzz

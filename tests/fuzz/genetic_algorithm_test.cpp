@@ -165,21 +165,39 @@ TEST(GeneticAlgorithm, FindsASmallBallSoonerThanUniformRandomSearch) {
   EXPECT_LT(median(genetic), median(uniform));
 }
 
-TEST(GeneticAlgorithm, DescentsStartFromTheGenerationsBestPointAndFromARandomOne) {
-  const UnitPoint centre = {0.7, 0.2, 0.4, 0.9};
-  const Objective cone = [&](const UnitPoint& point) { return distance(point, centre); };
+TEST(GeneticAlgorithm, TheRandomDescentWaitsUntilTheBestPointsDescentStopsImproving) {
+  // On a plateau the descent from the best point improves on nothing after its start.
+  const Objective plateau = [](const UnitPoint&) { return 1.0; };
   GeneticAlgorithm algorithm(continuous_dimensions(4), 21, 500);
-  const std::vector<UnitPoint> first = next_generation(algorithm, cone);
+  const std::vector<UnitPoint> first = next_generation(algorithm, plateau);
   EXPECT_EQ(first.size(), 4u);  // max(4, d) points start the search while descents run
   EXPECT_EQ(algorithm.status().local_runs, 2u);
-  const UnitPoint best =
-      *std::min_element(first.begin(), first.end(),
-                        [&](const UnitPoint& a, const UnitPoint& b) { return cone(a) < cone(b); });
-  // One round: a point from each descent, the first at its start.
-  const std::vector<UnitPoint> round = next_generation(algorithm, cone);
+  // Its start (the first point of equal value), then d + 1 = 5 points without improvement,
+  // one simulation at a time.
+  std::vector<UnitPoint> round = next_generation(algorithm, plateau);
+  ASSERT_EQ(round.size(), 1u);
+  EXPECT_EQ(round[0], first[0]);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(next_generation(algorithm, plateau).size(), 1u);
+  // Then it yields and the random descent starts; as neither improves, both go on.
+  round = next_generation(algorithm, plateau);
   ASSERT_EQ(round.size(), 2u);
-  EXPECT_EQ(round[0], best);
   EXPECT_EQ(std::count(first.begin(), first.end(), round[1]), 0);
+}
+
+TEST(GeneticAlgorithm, ADescentThatKeepsImprovingKeepsTheTurn) {
+  // Every evaluation is better than the last by a decimetre, so no descent ever yields: each
+  // runs alone until it ends.
+  double value = 100;
+  const Objective improving = [&](const UnitPoint&) { return value -= 0.1; };
+  GeneticAlgorithm algorithm(continuous_dimensions(4), 22, 500);
+  next_generation(algorithm, improving);
+  ASSERT_EQ(algorithm.status().local_runs, 2u);
+  // Descent points one at a time, up to the next generation's eight children.
+  std::size_t descent_points = 0;
+  for (std::size_t size = 1; size == 1; size = next_generation(algorithm, improving).size()) {
+    ++descent_points;
+  }
+  EXPECT_GT(descent_points, 20u);
 }
 
 TEST(GeneticAlgorithm, NoDescentStartsFromAViolation) {

@@ -1,6 +1,6 @@
 // The local descent (COBYLA replayed from its told values): it walks down a smooth objective,
-// repeats itself exactly, ends on a plateau after its patience, survives infinities and NaN, and
-// refuses to be driven out of order.
+// repeats itself exactly, counts the points since it last improved, ends on a plateau after its
+// patience, survives infinities and NaN, and refuses to be driven out of order.
 #include "fuzz/local_run.hpp"
 
 #include <gtest/gtest.h>
@@ -76,6 +76,18 @@ TEST(LocalRun, EndsOnAPlateauOnceItsPatienceIsSpent) {
   EXPECT_EQ(points.size(), 7u);
   EXPECT_TRUE(run.ended());
   EXPECT_FALSE(run.next_point());
+}
+
+TEST(LocalRun, CountsThePointsSinceItsBestLastImproved) {
+  LocalRun run({0.5, 0.5});
+  // Improvements by less than `improvement` (2 cm) do not count as improving.
+  const std::vector<double> values = {1.0, 0.99, 0.9, 0.895, 0.95, 0.5};
+  const std::vector<std::size_t> expected = {0, 1, 0, 1, 2, 0};
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    ASSERT_TRUE(run.next_point());
+    run.tell(values[i]);
+    EXPECT_EQ(run.points_without_improvement(), expected[i]) << "after value " << values[i];
+  }
 }
 
 TEST(LocalRun, InfinitiesAndNaNAreWorseThanAnyValue) {
