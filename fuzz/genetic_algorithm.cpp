@@ -144,6 +144,7 @@ void GeneticAlgorithm::observe(std::span<const Observation> results) {
                                 " results for a batch of " + std::to_string(awaiting_));
   }
   awaiting_ = 0;
+  observed_points_ += results.size();
   if (descents_in_batch_ > 0) {
     for (const Observation& result : results) {
       Descent& descent = descents_[round_[round_observed_++]];
@@ -209,11 +210,11 @@ void GeneticAlgorithm::finish_generation() {
                                               std::max(1.0, std::abs(progress_reference_));
   if (progress) {
     progress_reference_ = level;
-    generations_without_progress_ = 0;
-  } else if (++generations_without_progress_ >= options_.stagnation_generations &&
-             options_.stagnation_generations > 0) {
+    observed_at_progress_ = observed_points_;
+  } else if (options_.stagnation_simulations > 0 &&
+             observed_points_ - observed_at_progress_ >= options_.stagnation_simulations) {
     restart_pending_ = true;
-    generations_without_progress_ = 0;
+    observed_at_progress_ = observed_points_;
     ++status_.restarts;
   }
   if (!descending_ || restart_pending_) return;
@@ -222,7 +223,7 @@ void GeneticAlgorithm::finish_generation() {
       [](const Individual& a, const Individual& b) { return a.objective < b.objective; });
   if (best != generation_.end() && std::isfinite(best->objective) &&
       best->objective >= options_.progress_floor) {
-    descents_.push_back({LocalRun(best->point, options_.local_run), {}, {}});
+    descents_.push_back({LocalRun(best->point, best->objective, options_.local_run), {}, {}});
     ++status_.local_runs;
   }
   if (options_.random_descent) {

@@ -103,10 +103,14 @@ struct GeneticAlgorithmOptions {
   // (but at most `population`): the descents need a start, not a survey, and a smaller design
   // lets them begin sooner. Without descents the first generation is `population` points.
   std::size_t first_generation = 0;
-  // Generations without progress after which the population is re-seeded with fresh Latin
-  // hypercube points, keeping the elites. 0: never restart. Twelve generations of eight
-  // children: about a hundred simulations to leave a basin that stopped improving.
-  std::size_t stagnation_generations = 12;
+  // Simulations (of generations and descents alike) without progress after which the
+  // population is re-seeded with fresh Latin hypercube points, keeping the elites; checked at
+  // the end of each generation. 0: never restart. About a hundred simulations to leave a basin
+  // that stopped improving (twelve generations of eight children). Counted in generations, as
+  // it was, a generation with its descents took 40-70 simulations and a search of 500 never
+  // restarted: on the harsh-braking scenario 16 of 320 runs crept down a basin without
+  // violations to the end (4 with this count; docs/performance.md, "Search").
+  std::size_t stagnation_simulations = 96;
   // Progress means the best objective dropped by more than tolerance * max(1, |best|). Two
   // centimetres (robustness is mostly in metres): with a thousandth, a population creeping
   // towards a robustness just above zero that it never crosses (the chasing cars' CC2 at
@@ -114,7 +118,7 @@ struct GeneticAlgorithmOptions {
   // restarted.
   double improvement_tolerance = 0.02;
   // Objectives below this level are not progress: once the best is a finding, making it more
-  // negative finds nothing new, so the search moves on after stagnation_generations.
+  // negative finds nothing new, so the search moves on after stagnation_simulations.
   // -infinity: every decrease counts.
   double progress_floor = 0.0;
   // Cells per unit of every gene in the grid that defines duplicates (at least 1); see
@@ -206,7 +210,9 @@ class GeneticAlgorithm final : public SearchStrategy {
   // Grid cells of every point ever proposed.
   std::set<std::vector<std::int64_t>> seen_;
   double progress_reference_ = std::numeric_limits<double>::infinity();
-  std::size_t generations_without_progress_ = 0;
+  // Points observed in all, and when the last progress was seen.
+  std::size_t observed_points_ = 0;
+  std::size_t observed_at_progress_ = 0;
   bool restart_pending_ = false;
   GeneticAlgorithmStatus status_;
 };

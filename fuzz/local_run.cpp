@@ -73,6 +73,13 @@ LocalRun::LocalRun(UnitPoint start, const LocalRunOptions& options)
   ended_ = start_.empty();
 }
 
+LocalRun::LocalRun(UnitPoint start, double start_objective, const LocalRunOptions& options)
+    : LocalRun(std::move(start), options) {
+  if (ended_) return;
+  asked_ = start_;
+  tell(start_objective);
+}
+
 std::optional<UnitPoint> LocalRun::next_point() {
   if (asked_) throw std::logic_error("LocalRun::next_point called before the last point was told");
   if (ended_) return std::nullopt;

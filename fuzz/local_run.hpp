@@ -40,6 +40,8 @@ struct LocalRunOptions {
 class LocalRun {
  public:
   LocalRun(UnitPoint start, const LocalRunOptions& options = {});
+  // A run from a point already evaluated: it does not ask for its start again.
+  LocalRun(UnitPoint start, double start_objective, const LocalRunOptions& options = {});
 
   // The next point to evaluate, or nullopt once the run has ended (converged, out of patience
   // or out of points). Throws std::logic_error when the last point was not told.

@@ -172,12 +172,14 @@ TEST(GeneticAlgorithm, TheRandomDescentWaitsUntilTheBestPointsDescentStopsImprov
   const std::vector<UnitPoint> first = next_generation(algorithm, plateau);
   EXPECT_EQ(first.size(), 4u);  // max(4, d) points start the search while descents run
   EXPECT_EQ(algorithm.status().local_runs, 2u);
-  // Its start (the first point of equal value), then d + 1 = 5 points without improvement,
-  // one simulation at a time.
+  // From the best point (the first of equal values), which is not simulated again: its
+  // simplex steps along one axis at a time, d + 1 = 5 points without improvement, one
+  // simulation at a time.
   std::vector<UnitPoint> round = next_generation(algorithm, plateau);
   ASSERT_EQ(round.size(), 1u);
-  EXPECT_EQ(round[0], first[0]);
-  for (int i = 0; i < 5; ++i) EXPECT_EQ(next_generation(algorithm, plateau).size(), 1u);
+  for (std::size_t axis = 1; axis < 4; ++axis) EXPECT_EQ(round[0][axis], first[0][axis]);
+  EXPECT_NE(round[0][0], first[0][0]);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(next_generation(algorithm, plateau).size(), 1u);
   // Then it yields and the random descent starts; as neither improves, both go on.
   round = next_generation(algorithm, plateau);
   ASSERT_EQ(round.size(), 2u);
@@ -384,7 +386,7 @@ TEST(GeneticAlgorithm, TheBestPointSurvivesChildrenThatAreAllWorse) {
   options.local_search = false;  // the generations alone, without descents between them
   options.refinement_fraction = 1.0;
   options.elites = 0;
-  options.stagnation_generations = 0;
+  options.stagnation_simulations = 0;
   GeneticAlgorithm algorithm(continuous_dimensions(3), 8, 1000, options);
   std::size_t evaluated = 0;
   const Objective first_is_best = [&](const UnitPoint&) {
@@ -484,8 +486,8 @@ bool is_latin_hypercube(const std::vector<UnitPoint>& points) {
 
 TEST(GeneticAlgorithm, ConstantObjectiveStagnatesAndRestartsWithAFreshDesign) {
   GeneticAlgorithmOptions options;
-  options.local_search = false;  // the generations alone, without descents between them
-  options.stagnation_generations = 3;
+  options.local_search = false;         // the generations alone, without descents between them
+  options.stagnation_simulations = 24;  // three generations of 8
   GeneticAlgorithm algorithm(continuous_dimensions(4), 5, 1000, options);
   const Objective constant = [](const UnitPoint&) { return 1.0; };
   EXPECT_TRUE(is_latin_hypercube(next_generation(algorithm, constant)));
@@ -500,11 +502,22 @@ TEST(GeneticAlgorithm, ConstantObjectiveStagnatesAndRestartsWithAFreshDesign) {
   EXPECT_TRUE(is_latin_hypercube(restart));
 }
 
+TEST(GeneticAlgorithm, StagnationCountsSimulationsNotGenerations) {
+  // On a plateau in 16 dimensions each generation's descents take about 70 simulations until
+  // their patience ends them: twelve such generations would outlast a budget of 500, about a
+  // hundred simulations do not.
+  GeneticAlgorithm algorithm(continuous_dimensions(16), 6, 500);
+  drive(
+      algorithm, [](const UnitPoint&) { return 1.0; }, 500, batches_of);
+  EXPECT_LT(algorithm.status().generations, 12u);
+  EXPECT_GE(algorithm.status().restarts, 2u);
+}
+
 TEST(GeneticAlgorithm, RestartAfterConvergencePlacesPointsFarFromTheOldPopulation) {
   const UnitPoint centre = {0.3, 0.3, 0.3};
   const Objective bowl = [&](const UnitPoint& point) { return distance(point, centre); };
   GeneticAlgorithmOptions options;
-  options.stagnation_generations = 5;
+  options.stagnation_simulations = 40;
   options.improvement_tolerance = 0.01;
   GeneticAlgorithm algorithm(continuous_dimensions(3), 9, 2000, options);
   double spread_before = infinity;
@@ -554,7 +567,7 @@ TEST(GeneticAlgorithm, InfiniteObservationsNeverBecomeTheBest) {
 
 TEST(GeneticAlgorithm, OnlyInfeasiblePointsLeaveNoBestAndTheSearchGoesOn) {
   GeneticAlgorithmOptions options;
-  options.stagnation_generations = 2;
+  options.stagnation_simulations = 16;
   GeneticAlgorithm algorithm(continuous_dimensions(2), 17, 400, options);
   const auto points = drive(
       algorithm, [](const UnitPoint&) { return infinity; }, 400, batches_of);

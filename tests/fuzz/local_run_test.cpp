@@ -90,6 +90,19 @@ TEST(LocalRun, CountsThePointsSinceItsBestLastImproved) {
   }
 }
 
+TEST(LocalRun, AStartAlreadyEvaluatedIsNotAskedForAgain) {
+  const UnitPoint start = {0.3, 0.6, 0.4};
+  const Objective sum = [](const UnitPoint& point) { return point[0] + point[1] + point[2]; };
+  LocalRun fresh(start);
+  const std::vector<UnitPoint> asked = descend(fresh, sum);
+  LocalRun known(start, sum(start));
+  const std::vector<UnitPoint> skipping = descend(known, sum);
+  ASSERT_GT(asked.size(), 2u);
+  EXPECT_EQ(asked.front(), start);
+  // The same course without its first point.
+  EXPECT_EQ(skipping, std::vector<UnitPoint>(asked.begin() + 1, asked.end()));
+}
+
 TEST(LocalRun, InfinitiesAndNaNAreWorseThanAnyValue) {
   // Infeasible (infinite) left of 0.5 and NaN near the top; the descent must still go down.
   const Objective objective = [](const UnitPoint& point) {
