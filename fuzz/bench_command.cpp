@@ -279,8 +279,11 @@ struct RunResult {
   std::vector<Finding> finding_list;
 };
 
+// With `first_only` the search ends after the batch of its first finding; the count up to the
+// first finding is the same as in a whole run (the points depend only on the seed).
 RunResult search_scenario(const LoadedScenario& scenario, const std::string& algorithm,
-                          std::size_t budget, std::uint64_t seed, std::size_t jobs) {
+                          std::size_t budget, std::uint64_t seed, std::size_t jobs,
+                          bool first_only = false) {
   SearchOptions options;
   options.algorithm = algorithm;
   options.budget = budget;
@@ -301,6 +304,7 @@ RunResult search_scenario(const LoadedScenario& scenario, const std::string& alg
       result.finding_list.push_back(finding);
     }
   };
+  if (first_only) callbacks.interrupted = [&] { return result.first_finding > 0; };
   result.wall_seconds = run_search(*scenario.evaluator, options, callbacks).wall_seconds;
   result.findings = result.finding_list.size();
   return result;
@@ -351,7 +355,9 @@ int run_falsification(const BenchCommandOptions& options, std::ostream& out, std
   const std::size_t workers = worker_count(options.jobs);
   out << "falsification: " << scenarios.size() << " scenarios x " << algorithms.size()
       << " algorithms x " << options.seeds << " seeds (1.." << options.seeds << "), budget "
-      << budget << " simulations, " << workers << " searches at once\n\n";
+      << budget << " simulations"
+      << (options.first_finding_only ? ", each run stopping at its first finding" : "") << ", "
+      << workers << " searches at once\n\n";
 
   const std::size_t runs_per_scenario = algorithms.size() * options.seeds;
   std::vector<RunResult> results(scenarios.size() * runs_per_scenario);
@@ -366,8 +372,8 @@ int run_falsification(const BenchCommandOptions& options, std::ostream& out, std
         const std::size_t scenario = index / runs_per_scenario;
         const std::size_t algorithm = index % runs_per_scenario / options.seeds;
         const std::uint64_t seed = index % options.seeds + 1;
-        results[index] =
-            search_scenario(*scenarios[scenario], algorithms[algorithm], budget, seed, 1);
+        results[index] = search_scenario(*scenarios[scenario], algorithms[algorithm], budget, seed,
+                                         1, options.first_finding_only);
         {
           const std::lock_guard lock(wall_mutex);
           wall[scenario * algorithms.size() + algorithm] += results[index].wall_seconds;
@@ -405,7 +411,8 @@ int run_falsification(const BenchCommandOptions& options, std::ostream& out, std
                  a == 0 ? std::to_string(scenarios[s]->evaluator->dimensions().size()) : "",
                  algorithms[a], simulations_text(medians[s].back(), budget),
                  std::to_string(successes) + "/" + std::to_string(options.seeds),
-                 fixed(mean(rate), 1), fixed(wall[s * algorithms.size() + a], 1)});
+                 options.first_finding_only ? "-" : fixed(mean(rate), 1),
+                 fixed(wall[s * algorithms.size() + a], 1)});
     }
   }
   table.print(out);

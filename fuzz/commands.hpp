@@ -109,6 +109,7 @@ struct BenchCommandOptions {
   std::optional<std::size_t> budget;    // --budget: 500 (falsification), 1500 (cc), 200 (parallel)
   std::vector<std::string> algorithms;  // --algos / --algo; empty: the bench's default
   std::size_t seeds = 20;               // falsification: --seeds, runs with seeds 1..N
+  bool first_finding_only = false;      // falsification: --first-only, each run stops there
   std::size_t runs = 10;                // cc: --runs, runs with seeds 1..N per requirement
   std::vector<std::string> requirements;  // cc: --requirements; empty: CC1..CC5, CCx
   std::size_t segments = 20;              // cc: --segments, input segments of 100 / N s
