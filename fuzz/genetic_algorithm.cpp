@@ -104,7 +104,7 @@ GeneticAlgorithm::GeneticAlgorithm(std::span<const SearchDimension> dimensions, 
     first_generation_ =
         options_.first_generation > 0
             ? options_.first_generation
-            : std::min(std::max<std::size_t>(3 * dimensions_.size() / 4, 4), first_generation_);
+            : std::min(std::max<std::size_t>(dimensions_.size(), 4), first_generation_);
   }
 
   actor_genes_ =

@@ -99,11 +99,9 @@ struct GeneticAlgorithmOptions {
   // start was the poorer, the random one on most scenarios, the best point's on a trap
   // (docs/performance.md, "Search"). 0: d + 1, a simplex's worth of points.
   std::size_t descent_yield_points = 0;
-  // Points of the Latin hypercube that starts the search while descents run. 0: max(4, 3d/4)
+  // Points of the Latin hypercube that starts the search while descents run. 0: max(4, d)
   // (but at most `population`): the descents need a start, not a survey, and a smaller design
-  // lets them begin sooner; with d/2 the best of the design was too poor a start on the
-  // 16-dimensional harsh braking (first finding 61.5 against 15; with d, 19). Without descents
-  // the first generation is `population` points.
+  // lets them begin sooner. Without descents the first generation is `population` points.
   std::size_t first_generation = 0;
   // Simulations (of generations and descents alike) without progress after which the
   // population is re-seeded with fresh Latin hypercube points, keeping the elites; checked at

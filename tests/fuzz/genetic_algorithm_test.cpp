@@ -170,7 +170,7 @@ TEST(GeneticAlgorithm, TheRandomDescentWaitsUntilTheBestPointsDescentStopsImprov
   const Objective plateau = [](const UnitPoint&) { return 1.0; };
   GeneticAlgorithm algorithm(continuous_dimensions(4), 21, 500);
   const std::vector<UnitPoint> first = next_generation(algorithm, plateau);
-  EXPECT_EQ(first.size(), 4u);  // max(4, 3d/4) points start the search while descents run
+  EXPECT_EQ(first.size(), 4u);  // max(4, d) points start the search while descents run
   EXPECT_EQ(algorithm.status().local_runs, 2u);
   // From the best point (the first of equal values), which is not simulated again: its
   // simplex steps along one axis at a time, d + 1 = 5 points without improvement, one
