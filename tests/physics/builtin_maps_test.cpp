@@ -965,6 +965,11 @@ std::string describe(const AngledJunction& junction) {
          " lanes=" + std::to_string(junction.lanes);
 }
 
+MapDescription generate_angled_junction(const AngledJunction& junction) {
+  return generate_builtin_map(
+      junction.map, {{"angle", junction.angle}, {"lanes", static_cast<double>(junction.lanes)}});
+}
+
 std::vector<AngledJunction> angled_junctions() {
   std::vector<AngledJunction> junctions;
   for (std::string map : {"crossroads", "t_junction"})
@@ -976,8 +981,7 @@ std::vector<AngledJunction> angled_junctions() {
 TEST(BuiltinJunctionAngle, TheCrossingRoadsLanesHeadAtTheAngle) {
   for (const AngledJunction& junction : angled_junctions()) {
     SCOPED_TRACE(describe(junction));
-    MapDescription map = generate_builtin_map(
-        junction.map, {{"angle", junction.angle}, {"lanes", static_cast<double>(junction.lanes)}});
+    MapDescription map = generate_angled_junction(junction);
     const bool crossroads = junction.map == "crossroads";
     for (int k = 0; k < junction.lanes; ++k) {
       const std::string lane = std::to_string(k);
@@ -1029,8 +1033,7 @@ MapPoint arm_direction(const std::string& arm, double angle) {
 TEST(BuiltinJunctionAngle, ArmsBeginWhereTheyClearTheCrossingRoadAndConnectorsStayInside) {
   for (const AngledJunction& junction : angled_junctions()) {
     SCOPED_TRACE(describe(junction));
-    MapDescription map = generate_builtin_map(
-        junction.map, {{"angle", junction.angle}, {"lanes", static_cast<double>(junction.lanes)}});
+    MapDescription map = generate_angled_junction(junction);
     const bool crossroads = junction.map == "crossroads";
     const double half_size = junction.lanes * 3.5 + 3;  // road and pavements, from the axis
     ASSERT_EQ(map.junctions.size(), 1u);
