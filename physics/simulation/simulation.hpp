@@ -24,6 +24,7 @@ struct SimulationOptions {
   DriverSettings driver;
   std::string ego_plugin;          // a shared library to drive the ego; empty: the reference driver
   double plugin_step_timeout = 2;  // s of wall time a plugin may take for one step
+  double plugin_start_timeout = 10;  // s of wall time for loading a plugin and its create
   double target_reach = 2;         // m: the ego has reached its target within this distance
 };
 

@@ -30,6 +30,15 @@ std::string_view end_reason_name(EndReason reason) {
   return "unknown";
 }
 
+std::string_view ego_failure_kind_name(EgoFailureKind kind) {
+  switch (kind) {
+    case EgoFailureKind::crash: return "ego_crash";
+    case EgoFailureKind::hang: return "ego_hang";
+    case EgoFailureKind::error: return "ego_error";
+  }
+  return "ego_error";
+}
+
 std::string_view signal_colour_name(SignalColour colour) {
   switch (colour) {
     case SignalColour::red: return "red";

@@ -93,6 +93,22 @@ struct TraceEvent {
 
 enum class EndReason { duration, target_reached, collision, ego_failure, end_condition };
 
+// How the ego under test (a plugin) failed: each kind is a finding of its own.
+enum class EgoFailureKind {
+  crash,  // the plugin's process died: a signal, or an exit
+  hang,   // it did not answer within its time limit (step or start)
+  error,  // it could not be loaded or created, returned non-zero or a non-finite control
+};
+
+struct EgoFailure {
+  EgoFailureKind kind = EgoFailureKind::error;
+  std::string reason;            // the whole message, naming the library and the step
+  std::string signal;            // a crash by a signal: its name ("SIGSEGV"); empty otherwise
+  long step = 0;                 // the plugin step that failed, from 1; 0: while starting
+  double time = 0;               // simulated s at the failure
+  std::string last_observation;  // the last observation handed to the plugin (JSON); empty at 0
+};
+
 struct Trace {
   std::string map_name;
   std::uint64_t seed = 0;
@@ -104,6 +120,7 @@ struct Trace {
   std::vector<Collision> collisions;
   std::vector<TraceEvent> events;  // in time order
   EndReason end = EndReason::duration;
+  std::optional<EgoFailure> ego_failure;  // set exactly when end is EndReason::ego_failure
 
   std::size_t sample_count() const { return time.size(); }
   // The actor named `name`, or nullopt.
@@ -112,6 +129,8 @@ struct Trace {
 
 std::string_view trace_actor_kind_name(TraceActorKind kind);
 std::string_view end_reason_name(EndReason reason);
+// "ego_crash", "ego_hang", "ego_error": the finding kinds.
+std::string_view ego_failure_kind_name(EgoFailureKind kind);
 std::string_view signal_colour_name(SignalColour colour);
 
 }  // namespace scenfuzz
