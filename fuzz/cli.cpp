@@ -56,16 +56,16 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   app.add_option("--out", fuzz_options.out_dir,
                  "Folder for findings/, evaluations.csv and summary.json (default scenfuzz-out)")
       ->type_name("DIR");
-  app.add_option("--map-path", fuzz_options.map_paths,
+  app.add_option("--map-path", fuzz_options.simulation.map_paths,
                  "Folder to search for maps (repeatable; also SCENFUZZ_MAP_PATH)")
       ->type_name("DIR")
       ->allow_extra_args(false);
-  app.add_option("--ego-plugin", fuzz_options.ego_plugin,
+  app.add_option("--ego-plugin", fuzz_options.simulation.ego_plugin,
                  "Shared library that drives the ego (docs/ego-plugin.md)")
       ->type_name("LIB");
-  app.add_option("--duration", fuzz_options.duration, "Simulated seconds per run")->type_name("S");
-  app.add_option("--dt", fuzz_options.dt, "Seconds per step (default 0.05)")->type_name("S");
-  app.add_flag("--continue-after-collision", fuzz_options.continue_after_collision,
+  app.add_option("--duration", fuzz_options.simulation.duration, "Simulated seconds per run")->type_name("S");
+  app.add_option("--dt", fuzz_options.simulation.dt, "Seconds per step (default 0.05)")->type_name("S");
+  app.add_flag("--continue-after-collision", fuzz_options.simulation.continue_after_collision,
                "Keep simulating after the ego's first collision");
   app.add_flag("--quiet", fuzz_options.quiet, "No progress and no summary");
   app.add_flag("--json", fuzz_options.json, "Progress, findings and the summary as JSON lines");
@@ -127,24 +127,24 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       ->check(CLI::IsMember({"mid", "random"}))
       ->type_name("mid|random");
   run_command
-      ->add_option("--map-path", run_options.map_paths,
+      ->add_option("--map-path", run_options.simulation.map_paths,
                    "Folder to look for Apollo maps in; repeatable")
       ->type_name("DIR")
       ->allow_extra_args(false);
   run_command
-      ->add_option("--ego-plugin", run_options.ego_plugin,
+      ->add_option("--ego-plugin", run_options.simulation.ego_plugin,
                    "Drive the ego with this shared library (docs/ego-plugin.md) instead of "
                    "the reference driver")
       ->type_name("LIB");
   run_command
-      ->add_option("--duration", run_options.duration,
+      ->add_option("--duration", run_options.simulation.duration,
                    "Seconds to simulate (default: the scenario's, else 30)")
       ->check(CLI::PositiveNumber)
       ->type_name("S");
-  run_command->add_option("--dt", run_options.dt, "Seconds per step (default 0.05)")
+  run_command->add_option("--dt", run_options.simulation.dt, "Seconds per step (default 0.05)")
       ->check(CLI::Range(0.001, 1.0))
       ->type_name("S");
-  run_command->add_flag("--continue-after-collision", run_options.continue_after_collision,
+  run_command->add_flag("--continue-after-collision", run_options.simulation.continue_after_collision,
                         "Keep simulating after the ego's first collision");
   run_command->add_flag("--json", run_options.json, "Print the summary as JSON");
 

@@ -33,17 +33,24 @@ struct MapCommandOptions {
 // --svg. A map that cannot be found or read gives kExitBadInput with the reason on `err`.
 int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& err);
 
+// The options of every simulation, which `run` and the search share.
+struct SimulationCommandOptions {
+  std::vector<std::string> map_paths;  // --map-path, in order
+  std::string ego_plugin;              // --ego-plugin: a shared library driving the ego
+  std::optional<double> duration;      // --duration: overrides the scenario's
+  double dt = 0.05;                    // --dt
+  bool continue_after_collision = false;
+  double ego_step_timeout = 2;    // --ego-step-timeout: s of wall time per plugin step
+  double ego_start_timeout = 10;  // --ego-start-timeout: s for loading the plugin and create
+};
+
 struct RunCommandOptions {
   std::string path;
-  std::vector<std::string> map_paths;    // --map-path, in order
   std::uint64_t seed = 0;                // --seed: perception noise, random walks, --at random
   std::string out_dir = "scenfuzz-run";  // --out: trace.csv, trace.json, trace.svg, scenario.avu
   std::string at;                        // --at: "mid" or "random" for a logical scenario
   bool json = false;                     // --json: the summary as JSON
-  std::string ego_plugin;                // --ego-plugin: a shared library driving the ego
-  std::optional<double> duration;        // --duration: overrides the scenario's
-  double dt = 0.05;                      // --dt
-  bool continue_after_collision = false;
+  SimulationCommandOptions simulation;
 };
 
 // `scenfuzz run FILE`: simulates the scenario (a logical one at the point --at chooses), prints
@@ -89,13 +96,11 @@ struct FuzzCommandOptions {
   double time_limit = 0;                 // --time-limit: seconds, 0 = none
   std::vector<std::string> specs;        // --spec: the specs to target; none = all
   std::string out_dir = "scenfuzz-out";  // --out
-  std::vector<std::string> map_paths;    // --map-path
-  std::string ego_plugin;                // --ego-plugin
-  std::optional<double> duration;        // --duration
-  double dt = 0.05;                      // --dt
-  bool continue_after_collision = false;
-  bool quiet = false;  // --quiet: no progress, no summary
-  bool json = false;   // --json: JSON lines (progress, findings, summary) on stdout
+  bool resume = false;  // --resume: continue the search journalled in --out
+  bool force = false;   // --force: replace an earlier search in --out
+  bool quiet = false;   // --quiet: no progress, no summary
+  bool json = false;    // --json: JSON lines (progress, findings, summary) on stdout
+  SimulationCommandOptions simulation;
 };
 
 // `scenfuzz [options] FILE`: searches the scenario's parameter space and writes every finding.

@@ -69,13 +69,15 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
   }
 
   SimulationOptions simulation;
-  simulation.dt = options.dt;
-  simulation.duration = options.duration;
-  simulation.stop_at_collision = !options.continue_after_collision;
-  simulation.ego_plugin = options.ego_plugin;
+  simulation.dt = options.simulation.dt;
+  simulation.duration = options.simulation.duration;
+  simulation.stop_at_collision = !options.simulation.continue_after_collision;
+  simulation.ego_plugin = options.simulation.ego_plugin;
+  simulation.plugin_step_timeout = options.simulation.ego_step_timeout;
+  simulation.plugin_start_timeout = options.simulation.ego_start_timeout;
   std::optional<ScenarioEvaluator> evaluator;
   try {
-    std::vector<fs::path> map_paths(options.map_paths.begin(), options.map_paths.end());
+    std::vector<fs::path> map_paths(options.simulation.map_paths.begin(), options.simulation.map_paths.end());
     evaluator.emplace(file, scenario, map_search_path(map_paths), simulation);
   } catch (const MapError& error) {
     err << "scenfuzz: error: " << error.what() << "\n";

@@ -123,7 +123,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   const std::vector<double> values =
       decode(space, unit_point(space.dimensions.size(), options.at, options.seed));
 
-  std::vector<std::filesystem::path> map_paths(options.map_paths.begin(), options.map_paths.end());
+  std::vector<std::filesystem::path> map_paths(options.simulation.map_paths.begin(), options.simulation.map_paths.end());
   std::optional<RoadMap> map;
   try {
     map = load_scenario_map(scenario.map, map_search_path(map_paths), values);
@@ -139,10 +139,12 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
 
   SimulationOptions simulation;
   simulation.seed = options.seed;
-  simulation.dt = options.dt;
-  simulation.duration = options.duration;
-  simulation.stop_at_collision = !options.continue_after_collision;
-  simulation.ego_plugin = options.ego_plugin;
+  simulation.dt = options.simulation.dt;
+  simulation.duration = options.simulation.duration;
+  simulation.stop_at_collision = !options.simulation.continue_after_collision;
+  simulation.ego_plugin = options.simulation.ego_plugin;
+  simulation.plugin_step_timeout = options.simulation.ego_step_timeout;
+  simulation.plugin_start_timeout = options.simulation.ego_start_timeout;
   const Trace trace = simulate(*map, *setup, simulation);
   if (trace.end == EndReason::ego_failure && trace.sample_count() == 0) {
     // The plugin did not even start: a bad --ego-plugin, not something the scenario found.

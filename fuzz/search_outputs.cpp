@@ -27,11 +27,11 @@ std::string file_stem(const std::string& name) {
 // The options a replay of a finding needs to simulate exactly as the search did.
 std::string simulation_flags(const FuzzCommandOptions& options) {
   std::string flags;
-  for (const std::string& path : options.map_paths) flags += " --map-path " + shell_quote(path);
-  if (!options.ego_plugin.empty()) flags += " --ego-plugin " + shell_quote(options.ego_plugin);
-  if (options.duration) flags += " --duration " + format_number(*options.duration);
-  if (options.dt != 0.05) flags += " --dt " + format_number(options.dt);
-  if (options.continue_after_collision) flags += " --continue-after-collision";
+  for (const std::string& path : options.simulation.map_paths) flags += " --map-path " + shell_quote(path);
+  if (!options.simulation.ego_plugin.empty()) flags += " --ego-plugin " + shell_quote(options.simulation.ego_plugin);
+  if (options.simulation.duration) flags += " --duration " + format_number(*options.simulation.duration);
+  if (options.simulation.dt != 0.05) flags += " --dt " + format_number(options.simulation.dt);
+  if (options.simulation.continue_after_collision) flags += " --continue-after-collision";
   return flags;
 }
 
