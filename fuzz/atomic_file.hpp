@@ -8,7 +8,8 @@
 
 namespace scenfuzz {
 
-// Returns an empty string on success, otherwise why it failed (the target is left untouched).
+// Returns an empty string on success, otherwise why it failed, naming the file ("cannot write
+// 'path': No space left on device"); the target is then left untouched.
 std::string write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 }  // namespace scenfuzz

@@ -68,6 +68,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   app.add_flag("--continue-after-collision", fuzz_options.simulation.continue_after_collision,
                "Keep simulating after the ego's first collision");
   app.add_flag("--quiet", fuzz_options.quiet, "No progress and no summary");
+  app.add_flag("--resume", fuzz_options.resume, "Continue the search journalled in --out");
+  app.add_flag("--force", fuzz_options.force, "Replace an earlier search in --out");
   app.add_flag("--json", fuzz_options.json, "Progress, findings and the summary as JSON lines");
 
   std::vector<std::string> check_files;

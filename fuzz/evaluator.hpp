@@ -35,11 +35,16 @@ struct Evaluation {
   // Set when the point was rejected before any simulation (actors overlapping at t = 0, a
   // position off every lane): such points do not count against the budget.
   std::string infeasible;
-  // Set when the evaluation ran but could not be judged (an unplannable path): it counts
-  // against the budget and has no robustness.
+  // Set when the evaluation ran but could not be judged (an unplannable path, an ego plugin
+  // that failed): it counts against the budget and has no robustness.
   std::string failure;
+  // Set with `failure` when the failure is the system under test's own (a plugin that crashed,
+  // hung or returned an error once started): the finding kind, "ego_crash", "ego_hang" or
+  // "ego_error". Such an evaluation is a finding of that kind, never judged.
+  std::string failure_kind;
   // What distinguishes this outcome from others with the same objective violated, for
-  // de-duplicating findings (the colliding pair and sides); empty when only the point does.
+  // de-duplicating findings (the colliding pair and sides; for an ego failure its kind and
+  // signal); empty when only the point does.
   std::string signature;
   double wall_seconds = 0;
 

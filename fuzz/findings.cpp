@@ -23,32 +23,46 @@ bool FindingLog::is_duplicate(std::size_t objective, const EvaluationRecord& rec
   for (const Finding& finding : findings_) {
     if (finding.objective != objective) continue;
     if (!signature.empty() && finding.signature == signature) return true;
-    if (normalised_distance(finding.point, record.point) < distance_) return true;
+    if (objective != Finding::kNoObjective &&
+        normalised_distance(finding.point, record.point) < distance_)
+      return true;
   }
   return false;
 }
 
+Finding FindingLog::make_finding(std::size_t objective, const EvaluationRecord& record) const {
+  Finding finding;
+  finding.number = findings_.size() + 1;
+  finding.objective = objective;
+  finding.evaluation = record.index;
+  finding.seed = record.seed;
+  finding.point = record.point;
+  finding.signature = record.evaluation.signature;
+  if (objective == Finding::kNoObjective) {
+    finding.objective_name = record.evaluation.failure_kind;
+    finding.robustness = std::nan("");
+    finding.failure = record.evaluation.failure;
+  } else {
+    finding.objective_name = objectives_[objective];
+    finding.robustness = record.evaluation.robustness[objective];
+  }
+  return finding;
+}
+
 std::vector<Finding> FindingLog::add(const EvaluationRecord& record) {
+  std::vector<std::size_t> violated;
+  if (!record.evaluation.failure_kind.empty()) violated.push_back(Finding::kNoObjective);
+  if (record.evaluation.judged())
+    for (std::size_t k = 0; k < record.evaluation.robustness.size(); ++k)
+      if (record.evaluation.robustness[k] < 0) violated.push_back(k);
   std::vector<Finding> added;
-  if (!record.evaluation.judged()) return added;
-  for (std::size_t objective = 0; objective < record.evaluation.robustness.size(); ++objective) {
-    const double robustness = record.evaluation.robustness[objective];
-    if (!(robustness < 0)) continue;
+  for (std::size_t objective : violated) {
     if (is_duplicate(objective, record)) {
       ++duplicates_;
       continue;
     }
-    Finding finding;
-    finding.number = findings_.size() + 1;
-    finding.objective = objective;
-    finding.objective_name = objectives_[objective];
-    finding.robustness = robustness;
-    finding.evaluation = record.index;
-    finding.seed = record.seed;
-    finding.point = record.point;
-    finding.signature = record.evaluation.signature;
-    findings_.push_back(finding);
-    added.push_back(std::move(finding));
+    findings_.push_back(make_finding(objective, record));
+    added.push_back(findings_.back());
   }
   return added;
 }

@@ -1,11 +1,10 @@
 // `scenfuzz [--budget N] FILE`: the main job. Searches the scenario's parameter space for points
-// that violate its specs, writes every (de-duplicated) finding as a concrete, replayable scenario
-// with its trace and picture, and keeps evaluations.csv and summary.json up to date.
+// that violate its specs or make the ego under test fail, writes every (de-duplicated) finding as
+// a concrete, replayable scenario with its trace and picture, and journals every evaluation so
+// that a killed search can be resumed (--resume) to exactly the findings of an uninterrupted one.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -15,12 +14,15 @@
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
 #include "fuzz/findings.hpp"
+#include "fuzz/journal_replay.hpp"
+#include "fuzz/output_folder.hpp"
 #include "fuzz/progress_report.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_evaluator.hpp"
 #include "fuzz/search.hpp"
 #include "fuzz/search_outputs.hpp"
 #include "fuzz/search_strategy.hpp"
+#include "fuzz/stop_signals.hpp"
 #include "lang/avunit/avunit.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/robustness.hpp"
@@ -30,67 +32,42 @@ namespace scenfuzz {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
-// Set by SIGINT; the search looks at it between batches.
-std::atomic<bool> interrupt_requested{false};
-
-extern "C" void on_interrupt(int) {
-  interrupt_requested.store(true);
-  // A second Ctrl-C ends the process at once.
-  std::signal(SIGINT, SIG_DFL);
-}
-
-// Installs the SIGINT handler for its lifetime.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    interrupt_requested.store(false);
-    previous_ = std::signal(SIGINT, on_interrupt);
-  }
-  ~InterruptGuard() { std::signal(SIGINT, previous_); }
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-
- private:
-  void (*previous_)(int) = SIG_DFL;
-};
-
-}  // namespace
-
-int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
-  std::optional<ScenarioFile> input = read_scenario(options.path, "search", err);
-  if (!input) return kExitBadInput;
-  const SourceFile& file = input->file;
-  const ScenarioTemplate& scenario = input->scenario;
-  if (options.budget == 0) {
-    err << "scenfuzz: error: --budget must be at least 1 simulation\n";
-    return kExitUsage;
-  }
-
+std::optional<ScenarioEvaluator> make_evaluator(const FuzzCommandOptions& options,
+                                                const ScenarioFile& input, std::ostream& err) {
+  const SimulationCommandOptions& flags = options.simulation;
   SimulationOptions simulation;
-  simulation.dt = options.simulation.dt;
-  simulation.duration = options.simulation.duration;
-  simulation.stop_at_collision = !options.simulation.continue_after_collision;
-  simulation.ego_plugin = options.simulation.ego_plugin;
-  simulation.plugin_step_timeout = options.simulation.ego_step_timeout;
-  simulation.plugin_start_timeout = options.simulation.ego_start_timeout;
+  simulation.dt = flags.dt;
+  simulation.duration = flags.duration;
+  simulation.stop_at_collision = !flags.continue_after_collision;
+  simulation.ego_plugin = flags.ego_plugin;
+  simulation.plugin_step_timeout = flags.ego_step_timeout;
+  simulation.plugin_start_timeout = flags.ego_start_timeout;
   std::optional<ScenarioEvaluator> evaluator;
   try {
-    std::vector<fs::path> map_paths(options.simulation.map_paths.begin(), options.simulation.map_paths.end());
-    evaluator.emplace(file, scenario, map_search_path(map_paths), simulation);
+    std::vector<fs::path> map_paths(flags.map_paths.begin(), flags.map_paths.end());
+    evaluator.emplace(input.file, input.scenario, map_search_path(map_paths), simulation);
   } catch (const MapError& error) {
     err << "scenfuzz: error: " << error.what() << "\n";
-    return kExitBadInput;
+    return std::nullopt;
   }
   if (evaluator->space().dimensions.empty()) {
     err << "scenfuzz: error: '" << options.path
         << "' has no parameter ranges: there is nothing to search (simulate it with 'scenfuzz "
            "run')\n";
-    return kExitBadInput;
+    return std::nullopt;
   }
+  return evaluator;
+}
 
-  const std::vector<std::string> objectives = evaluator->objectives();
+// The search's options, or nullopt after a usage error on `err` (an unknown --spec or --algo).
+std::optional<SearchOptions> search_options(const FuzzCommandOptions& options,
+                                            const Evaluator& evaluator, std::ostream& err) {
+  if (options.budget == 0) {
+    err << "scenfuzz: error: --budget must be at least 1 simulation\n";
+    return std::nullopt;
+  }
+  const std::vector<std::string> objectives = evaluator.objectives();
   SearchOptions search;
   search.algorithm = options.algorithm;
   search.budget = options.budget;
@@ -105,102 +82,232 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
         names += (names.empty() ? "" : ", ") + objective;
       err << "scenfuzz: error: '" << options.path << "' has no spec named '" << name
           << "'; its specs are: " << names << "\n";
-      return kExitUsage;
+      return std::nullopt;
     }
     search.targets.push_back(static_cast<std::size_t>(found - objectives.begin()));
   }
   try {
-    (void)make_search_strategy(options.algorithm, evaluator->dimensions(), 0, options.budget);
+    (void)make_search_strategy(options.algorithm, evaluator.dimensions(), 0, options.budget);
   } catch (const std::invalid_argument& error) {
     err << "scenfuzz: error: " << error.what() << "\n";
-    return kExitUsage;
+    return std::nullopt;
+  }
+  return search;
+}
+
+// Locks --out and decides what happens to an earlier search there: resumed (its journal read
+// into `journal`), replaced (--force) or refused. An error message, empty when the search may
+// start.
+std::string claim_output_folder(const FuzzCommandOptions& options, OutputFolderLock& lock,
+                                SearchOutputs& outputs, std::vector<EvaluationRecord>& journal,
+                                std::ostream& err) {
+  const fs::path dir = options.out_dir;
+  if (std::string failure = lock.acquire(dir); !failure.empty()) return failure;
+  remove_temporary_files(dir);
+  if (holds_search(dir)) {
+    if (options.resume) return outputs.resume(journal);
+    if (!options.force)
+      return "'" + dir.string() +
+             "' holds an earlier search: continue it with --resume, write into another folder "
+             "with --out DIR, or replace it with --force";
+    if (std::string failure = remove_search(dir); !failure.empty()) return failure;
+  } else if (options.resume) {
+    err << "scenfuzz: note: there is no search to resume in '" << dir.string()
+        << "'; starting a new one\n";
+  }
+  return outputs.start();
+}
+
+// What the search's callbacks share: the findings, the outputs and the progress line.
+class SearchSession {
+ public:
+  SearchSession(const FuzzCommandOptions& options, SearchOutputs& outputs,
+                const JournalReplay& replay, std::vector<std::string> objectives, std::ostream& out,
+                std::ostream& err)
+      : options_(options),
+        outputs_(outputs),
+        replay_(replay),
+        objectives_(objectives),
+        log_(std::move(objectives)),
+        progress_(options, out, err),
+        out_(out),
+        err_(err) {}
+
+  SearchCallbacks callbacks() {
+    SearchCallbacks callbacks;
+    callbacks.on_evaluation = [this](const EvaluationRecord& record) { take(record); };
+    callbacks.on_batch_end = [this] { end_batch(); };
+    callbacks.interrupted = [this] {
+      return StopSignalGuard::stop_requested() || !write_failure_.empty();
+    };
+    return callbacks;
   }
 
-  SearchOutputs outputs(options, file, scenario, *evaluator);
-  if (std::string failure = outputs.prepare(); !failure.empty()) {
-    err << "scenfuzz: error: " << failure << "\n";
-    return kExitBadInput;
+  // After the search: the final summary.json, and the stop reason "error" after a failed write.
+  void finish(SearchSummary& summary) {
+    if (!write_failure_.empty()) summary.stop = StopReason::error;
+    progress_.update(summary.judged, outputs_.best(), objectives_, log_.findings().size(), true);
+    progress_.finish();
+    std::string failure = outputs_.finish(summary, log_, write_failure_);
+    if (write_failure_.empty()) write_failure_ = failure;
   }
 
-  FindingLog log(objectives);
-  ProgressReport progress(options, out, err);
-  SearchSummary so_far;
-  std::string write_failure;
-  Clock::time_point last_flush = Clock::now();
-  SearchCallbacks callbacks;
-  callbacks.interrupted = [] { return interrupt_requested.load(); };
-  callbacks.on_evaluation = [&](const EvaluationRecord& record) {
-    outputs.record(record);
-    ++so_far.evaluations;
-    if (record.evaluation.judged()) ++so_far.judged;
-    for (const Finding& finding : log.add(record)) {
-      std::string failure;
-      const std::string path = outputs.write_finding(finding, failure);
-      if (!failure.empty()) {
-        progress.finish();
-        err << "scenfuzz: warning: " << failure << "\n";
-      }
-      if (options.json)
-        out << nlohmann::json{{"event", "finding"},
-                              {"number", finding.number},
-                              {"spec", finding.objective_name},
-                              {"robustness", robustness_json(finding.robustness)},
-                              {"evaluation", finding.evaluation},
-                              {"file", path}}
-                   .dump()
-            << "\n"
-            << std::flush;
+  const FindingLog& log() const { return log_; }
+  const std::string& write_failure() const { return write_failure_; }
+
+ private:
+  void take(const EvaluationRecord& record) {
+    outputs_.record(record, replay_.replayed(record.index));
+    ++so_far_.evaluations;
+    if (!record.evaluation.feasible())
+      ++so_far_.infeasible;
+    else if (record.evaluation.judged())
+      ++so_far_.judged;
+    else
+      ++so_far_.failed;
+    for (const Finding& finding : log_.add(record)) write(finding);
+    progress_.update(so_far_.judged, outputs_.best(), objectives_, log_.findings().size(), false);
+  }
+
+  void write(const Finding& finding) {
+    if (!write_failure_.empty()) return;
+    std::string failure;
+    bool fatal = false;
+    const std::string path = outputs_.write_finding(finding, failure, fatal);
+    if (fatal) {
+      write_failure_ = failure;
+    } else if (!failure.empty()) {
+      progress_.finish();
+      err_ << "scenfuzz: warning: " << failure << "\n";
     }
-    progress.update(so_far.judged, outputs.best(), objectives, log.findings().size(), false);
-    if (std::chrono::duration<double>(Clock::now() - last_flush).count() > 5) {
-      last_flush = Clock::now();
-      write_failure = outputs.flush(so_far, log, false);
+    if (!options_.json) return;
+    nlohmann::json event = {{"event", "finding"},
+                            {"number", finding.number},
+                            {"evaluation", finding.evaluation},
+                            {"file", path}};
+    if (finding.ego_failure()) {
+      event["kind"] = finding.objective_name;
+      event["reason"] = finding.failure;
+    } else {
+      event["kind"] = "violation";
+      event["spec"] = finding.objective_name;
+      event["robustness"] = robustness_json(finding.robustness);
     }
-  };
-
-  SearchSummary summary;
-  {
-    InterruptGuard guard;
-    try {
-      summary = run_search(*evaluator, search, callbacks);
-    } catch (const OracleError& error) {
-      progress.finish();
-      Diagnostics diagnostics;
-      diagnostics.error(error.location(), error.what());
-      err << format_diagnostics(file, diagnostics);
-      return kExitBadInput;
-    }
-  }
-  progress.update(summary.judged, outputs.best(), objectives, log.findings().size(), true);
-  progress.finish();
-  if (std::string failure = outputs.flush(summary, log, true); !failure.empty())
-    write_failure = failure;
-  if (!write_failure.empty()) {
-    err << "scenfuzz: error: " << write_failure << "\n";
-    return kExitBadInput;
+    out_ << event.dump() << "\n" << std::flush;
   }
 
+  void end_batch() {
+    if (!write_failure_.empty()) return;
+    so_far_.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    write_failure_ = outputs_.end_batch(so_far_, log_);
+  }
+
+  const FuzzCommandOptions& options_;
+  SearchOutputs& outputs_;
+  const JournalReplay& replay_;
+  std::vector<std::string> objectives_;
+  FindingLog log_;
+  ProgressReport progress_;
+  std::ostream& out_;
+  std::ostream& err_;
+  SearchSummary so_far_;
+  std::string write_failure_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::string finding_line(const Finding& finding) {
+  std::string line = "  " + finding_number_text(finding.number) + " ";
+  if (finding.ego_failure()) return line + finding.objective_name + ": " + finding.failure;
+  line += finding.objective_name + " robustness " +
+          format_number(std::round(finding.robustness * 1e6) / 1e6);
+  return line + (finding.signature.empty() ? "" : " (" + finding.signature + ")");
+}
+
+void print_report(const FuzzCommandOptions& options, const SearchSummary& summary,
+                  const SearchOutputs& outputs, const FindingLog& log,
+                  const std::vector<std::string>& objectives, std::ostream& out) {
   if (options.json) {
     out << nlohmann::json{{"event", "summary"}, {"summary", outputs.summary(summary, log, true)}}
                .dump()
         << "\n";
-  } else if (!options.quiet) {
-    out << summary.judged << " simulations (" << summary.infeasible
-        << " infeasible points skipped, " << summary.failed << " failed) in "
-        << format_number(std::round(summary.wall_seconds * 10) / 10)
-        << " s, stopped: " << stop_reason_name(summary.stop) << "\n";
-    for (std::size_t k = 0; k < objectives.size() && k < outputs.best().size(); ++k)
-      out << "  best " << objectives[k] << ": " << format_number(outputs.best()[k]) << "\n";
-    out << log.findings().size() << (log.findings().size() == 1 ? " finding" : " findings");
-    if (log.duplicates() > 0) out << " (" << log.duplicates() << " duplicates skipped)";
-    out << (log.findings().empty() ? "\n" : ":\n");
-    for (const Finding& finding : log.findings())
-      out << "  " << finding_number_text(finding.number) << " " << finding.objective_name
-          << " robustness " << format_number(std::round(finding.robustness * 1e6) / 1e6)
-          << (finding.signature.empty() ? "" : " (" + finding.signature + ")") << "\n";
-    out << "wrote " << (fs::path(options.out_dir) / "summary.json").string() << "\n";
+    return;
   }
-  return log.findings().empty() ? kExitSuccess : kExitViolated;
+  if (options.quiet) return;
+  out << summary.judged << " simulations (" << summary.infeasible << " infeasible points skipped, "
+      << summary.failed << " failed) in "
+      << format_number(std::round(summary.wall_seconds * 10) / 10)
+      << " s, stopped: " << stop_reason_name(summary.stop) << "\n";
+  for (std::size_t k = 0; k < objectives.size() && k < outputs.best().size(); ++k)
+    out << "  best " << objectives[k] << ": " << format_number(outputs.best()[k]) << "\n";
+  std::vector<const Finding*> kept;
+  for (const Finding& finding : log.findings())
+    if (!outputs.lost(finding)) kept.push_back(&finding);
+  out << kept.size() << (kept.size() == 1 ? " finding" : " findings");
+  if (log.duplicates() > 0) out << " (" << log.duplicates() << " duplicates skipped)";
+  out << (kept.empty() ? "\n" : ":\n");
+  for (const Finding* finding : kept) out << finding_line(*finding) << "\n";
+  out << "wrote " << (fs::path(options.out_dir) / "summary.json").string() << "\n";
+}
+
+// The exit status once the search has ended, with the reason on `err` when it is an error.
+int exit_status(const SearchSession& session, const SearchOutputs& outputs,
+                const SearchSummary& summary, std::ostream& err) {
+  if (!session.write_failure().empty()) {
+    err << "scenfuzz: error: " << session.write_failure()
+        << "; the search stopped (what is in the output folder is consistent: resume it with "
+           "--resume once there is room)\n";
+    return kExitBadInput;
+  }
+  if (!session.log().findings().empty()) return kExitViolated;
+  if (std::string why = outputs.why_nothing_judged(summary); !why.empty()) {
+    err << "scenfuzz: error: " << why << "\n";
+    return kExitBadInput;
+  }
+  return kExitSuccess;
+}
+
+}  // namespace
+
+int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
+  std::optional<ScenarioFile> input = read_scenario(options.path, "search", err);
+  if (!input) return kExitBadInput;
+  std::optional<ScenarioEvaluator> evaluator = make_evaluator(options, *input, err);
+  if (!evaluator) return kExitBadInput;
+  std::optional<SearchOptions> search = search_options(options, *evaluator, err);
+  if (!search) return kExitUsage;
+
+  OutputFolderLock lock;
+  SearchOutputs outputs(options, input->file, input->scenario, *evaluator);
+  std::vector<EvaluationRecord> journal;
+  if (std::string failure = claim_output_folder(options, lock, outputs, journal, err);
+      !failure.empty()) {
+    err << "scenfuzz: error: " << failure << "\n";
+    return kExitBadInput;
+  }
+
+  const std::vector<std::string> objectives = evaluator->objectives();
+  const JournalReplay replay(*evaluator, std::move(journal));
+  SearchSession session(options, outputs, replay, objectives, out, err);
+  SearchSummary summary;
+  {
+    StopSignalGuard guard;
+    try {
+      summary = run_search(replay, *search, session.callbacks());
+    } catch (const OracleError& error) {
+      Diagnostics diagnostics;
+      diagnostics.error(error.location(), error.what());
+      err << format_diagnostics(input->file, diagnostics);
+      return kExitBadInput;
+    } catch (const JournalMismatch& error) {
+      err << "scenfuzz: error: cannot resume the search in '" << options.out_dir
+          << "': " << error.what() << "; replace it with --force\n";
+      return kExitBadInput;
+    }
+  }
+  session.finish(summary);
+  print_report(options, summary, outputs, session.log(), objectives, out);
+  return exit_status(session, outputs, summary, err);
 }
 
 }  // namespace scenfuzz

@@ -157,7 +157,7 @@ int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& e
     svg.labels = options.labels;
     std::string failure = write_file_atomically(options.svg_path, render_map_svg(*map, svg));
     if (!failure.empty()) {
-      err << "scenfuzz: error: cannot write '" << options.svg_path << "': " << failure << "\n";
+      err << "scenfuzz: error: " << failure << "\n";
       return kExitBadInput;
     }
   }

@@ -34,13 +34,29 @@ GeneKind gene_kind(const Dimension& dimension) {
   return GeneKind::continuous;
 }
 
-std::string first_error(const Diagnostics& diagnostics) {
-  for (const Diagnostic& diagnostic : diagnostics.all())
-    if (diagnostic.severity == Severity::error) return diagnostic.message;
+// The first error, placed in the file ("base.avu:3:9: lane 'x' is not in map 'straight'").
+std::string first_error(const SourceFile& file, const Diagnostics& diagnostics) {
+  for (const Diagnostic& diagnostic : diagnostics.all()) {
+    if (diagnostic.severity != Severity::error) continue;
+    if (!diagnostic.location.known()) return diagnostic.message;
+    return file.path() + ":" + std::to_string(diagnostic.location.line) + ":" +
+           std::to_string(diagnostic.location.column) + ": " + diagnostic.message;
+  }
   return "the scenario cannot be set up at this point";
 }
 
+std::string ego_failure_reason(const Trace& trace) {
+  if (trace.ego_failure) return trace.ego_failure->reason;
+  return trace.events.empty() ? "the ego plugin failed" : trace.events.back().message;
+}
+
 }  // namespace
+
+bool is_finding(const EgoFailure& failure) {
+  // An error before the first step is a plugin that cannot be loaded or created: a bad
+  // --ego-plugin (every evaluation fails the same way), not something the scenario found.
+  return !(failure.kind == EgoFailureKind::error && failure.step == 0);
+}
 
 std::string collision_signature(const Trace& trace) {
   for (const Collision& collision : trace.collisions) {
@@ -102,7 +118,7 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
   const std::optional<SimulationSetup> setup =
       prepare_simulation(scenario_, run.values, *run.map, seed, diagnostics);
   if (!setup) {
-    run.infeasible = first_error(diagnostics);
+    run.infeasible = first_error(file_, diagnostics);
     return run;
   }
   if (std::optional<std::string> overlap = initial_overlap(*setup)) {
@@ -112,9 +128,9 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
   SimulationOptions options = simulation_;
   options.seed = seed;
   run.trace = simulate(*run.map, *setup, options);
-  if (run.trace->end == EndReason::ego_failure && run.trace->sample_count() == 0) {
-    run.failure = run.trace->events.empty() ? "the ego plugin failed to start"
-                                            : run.trace->events.back().message;
+  if (run.trace->end == EndReason::ego_failure) {
+    // A trace cut short by the driver under test says nothing about its specs.
+    run.failure = ego_failure_reason(*run.trace);
     return run;
   }
   run.verdicts = judge_trace(scenario_, run.values, *run.trace, *run.map, file_);
@@ -127,6 +143,12 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
   Evaluation evaluation;
   evaluation.infeasible = run.infeasible;
   evaluation.failure = run.failure;
+  if (run.trace && run.trace->ego_failure && is_finding(*run.trace->ego_failure)) {
+    const EgoFailure& failure = *run.trace->ego_failure;
+    evaluation.failure_kind = ego_failure_kind_name(failure.kind);
+    evaluation.signature =
+        evaluation.failure_kind + (failure.signal.empty() ? "" : " " + failure.signal);
+  }
   if (!evaluation.judged()) return evaluation;
   for (const SpecVerdict& verdict : run.verdicts) {
     evaluation.robustness.push_back(verdict.robustness);

@@ -58,6 +58,10 @@ class ScenarioEvaluator : public Evaluator {
   std::shared_ptr<const RoadMap> fixed_map_;
 };
 
+// Whether an ego plugin's failure is a finding (it crashed or hung, or returned an error once
+// running) rather than a plugin that could not be loaded or created at all.
+bool is_finding(const EgoFailure& failure);
+
 // What tells findings of one objective apart beyond their points: the ego's first collision as
 // "ego front / npc1 rear"; empty when the ego collided with nothing.
 std::string collision_signature(const Trace& trace);

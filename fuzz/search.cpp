@@ -40,6 +40,7 @@ std::string_view stop_reason_name(StopReason reason) {
     case StopReason::interrupted: return "interrupted";
     case StopReason::infeasible: return "infeasible";
     case StopReason::exhausted: return "exhausted";
+    case StopReason::error: return "error";
   }
   return "budget";
 }
@@ -146,6 +147,7 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
         }
         if (callbacks.on_evaluation) callbacks.on_evaluation(records[i]);
       }
+      if (callbacks.on_batch_end) callbacks.on_batch_end();
       target.strategy->observe(observations);
     }
     if (!stopped && !any_left) {

@@ -42,7 +42,9 @@ struct EvaluationRecord {
   Evaluation evaluation;
 };
 
-enum class StopReason { budget, time_limit, interrupted, infeasible, exhausted };
+// error: the caller stopped the search because it could not record it (a full disk); the search
+// itself never returns it.
+enum class StopReason { budget, time_limit, interrupted, infeasible, exhausted, error };
 
 struct SearchSummary {
   std::size_t evaluations = 0;  // proposed and evaluated, infeasible ones included
@@ -56,7 +58,9 @@ struct SearchSummary {
 struct SearchCallbacks {
   // Every evaluation, in index order, on the thread that called run_search.
   std::function<void(const EvaluationRecord&)> on_evaluation;
-  // Asked between batches: true ends the search (SIGINT).
+  // After each batch's on_evaluation calls: where a journal makes the batch durable.
+  std::function<void()> on_batch_end;
+  // Asked between batches: true ends the search (SIGINT, SIGTERM, a failed write).
   std::function<bool()> interrupted;
 };
 

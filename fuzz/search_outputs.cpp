@@ -1,12 +1,14 @@
 #include "fuzz/search_outputs.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
+#include "fuzz/search_identity.hpp"
 #include "lang/number_format.hpp"
 #include "physics/trace/trace_export.hpp"
 #include "physics/trace/trace_svg.hpp"
@@ -24,15 +26,31 @@ std::string file_stem(const std::string& name) {
   return stem;
 }
 
+// One line of a header comment: a plugin's message may hold line breaks.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
 // The options a replay of a finding needs to simulate exactly as the search did.
-std::string simulation_flags(const FuzzCommandOptions& options) {
+std::string simulation_flags(const SimulationCommandOptions& options) {
+  const SimulationCommandOptions defaults;
   std::string flags;
-  for (const std::string& path : options.simulation.map_paths) flags += " --map-path " + shell_quote(path);
-  if (!options.simulation.ego_plugin.empty()) flags += " --ego-plugin " + shell_quote(options.simulation.ego_plugin);
-  if (options.simulation.duration) flags += " --duration " + format_number(*options.simulation.duration);
-  if (options.simulation.dt != 0.05) flags += " --dt " + format_number(options.simulation.dt);
-  if (options.simulation.continue_after_collision) flags += " --continue-after-collision";
+  for (const std::string& path : options.map_paths) flags += " --map-path " + shell_quote(path);
+  if (!options.ego_plugin.empty()) flags += " --ego-plugin " + shell_quote(options.ego_plugin);
+  if (options.duration) flags += " --duration " + format_number(*options.duration);
+  if (options.dt != defaults.dt) flags += " --dt " + format_number(options.dt);
+  if (options.continue_after_collision) flags += " --continue-after-collision";
+  if (options.ego_step_timeout != defaults.ego_step_timeout)
+    flags += " --ego-step-timeout " + format_number(options.ego_step_timeout);
+  if (options.ego_start_timeout != defaults.ego_start_timeout)
+    flags += " --ego-start-timeout " + format_number(options.ego_start_timeout);
   return flags;
+}
+
+std::string seconds_text(double seconds) {
+  return format_number(std::round(seconds * 1000) / 1000) + " s";
 }
 
 }  // namespace
@@ -50,132 +68,215 @@ SearchOutputs::SearchOutputs(const FuzzCommandOptions& options, const SourceFile
       scenario_(scenario),
       evaluator_(evaluator),
       dir_(options.out_dir),
-      objectives_(evaluator.objectives()) {
-  for (const Dimension& dimension : evaluator.space().dimensions)
-    header_ += "," + csv_field(dimension.name);
-  for (const Dimension& dimension : evaluator.space().dimensions)
-    header_ += "," + csv_field("u." + dimension.name);
-  for (const std::string& objective : objectives_)
-    header_ += "," + csv_field("robustness." + objective);
-  header_ = "evaluation,seed,target,status" + header_ + ",wall_seconds,reason\n";
-}
+      objectives_(evaluator.objectives()),
+      journal_(evaluator.space(), objectives_) {}
 
-std::string SearchOutputs::prepare() {
+std::string SearchOutputs::start() {
   std::error_code error;
   fs::create_directories(dir_ / "findings", error);
   if (error) return "cannot create '" + (dir_ / "findings").string() + "': " + error.message();
-  return write_file_atomically(dir_ / "evaluations.csv", header_);
+  const std::string identity = search_identity(options_, file_).dump(2) + "\n";
+  if (std::string failure = write_file_atomically(dir_ / "search.json", identity); !failure.empty())
+    return failure;
+  return write_file_atomically(dir_ / "evaluations.csv", journal_.header());
 }
 
-void SearchOutputs::record(const EvaluationRecord& record) {
+std::string SearchOutputs::resume(std::vector<EvaluationRecord>& journal) {
+  std::ifstream in(dir_ / "search.json");
+  nlohmann::json stored = nlohmann::json::parse(in, nullptr, false);
+  if (!in || stored.is_discarded() || !stored.is_object())
+    return "'" + (dir_ / "search.json").string() +
+           "' is missing or unreadable: there is no search to resume there (use --force to "
+           "replace what is there)";
+  if (std::string difference = identity_difference(stored, search_identity(options_, file_));
+      !difference.empty())
+    return "cannot resume the search in '" + dir_.string() + "': " + difference +
+           "; resume with the options it was started with, or replace it with --force";
+  std::error_code error;
+  fs::create_directories(dir_ / "findings", error);
+  if (error) return "cannot create '" + (dir_ / "findings").string() + "': " + error.message();
+  std::string failure;
+  std::optional<std::vector<EvaluationRecord>> records =
+      journal_.read(dir_ / "evaluations.csv", failure);
+  if (!records) return failure;
+  journal = std::move(*records);
+  return {};
+}
+
+void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
   const Evaluation& evaluation = record.evaluation;
-  const char* status = !evaluation.feasible() ? "infeasible"
-                       : !evaluation.judged() ? "failed"
-                                              : "judged";
-  std::string row = std::to_string(record.index) + "," + std::to_string(record.seed) + "," +
-                    csv_field(objectives_[record.target]) + "," + status;
-  const std::vector<double> values = decode(evaluator_.space(), record.point);
-  const std::vector<Dimension>& dimensions = evaluator_.space().dimensions;
-  for (std::size_t i = 0; i < dimensions.size(); ++i)
-    row += "," + (dimensions[i].kind == ParameterKind::discrete
-                      ? csv_field(dimensions[i].choices[static_cast<std::size_t>(values[i])])
-                      : format_number(values[i]));
-  for (double u : record.point) row += "," + format_number(u);
-  for (std::size_t k = 0; k < objectives_.size(); ++k)
-    row += "," + (evaluation.judged() ? format_number(evaluation.robustness[k]) : std::string());
-  row += "," + format_number(std::round(evaluation.wall_seconds * 1e6) / 1e6) + "," +
-         csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "\n";
-  rows_ += row;
+  if (!replayed) batch_rows_ += journal_.row(record);
+  if (!evaluation.feasible() && first_infeasible_.empty())
+    first_infeasible_ = evaluation.infeasible;
+  if (evaluation.feasible() && !evaluation.judged() && first_failure_.empty())
+    first_failure_ = evaluation.failure;
+  if (!evaluation.failure_kind.empty()) ++ego_failures_;
   for (std::size_t k = 0; k < objectives_.size() && evaluation.judged(); ++k) {
     if (best_.size() < objectives_.size()) best_.assign(objectives_.size(), INFINITY);
     best_[k] = std::min(best_[k], evaluation.robustness[k]);
   }
 }
 
-std::string SearchOutputs::write_finding(const Finding& finding, std::string& failure) {
+fs::path SearchOutputs::finding_path(const Finding& finding, const std::string& extension) const {
+  std::string own = extension;
+  if (own.empty()) {
+    own = fs::path(file_.path()).extension().string();
+    if (own.empty()) own = ".avu";
+  }
+  return dir_ / "findings" /
+         (finding_number_text(finding.number) + "-" + file_stem(finding.objective_name) + own);
+}
+
+std::string SearchOutputs::finding_header(const Finding& finding, const ScenarioRun& run,
+                                          const fs::path& scenario_path) const {
+  const std::string comment = comment_prefix(file_.path());
+  std::string header = comment + "scenfuzz finding " + std::to_string(finding.number) + ": ";
+  std::string origin = "from " + file_.path() + ", search seed " + std::to_string(options_.seed) +
+                       ", evaluation " + std::to_string(finding.evaluation) + " (" +
+                       options_.algorithm + ")";
+  if (finding.ego_failure()) {
+    const std::optional<EgoFailure>& failure = run.trace->ego_failure;
+    header += finding.objective_name + ": " + one_line(failure ? failure->reason : finding.failure);
+    if (failure)
+      origin = "at step " + std::to_string(failure->step) + ", " + seconds_text(failure->time) +
+               " simulated; " + origin;
+    header += "\n" + comment + origin + "\n";
+    if (failure && !failure->last_observation.empty())
+      header += comment + "last observation: " + one_line(failure->last_observation) + "\n";
+  } else {
+    const SpecVerdict& verdict = run.verdicts[finding.objective];
+    header += "spec " + finding.objective_name + " violated, robustness " +
+              format_number(verdict.robustness) + " at " + seconds_text(verdict.time);
+    if (!verdict.atom_text.empty()) header += " (" + verdict.atom_text + ")";
+    if (!finding.signature.empty()) origin += ", collision " + finding.signature;
+    header += "\n" + comment + origin + "\n";
+  }
+  return header + comment + "replay: scenfuzz run " + shell_quote(scenario_path.string()) +
+         " --seed " + std::to_string(finding.seed) + simulation_flags(options_.simulation) + "\n";
+}
+
+std::string SearchOutputs::write_finding(const Finding& finding, std::string& failure,
+                                         bool& fatal) {
+  fatal = false;
+  const fs::path scenario_path = finding_path(finding, "");
+  std::error_code error;
+  if (fs::exists(scenario_path, error)) {
+    // A resumed search: the scenario file is written last, so the finding is whole.
+    written_[finding.number] = scenario_path.string();
+    return scenario_path.string();
+  }
   const ScenarioRun run = evaluator_.run(finding.point, finding.seed);
-  if (!run.trace || run.verdicts.size() <= finding.objective) {
+  const bool replayed =
+      run.trace && (finding.ego_failure() ? run.trace->ego_failure.has_value()
+                                          : run.verdicts.size() > finding.objective);
+  if (!replayed) {
     failure = "finding " + std::to_string(finding.number) + " did not replay: " + run.infeasible +
-              run.failure;
+              (run.failure.empty() ? "the run went differently" : run.failure);
     return "";
   }
-  const SpecVerdict& verdict = run.verdicts[finding.objective];
-  const std::string extension = fs::path(file_.path()).extension().string();
-  const std::string stem =
-      finding_number_text(finding.number) + "-" + file_stem(finding.objective_name);
-  const fs::path scenario_path =
-      dir_ / "findings" / (stem + (extension.empty() ? ".avu" : extension));
-  const std::string comment = comment_prefix(file_.path());
-  std::string header = comment + "scenfuzz finding " + std::to_string(finding.number) + ": spec " +
-                       finding.objective_name + " violated, robustness " +
-                       format_number(verdict.robustness) + " at " +
-                       format_number(std::round(verdict.time * 1000) / 1000) + " s";
-  if (!verdict.atom_text.empty()) header += " (" + verdict.atom_text + ")";
-  header += "\n" + comment + "from " + file_.path() + ", search seed " +
-            std::to_string(options_.seed) + ", evaluation " + std::to_string(finding.evaluation) +
-            " (" + options_.algorithm + ")";
-  if (!finding.signature.empty()) header += ", collision " + finding.signature;
-  header += "\n" + comment + "replay: scenfuzz run " + shell_quote(scenario_path.string()) +
-            " --seed " + std::to_string(finding.seed) + simulation_flags(options_) + "\n";
-  std::vector<std::string> lane_ids;
-  for (const Lane& lane : run.map->lanes()) lane_ids.push_back(lane.id);
-  const std::vector<std::pair<fs::path, std::string>> files = {
-      {scenario_path, header + print_concrete_scenario(file_, scenario_, run.values)},
-      {dir_ / "findings" / (stem + ".csv"), trace_csv(*run.trace, lane_ids)},
-      {dir_ / "findings" / (stem + ".svg"), render_trace_svg(*run.map, *run.trace)},
-  };
+  std::vector<std::pair<fs::path, std::string>> files;
+  if (run.trace->sample_count() > 0) {
+    std::vector<std::string> lane_ids;
+    for (const Lane& lane : run.map->lanes()) lane_ids.push_back(lane.id);
+    files.emplace_back(finding_path(finding, ".csv"), trace_csv(*run.trace, lane_ids));
+    files.emplace_back(finding_path(finding, ".svg"), render_trace_svg(*run.map, *run.trace));
+  }
+  files.emplace_back(scenario_path, finding_header(finding, run, scenario_path) +
+                                        print_concrete_scenario(file_, scenario_, run.values));
   for (const auto& [path, content] : files) {
     failure = write_file_atomically(path, content);
-    if (!failure.empty()) return "";
+    fatal = !failure.empty();
+    if (fatal) {
+      lost_.insert(finding.number);
+      return "";
+    }
   }
-  if (verdict.robustness != finding.robustness)
+  written_[finding.number] = scenario_path.string();
+  if (finding.ego_failure() &&
+      ego_failure_kind_name(run.trace->ego_failure->kind) != finding.objective_name)
+    failure = "finding " + std::to_string(finding.number) + " replays as " +
+              std::string(ego_failure_kind_name(run.trace->ego_failure->kind)) + " instead of " +
+              finding.objective_name + " (the plugin does not fail deterministically)";
+  if (!finding.ego_failure() && run.verdicts[finding.objective].robustness != finding.robustness)
     failure = "finding " + std::to_string(finding.number) + " replays with robustness " +
-              format_number(verdict.robustness) + " instead of " +
+              format_number(run.verdicts[finding.objective].robustness) + " instead of " +
               format_number(finding.robustness) + " (please report this)";
-  written_.push_back(scenario_path.string());
   return scenario_path.string();
 }
 
 nlohmann::json SearchOutputs::summary(const SearchSummary& search, const FindingLog& log,
-                                      bool complete) const {
+                                      bool complete, const std::string& error) const {
   nlohmann::json findings = nlohmann::json::array();
-  for (std::size_t i = 0; i < log.findings().size(); ++i) {
-    const Finding& finding = log.findings()[i];
-    nlohmann::json entry = {{"number", finding.number},
-                            {"spec", finding.objective_name},
-                            {"robustness", robustness_json(finding.robustness)},
-                            {"evaluation", finding.evaluation},
-                            {"seed", finding.seed}};
-    if (i < written_.size()) entry["file"] = written_[i];
-    if (!finding.signature.empty()) entry["collision"] = finding.signature;
+  for (const Finding& finding : log.findings()) {
+    if (lost(finding)) continue;
+    nlohmann::json entry = {
+        {"number", finding.number}, {"evaluation", finding.evaluation}, {"seed", finding.seed}};
+    if (finding.ego_failure()) {
+      entry["kind"] = finding.objective_name;
+      entry["reason"] = finding.failure;
+    } else {
+      entry["kind"] = "violation";
+      entry["spec"] = finding.objective_name;
+      entry["robustness"] = robustness_json(finding.robustness);
+      if (!finding.signature.empty()) entry["collision"] = finding.signature;
+    }
+    if (auto file = written_.find(finding.number); file != written_.end())
+      entry["file"] = file->second;
     findings.push_back(entry);
   }
   nlohmann::json best = nlohmann::json::object();
   for (std::size_t k = 0; k < best_.size(); ++k) best[objectives_[k]] = robustness_json(best_[k]);
-  return {{"scenario", file_.path()},
-          {"algorithm", options_.algorithm},
-          {"seed", options_.seed},
-          {"budget", options_.budget},
-          {"specs", objectives_},
-          {"evaluations", search.evaluations},
-          {"judged", search.judged},
-          {"failed", search.failed},
-          {"infeasible", search.infeasible},
-          {"best", best},
-          {"findings", findings},
-          {"duplicates", log.duplicates()},
-          {"wall_seconds", search.wall_seconds},
-          {"stop", complete ? std::string(stop_reason_name(search.stop)) : "running"},
-          {"complete", complete}};
+  nlohmann::json document = {
+      {"scenario", file_.path()},
+      {"algorithm", options_.algorithm},
+      {"seed", options_.seed},
+      {"budget", options_.budget},
+      {"specs", objectives_},
+      {"evaluations", search.evaluations},
+      {"judged", search.judged},
+      {"failed", search.failed},
+      {"ego_failures", ego_failures_},
+      {"infeasible", search.infeasible},
+      {"best", best},
+      {"findings", findings},
+      {"duplicates", log.duplicates()},
+      {"wall_seconds", search.wall_seconds},
+      {"stop", complete ? std::string(stop_reason_name(search.stop)) : "running"},
+      {"complete", complete}};
+  if (!error.empty()) document["error"] = error;
+  return document;
 }
 
-std::string SearchOutputs::flush(const SearchSummary& search, const FindingLog& log,
-                                 bool complete) {
-  std::string failure = write_file_atomically(dir_ / "evaluations.csv", header_ + rows_);
-  if (failure.empty())
-    failure =
-        write_file_atomically(dir_ / "summary.json", summary(search, log, complete).dump(2) + "\n");
-  return failure;
+std::string SearchOutputs::end_batch(const SearchSummary& search, const FindingLog& log) {
+  if (!batch_rows_.empty()) {
+    std::string failure = append_durably(dir_ / "evaluations.csv", batch_rows_);
+    if (!failure.empty()) return failure;
+    batch_rows_.clear();
+  }
+  return write_file_atomically(dir_ / "summary.json", summary(search, log, false).dump(2) + "\n");
+}
+
+std::string SearchOutputs::finish(const SearchSummary& search, const FindingLog& log,
+                                  const std::string& error) {
+  std::string failure;
+  if (!batch_rows_.empty()) {
+    failure = append_durably(dir_ / "evaluations.csv", batch_rows_);
+    if (failure.empty()) batch_rows_.clear();
+  }
+  std::string summary_failure = write_file_atomically(
+      dir_ / "summary.json",
+      summary(search, log, true, error.empty() ? failure : error).dump(2) + "\n");
+  return failure.empty() ? summary_failure : failure;
+}
+
+std::string SearchOutputs::why_nothing_judged(const SearchSummary& search) const {
+  if (search.judged > 0) return "";
+  std::string text = "no evaluation could be judged: " + std::to_string(search.evaluations) +
+                     " proposed, " + std::to_string(search.infeasible) + " infeasible";
+  if (!first_infeasible_.empty()) text += " (the first: " + first_infeasible_ + ")";
+  text += ", " + std::to_string(search.failed) + " failed";
+  if (!first_failure_.empty()) text += " (the first: " + first_failure_ + ")";
+  return text;
 }
 
 }  // namespace scenfuzz

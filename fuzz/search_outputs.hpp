@@ -1,10 +1,14 @@
-// What a search writes into its output folder, each file atomically (temporary file, then
-// rename): findings/NNN-<spec>.<ext> with their trace and picture, evaluations.csv and
-// summary.json, rewritten as the search goes on.
+// What a search writes into its output folder, so that what is on disk is consistent at every
+// moment, even after kill -9: search.json (what is searched, once), evaluations.csv (the
+// journal, appended and flushed batch by batch), findings/NNN-<name>.<ext> with their trace and
+// picture (the scenario file last, so that its presence means the finding is whole), and
+// summary.json (rewritten atomically after every batch, and once more when the search ends).
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,6 +16,7 @@
 #include "fuzz/findings.hpp"
 #include "fuzz/scenario_evaluator.hpp"
 #include "fuzz/search.hpp"
+#include "fuzz/search_journal.hpp"
 
 namespace scenfuzz {
 
@@ -21,37 +26,61 @@ class SearchOutputs {
   SearchOutputs(const FuzzCommandOptions& options, const SourceFile& file,
                 const ScenarioTemplate& scenario, const ScenarioEvaluator& evaluator);
 
-  // Creates the folders and an empty evaluations.csv; an error message when it cannot.
-  std::string prepare();
+  // A new search: creates findings/ and writes search.json and the journal's header. An error
+  // message naming the file when it cannot.
+  std::string start();
 
-  // Adds an evaluation's row to evaluations.csv (written at the next flush) and its robustness
-  // to the best so far.
-  void record(const EvaluationRecord& record);
+  // Resuming: checks search.json against this search and reads the journal (dropping a row cut
+  // short). An error message when there is nothing to resume or it belongs to another search.
+  std::string resume(std::vector<EvaluationRecord>& journal);
 
-  // Writes `finding` (simulating its point again, which gives the same run) and returns the
-  // path of its scenario file; a problem (a write failure, a replay that differs) goes into
-  // `failure`.
-  std::string write_finding(const Finding& finding, std::string& failure);
+  // Takes an evaluation: its row joins the next batch (unless it is `replayed` from the
+  // journal), its robustness the best so far.
+  void record(const EvaluationRecord& record, bool replayed);
 
-  nlohmann::json summary(const SearchSummary& search, const FindingLog& log, bool complete) const;
+  // Writes `finding`'s files (simulating its point again, which gives the same run) unless a
+  // resumed search finds them in place already. Returns its scenario file's path; a problem (a
+  // write failure, a replay that differs) goes into `failure` (`fatal` when a file could not be
+  // written).
+  std::string write_finding(const Finding& finding, std::string& failure, bool& fatal);
 
-  // Rewrites evaluations.csv and summary.json; an error message when it cannot.
-  std::string flush(const SearchSummary& search, const FindingLog& log, bool complete);
+  // Makes the batch durable: appends its rows to the journal, then rewrites summary.json. An
+  // error message naming the file when it cannot.
+  std::string end_batch(const SearchSummary& search, const FindingLog& log);
+
+  // The final summary.json; `error` (a failed write) is recorded as the reason of stop "error".
+  std::string finish(const SearchSummary& search, const FindingLog& log, const std::string& error);
+
+  nlohmann::json summary(const SearchSummary& search, const FindingLog& log, bool complete,
+                         const std::string& error = "") const;
 
   // The lowest robustness seen per objective (empty before the first judged evaluation).
   const std::vector<double>& best() const { return best_; }
+  // Whether `finding`'s files could not be written (the search then stops): it is left out of
+  // the summary, and a resumed search writes it.
+  bool lost(const Finding& finding) const { return lost_.count(finding.number) > 0; }
+  // Why no evaluation could be judged, with counts and the first reasons ("" once one was).
+  std::string why_nothing_judged(const SearchSummary& search) const;
 
  private:
+  std::filesystem::path finding_path(const Finding& finding, const std::string& extension) const;
+  std::string finding_header(const Finding& finding, const ScenarioRun& run,
+                             const std::filesystem::path& scenario_path) const;
+
   const FuzzCommandOptions& options_;
   const SourceFile& file_;
   const ScenarioTemplate& scenario_;
   const ScenarioEvaluator& evaluator_;
   std::filesystem::path dir_;
   std::vector<std::string> objectives_;
-  std::string header_;
-  std::string rows_;
+  SearchJournal journal_;
+  std::string batch_rows_;
   std::vector<double> best_;
-  std::vector<std::string> written_;
+  std::map<std::size_t, std::string> written_;  // finding number -> scenario file
+  std::set<std::size_t> lost_;                  // finding numbers whose files failed
+  std::string first_infeasible_;
+  std::string first_failure_;
+  std::size_t ego_failures_ = 0;
 };
 
 // "001", "012", "1234": finding numbers in file names.

@@ -1,0 +1,53 @@
+#include "fuzz/search_identity.hpp"
+
+#include <cstdint>
+#include <cstdio>
+
+namespace scenfuzz {
+
+namespace {
+
+// FNV-1a, 64 bits: enough to tell an edited scenario file from the one a journal was made of.
+std::string text_hash(const std::string& text) {
+  std::uint64_t state = 0xCBF29CE484222325ull;
+  for (unsigned char byte : text) {
+    state ^= byte;
+    state *= 0x100000001B3ull;
+  }
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(state));
+  return buffer;
+}
+
+}  // namespace
+
+nlohmann::json search_identity(const FuzzCommandOptions& options, const SourceFile& file) {
+  const SimulationCommandOptions& simulation = options.simulation;
+  return {{"version", SCENFUZZ_VERSION},
+          {"scenario", file.path()},
+          {"scenario_hash", text_hash(file.text())},
+          {"algorithm", options.algorithm},
+          {"seed", options.seed},
+          {"budget", options.budget},
+          {"specs", options.specs},
+          {"map_paths", simulation.map_paths},
+          {"ego_plugin", simulation.ego_plugin},
+          {"duration", simulation.duration ? nlohmann::json(*simulation.duration) : nullptr},
+          {"dt", simulation.dt},
+          {"continue_after_collision", simulation.continue_after_collision},
+          {"ego_step_timeout", simulation.ego_step_timeout},
+          {"ego_start_timeout", simulation.ego_start_timeout}};
+}
+
+std::string identity_difference(const nlohmann::json& stored, const nlohmann::json& now) {
+  for (const auto& [key, value] : now.items()) {
+    if (key == "scenario") continue;  // the same file may be named from another folder
+    if (!stored.contains(key)) return "it has no " + key;
+    if (stored[key] == value) continue;
+    if (key == "scenario_hash") return "the scenario file has changed since";
+    return "its " + key + " was " + stored[key].dump() + ", now " + value.dump();
+  }
+  return {};
+}
+
+}  // namespace scenfuzz

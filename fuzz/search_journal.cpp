@@ -1,0 +1,233 @@
+#include "fuzz/search_journal.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "fuzz/report_format.hpp"
+#include "lang/number_format.hpp"
+
+namespace scenfuzz {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The fixed columns before the parameters and after the specs.
+constexpr std::size_t kLeading = 5;   // evaluation, seed, target, status, kind
+constexpr std::size_t kTrailing = 3;  // signature, wall_seconds, reason
+
+std::string status_name(const Evaluation& evaluation) {
+  return !evaluation.feasible() ? "infeasible" : !evaluation.judged() ? "failed" : "judged";
+}
+
+// Splits CSV text into records of fields (RFC 4180: quoted fields may hold commas, quotes and
+// line breaks). `complete` is the length of the text up to the end of the last whole record.
+std::vector<std::vector<std::string>> split_csv(const std::string& text, std::size_t& complete) {
+  std::vector<std::vector<std::string>> records;
+  std::vector<std::string> fields;
+  std::string field;
+  bool quoted = false;
+  complete = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c != '"') {
+        field += c;
+      } else if (i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else {
+        quoted = false;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.push_back(std::move(field));
+      field.clear();
+    } else if (c == '\n') {
+      fields.push_back(std::move(field));
+      field.clear();
+      records.push_back(std::move(fields));
+      fields.clear();
+      complete = i + 1;
+    } else {
+      field += c;
+    }
+  }
+  return records;
+}
+
+bool parse_number(const std::string& text, double& value) {
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+template <typename Integer>
+bool parse_integer(const std::string& text, Integer& value) {
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  return ec == std::errc() && ptr == end && !text.empty();
+}
+
+}  // namespace
+
+SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives)
+    : space_(space), objectives_(std::move(objectives)) {
+  header_ = "evaluation,seed,target,status,kind";
+  for (const Dimension& dimension : space_.dimensions) header_ += "," + csv_field(dimension.name);
+  for (const Dimension& dimension : space_.dimensions)
+    header_ += "," + csv_field("u." + dimension.name);
+  for (const std::string& objective : objectives_)
+    header_ += "," + csv_field("robustness." + objective);
+  for (const std::string& objective : objectives_) header_ += "," + csv_field("guide." + objective);
+  header_ += ",signature,wall_seconds,reason\n";
+}
+
+std::string SearchJournal::row(const EvaluationRecord& record) const {
+  const Evaluation& evaluation = record.evaluation;
+  std::string row = std::to_string(record.index) + "," + std::to_string(record.seed) + "," +
+                    csv_field(objectives_[record.target]) + "," + status_name(evaluation) + "," +
+                    csv_field(evaluation.failure_kind);
+  const std::vector<double> values = decode(space_, record.point);
+  for (std::size_t i = 0; i < space_.dimensions.size(); ++i) {
+    const Dimension& dimension = space_.dimensions[i];
+    row += "," + (dimension.kind == ParameterKind::discrete
+                      ? csv_field(dimension.choices[static_cast<std::size_t>(values[i])])
+                      : format_number(values[i]));
+  }
+  for (double u : record.point) row += "," + format_number(u);
+  const bool judged = evaluation.judged();
+  for (std::size_t k = 0; k < objectives_.size(); ++k)
+    row += "," + (judged ? format_number(evaluation.robustness[k]) : std::string());
+  for (std::size_t k = 0; k < objectives_.size(); ++k) {
+    const bool differs =
+        judged && k < evaluation.guide.size() && evaluation.guide[k] != evaluation.robustness[k];
+    row += "," + (differs ? format_number(evaluation.guide[k]) : std::string());
+  }
+  row += "," + csv_field(evaluation.signature) + "," +
+         format_number(std::round(evaluation.wall_seconds * 1e6) / 1e6) + "," +
+         csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "\n";
+  return row;
+}
+
+std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::string>& fields,
+                                                         std::string& error) const {
+  const std::size_t d = space_.dimensions.size();
+  const std::size_t n = objectives_.size();
+  if (fields.size() != kLeading + 2 * d + 2 * n + kTrailing) {
+    error = "has " + std::to_string(fields.size()) + " fields";
+    return std::nullopt;
+  }
+  EvaluationRecord record;
+  const auto target = std::find(objectives_.begin(), objectives_.end(), fields[2]);
+  if (!parse_integer(fields[0], record.index) || !parse_integer(fields[1], record.seed) ||
+      target == objectives_.end()) {
+    error = "has a bad evaluation, seed or target";
+    return std::nullopt;
+  }
+  record.target = static_cast<std::size_t>(target - objectives_.begin());
+  record.point.resize(d);
+  for (std::size_t i = 0; i < d; ++i)
+    if (!parse_number(fields[kLeading + d + i], record.point[i])) {
+      error = "has a bad point";
+      return std::nullopt;
+    }
+  Evaluation& evaluation = record.evaluation;
+  const std::string& status = fields[3];
+  const std::string& reason = fields[kLeading + 2 * d + 2 * n + 2];
+  evaluation.failure_kind = fields[4];
+  evaluation.signature = fields[kLeading + 2 * d + 2 * n];
+  parse_number(fields[kLeading + 2 * d + 2 * n + 1], evaluation.wall_seconds);
+  if (status == "infeasible") {
+    evaluation.infeasible = reason.empty() ? "infeasible" : reason;
+  } else if (status == "failed") {
+    evaluation.failure = reason.empty() ? "failed" : reason;
+  } else if (status == "judged") {
+    evaluation.robustness.resize(n);
+    evaluation.guide.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::string& guide = fields[kLeading + 2 * d + n + k];
+      if (!parse_number(fields[kLeading + 2 * d + k], evaluation.robustness[k]) ||
+          !(guide.empty() ? (evaluation.guide[k] = evaluation.robustness[k], true)
+                          : parse_number(guide, evaluation.guide[k]))) {
+        error = "has a bad robustness";
+        return std::nullopt;
+      }
+    }
+  } else {
+    error = "has an unknown status '" + status + "'";
+    return std::nullopt;
+  }
+  return record;
+}
+
+std::optional<std::vector<EvaluationRecord>> SearchJournal::read(const fs::path& path,
+                                                                 std::string& error) const {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = "cannot read '" + path.string() + "': " + std::strerror(errno);
+    return std::nullopt;
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  std::size_t complete = 0;
+  const std::vector<std::vector<std::string>> rows = split_csv(text, complete);
+  if (text.compare(0, header_.size(), header_) != 0) {
+    error = "'" + path.string() + "' is not the journal of this search (its columns differ)";
+    return std::nullopt;
+  }
+  std::vector<EvaluationRecord> records;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    std::string why;
+    std::optional<EvaluationRecord> record = parse_row(rows[r], why);
+    if (!record || record->index != records.size()) {
+      error = "'" + path.string() + "': row " + std::to_string(r + 1) + " " +
+              (record ? "is out of order" : why);
+      return std::nullopt;
+    }
+    records.push_back(std::move(*record));
+  }
+  if (complete < text.size()) {
+    // A row cut short by a kill: the evaluation it recorded runs again.
+    std::error_code ignored;
+    fs::resize_file(path, complete, ignored);
+    if (ignored) {
+      error = "cannot truncate '" + path.string() + "': " + ignored.message();
+      return std::nullopt;
+    }
+  }
+  return records;
+}
+
+std::string append_durably(const fs::path& path, const std::string& text) {
+  const int descriptor = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  if (descriptor < 0) return "cannot write '" + path.string() + "': " + std::strerror(errno);
+  const char* data = text.data();
+  std::size_t left = text.size();
+  std::string failure;
+  while (left > 0 && failure.empty()) {
+    const ssize_t written = ::write(descriptor, data, left);
+    if (written < 0 && errno == EINTR) continue;
+    if (written < 0) {
+      failure = std::strerror(errno);
+      break;
+    }
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  if (failure.empty() && ::fsync(descriptor) != 0) failure = std::strerror(errno);
+  ::close(descriptor);
+  return failure.empty() ? "" : "cannot write '" + path.string() + "': " + failure;
+}
+
+}  // namespace scenfuzz

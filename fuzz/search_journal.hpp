@@ -1,0 +1,49 @@
+// evaluations.csv is the search's journal: one row per evaluation, appended and flushed to disk
+// batch by batch, with every number written exactly (shortest round-trip) so that a killed search
+// can be replayed from it (--resume) to the very state it had. This file knows the columns,
+// writes rows and reads them back.
+//
+// Columns: evaluation, seed, target, status (judged / failed / infeasible), kind (an ego
+// failure's finding kind, else empty), every parameter by name, the point in the unit cube
+// (u.<name>), robustness.<spec>, guide.<spec> (what the search minimised, when it differs from the
+// robustness), signature (what de-duplicates findings), wall_seconds, reason.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fuzz/search.hpp"
+#include "sampler/parameter_space.hpp"
+
+namespace scenfuzz {
+
+class SearchJournal {
+ public:
+  SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives);
+
+  const std::string& header() const { return header_; }
+  // One CSV row (ending in a line break) for `record`.
+  std::string row(const EvaluationRecord& record) const;
+
+  // Reads the journal at `path`: the records of every complete row, in order. A last row cut
+  // short by a kill is removed from the file. nullopt with `error` set when the file cannot be
+  // read, belongs to another search (its header differs) or a row cannot be parsed.
+  std::optional<std::vector<EvaluationRecord>> read(const std::filesystem::path& path,
+                                                    std::string& error) const;
+
+ private:
+  std::optional<EvaluationRecord> parse_row(const std::vector<std::string>& fields,
+                                            std::string& error) const;
+
+  const ParameterSpace& space_;
+  std::vector<std::string> objectives_;
+  std::string header_;
+};
+
+// Appends `text` to the file at `path` and flushes it to disk (fsync). Returns an error message
+// naming the file, empty on success.
+std::string append_durably(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace scenfuzz
