@@ -240,7 +240,9 @@ RunFingerprint fingerprint_run(const Evaluator& evaluator, const SearchOptions& 
     hash.add(record.target);
     hash.add(record.point);
     hash.add(record.evaluation.robustness);
+    hash.add(record.evaluation.guide);
     hash.add(record.evaluation.infeasible);
+    hash.add(record.evaluation.failure_kind);
     hash.add(record.evaluation.failure);
     hash.add(record.evaluation.signature);
     fingerprint.record_hashes.push_back(hash.value());
@@ -587,6 +589,31 @@ TEST(SearchDeterminismTest, ScenarioSearchIsTheSameForAnyThreadCount) {
   options.budget = 24;
   options.seed = 7;
   expect_same_for_any_thread_count(evaluator, options, {1, 2, 4});
+}
+
+// Pinned, as Box2D's test_determinism pins EXPECTED_HASH: the evaluation records of a reference
+// search, every double to the bit. A change of results (physics, oracle, strategy) must change
+// this constant in the same commit, deliberately and reviewed, instead of drifting silently and
+// equally on every thread count. The failure message prints the new values.
+TEST(SearchDeterminismTest, AReferenceSearchMatchesItsPinnedHash) {
+  constexpr std::uint64_t kEvaluationsHash = 0xFF33780A93A031B7ull;
+  constexpr std::uint64_t kFindingsHash = 0x2974CDD730BBBD85ull;
+  const std::string path = std::string(SCENFUZZ_SOURCE_DIR) + "/corpora/avunit/cut_in_straight.avu";
+  const std::optional<SourceFile> file = read_source_file(path);
+  ASSERT_TRUE(file) << "cannot read " << path;
+  const avunit::ParseResult parsed = avunit::parse(*file);
+  ASSERT_TRUE(parsed.ok()) << format_diagnostics(*file, parsed.diagnostics);
+  const ScenarioEvaluator evaluator(*file, parsed.scenario, map_search_path({}),
+                                    SimulationOptions{});
+  SearchOptions options;
+  options.algorithm = "ga";
+  options.budget = 64;
+  options.seed = 20261125;
+  options.jobs = 2;
+  const RunFingerprint run = fingerprint_run(evaluator, options);
+  EXPECT_GT(run.findings, 0u);
+  EXPECT_EQ(run.evaluations_hash, kEvaluationsHash) << std::hex << "0x" << run.evaluations_hash;
+  EXPECT_EQ(run.findings_hash, kFindingsHash) << std::hex << "0x" << run.findings_hash;
 }
 
 TEST(ScenarioEvaluatorTest, OnlyAnAngleOverAWholeTurnIsAWrappingGene) {
