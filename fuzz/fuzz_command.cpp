@@ -276,6 +276,9 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
   if (!evaluator) return kExitBadInput;
   std::optional<SearchOptions> search = search_options(options, *evaluator, err);
   if (!search) return kExitUsage;
+  // Warnings that hold for most points (an ego far from every lane), shown once, at the centre.
+  err << format_diagnostics(input->file, evaluator->setup_warnings(std::vector<double>(
+                                             evaluator->space().dimensions.size(), 0.5)));
 
   OutputFolderLock lock;
   SearchOutputs outputs(options, input->file, input->scenario, *evaluator);

@@ -101,9 +101,8 @@ std::vector<std::string> ScenarioEvaluator::objectives() const {
   return names;
 }
 
-ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint64_t seed) const {
-  ScenarioRun run;
-  run.values = decode(space_, unit_point);
+std::optional<SimulationSetup> ScenarioEvaluator::set_up(ScenarioRun& run, std::uint64_t seed,
+                                                         Diagnostics& diagnostics) const {
   run.map = fixed_map_;
   if (!run.map) {
     try {
@@ -111,23 +110,46 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
           load_scenario_map(scenario_.map, search_path_, run.values));
     } catch (const MapError& error) {
       run.infeasible = error.what();
-      return run;
+      return std::nullopt;
     }
   }
-  Diagnostics diagnostics;
-  const std::optional<SimulationSetup> setup =
+  std::optional<SimulationSetup> setup =
       prepare_simulation(scenario_, run.values, *run.map, seed, diagnostics);
-  if (!setup) {
-    run.infeasible = first_error(file_, diagnostics);
-    return run;
-  }
+  if (!setup) run.infeasible = first_error(file_, diagnostics);
+  return setup;
+}
+
+Diagnostics ScenarioEvaluator::setup_warnings(std::span<const double> unit_point) const {
+  ScenarioRun run;
+  run.values = decode(space_, unit_point);
+  Diagnostics diagnostics;
+  (void)set_up(run, 0, diagnostics);
+  Diagnostics warnings;
+  for (const Diagnostic& diagnostic : diagnostics.all())
+    if (diagnostic.severity == Severity::warning)
+      warnings.warning(diagnostic.location, diagnostic.message);
+  return warnings;
+}
+
+ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint64_t seed) const {
+  ScenarioRun run;
+  run.values = decode(space_, unit_point);
+  Diagnostics diagnostics;
+  const std::optional<SimulationSetup> setup = set_up(run, seed, diagnostics);
+  if (!setup) return run;
   if (std::optional<std::string> overlap = initial_overlap(*setup)) {
     run.infeasible = *overlap;
     return run;
   }
   SimulationOptions options = simulation_;
   options.seed = seed;
-  run.trace = simulate(*run.map, *setup, options);
+  try {
+    run.trace = simulate(*run.map, *setup, options);
+  } catch (const std::exception& error) {
+    // One point the simulation cannot run costs that evaluation, not the search and its output.
+    run.failure = std::string("the simulation failed: ") + error.what();
+    return run;
+  }
   if (run.trace->end == EndReason::ego_failure) {
     // A trace cut short by the driver under test says nothing about its specs.
     run.failure = ego_failure_reason(*run.trace);

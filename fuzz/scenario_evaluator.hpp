@@ -16,6 +16,7 @@
 #include "oracle/judge.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/map/road_map.hpp"
+#include "physics/simulation/scenario_setup.hpp"
 #include "physics/simulation/simulation.hpp"
 #include "sampler/parameter_space.hpp"
 
@@ -47,9 +48,17 @@ class ScenarioEvaluator : public Evaluator {
   // The same evaluation, keeping everything it produced.
   ScenarioRun run(std::span<const double> unit_point, std::uint64_t seed) const;
 
+  // The warnings setting the scenario up at `unit_point` gives (an ego far from every lane),
+  // for showing once before a search; the evaluations themselves keep none.
+  Diagnostics setup_warnings(std::span<const double> unit_point) const;
+
   const ParameterSpace& space() const { return space_; }
 
  private:
+  // The map and the setup at run.values; nullopt with run.infeasible set when they fail.
+  std::optional<SimulationSetup> set_up(ScenarioRun& run, std::uint64_t seed,
+                                        Diagnostics& diagnostics) const;
+
   const SourceFile& file_;
   const ScenarioTemplate& scenario_;
   ParameterSpace space_;
