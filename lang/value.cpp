@@ -1,9 +1,10 @@
 #include "lang/value.hpp"
 
-#include <cassert>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "lang/demand.hpp"
 
 namespace scenfuzz {
 
@@ -36,7 +37,7 @@ double apply(ValueOp op, double a, double b) {
     case ValueOp::constant:
     case ValueOp::parameter: break;
   }
-  assert(false && "not an arithmetic operator");
+  SCENFUZZ_DEMAND(false && "not an arithmetic operator");
   return 0.0;
 }
 
@@ -68,8 +69,8 @@ double evaluate(const Value& value, std::span<const double> parameter_values) {
   switch (value.op) {
     case ValueOp::constant: return value.constant;
     case ValueOp::parameter:
-      assert(value.parameter >= 0 &&
-             static_cast<std::size_t>(value.parameter) < parameter_values.size());
+      SCENFUZZ_DEMAND(value.parameter >= 0 &&
+                      static_cast<std::size_t>(value.parameter) < parameter_values.size());
       return parameter_values[static_cast<std::size_t>(value.parameter)];
     case ValueOp::negate: return -evaluate(value.operands[0], parameter_values);
     default:

@@ -1,12 +1,12 @@
 #include "oracle/robustness.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
 #include <utility>
 
+#include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/value.hpp"
 
@@ -329,7 +329,7 @@ class Evaluator {
   Operand leaf(const SpecTerm& t) {
     if (!source_.leaf) throw OracleError(t.location, "no signal source for '" + t.name + "'");
     SignalValues values = source_.leaf(t);
-    assert(values.values.size() == size());
+    SCENFUZZ_DEMAND(values.values.size() == size());
     return {std::move(values.values), 0, false, values.discrete};
   }
 

@@ -1,12 +1,12 @@
 // Prints a template as AVUnit: canonically (every actor and spec written out, ranges inline), or
 // concretely in the user's own layout (only the ranges of the original file replaced).
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <map>
 #include <set>
 
 #include "lang/avunit/avunit.hpp"
+#include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/walk_values.hpp"
 
@@ -443,7 +443,7 @@ std::string print(const ScenarioTemplate& scenario) { return Printer(scenario).r
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
                            std::span<const double> parameter_values) {
   // Parameters sharing one span are a coordinate offset `range(a, b) & (c, d)`: x then y.
-  assert(parameter_values.size() == scenario.parameters.size());
+  SCENFUZZ_DEMAND(parameter_values.size() == scenario.parameters.size());
   std::map<std::uint32_t, std::vector<std::size_t>> by_offset;
   for (std::size_t i = 0; i < scenario.parameters.size(); ++i)
     by_offset[scenario.parameters[i].location.offset].push_back(i);

@@ -1,8 +1,8 @@
 // A concrete scenario written back as WMG SDL level 2: every range's text replaced by its value.
-#include <cassert>
 #include <cmath>
 #include <map>
 
+#include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/wmg/detect_level.hpp"
 #include "lang/wmg/printer_parts.hpp"
@@ -54,7 +54,7 @@ std::string replace_ranges(std::string text, const std::string& heading,
 
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
                            std::span<const double> parameter_values) {
-  assert(parameter_values.size() == scenario.parameters.size());
+  SCENFUZZ_DEMAND(parameter_values.size() == scenario.parameters.size());
   if (detect_wmg_level(file) == 2)
     return replace_ranges(file.text(),
                           "# concrete scenario of " + file.path() + " chosen by scenfuzz:\n",
