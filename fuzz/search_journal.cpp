@@ -209,13 +209,13 @@ std::optional<std::vector<EvaluationRecord>> SearchJournal::read(const fs::path&
   return records;
 }
 
-std::string append_durably(const fs::path& path, const std::string& text) {
+std::string append_to_file(const fs::path& path, const std::string& text) {
   const int descriptor = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
   if (descriptor < 0) return "cannot write '" + path.string() + "': " + std::strerror(errno);
   const char* data = text.data();
   std::size_t left = text.size();
   std::string failure;
-  while (left > 0 && failure.empty()) {
+  while (left > 0) {
     const ssize_t written = ::write(descriptor, data, left);
     if (written < 0 && errno == EINTR) continue;
     if (written < 0) {
@@ -225,8 +225,15 @@ std::string append_durably(const fs::path& path, const std::string& text) {
     data += written;
     left -= static_cast<std::size_t>(written);
   }
-  if (failure.empty() && ::fsync(descriptor) != 0) failure = std::strerror(errno);
-  ::close(descriptor);
+  if (::close(descriptor) != 0 && failure.empty()) failure = std::strerror(errno);
+  return failure.empty() ? "" : "cannot write '" + path.string() + "': " + failure;
+}
+
+std::string sync_file(const fs::path& path) {
+  const int descriptor = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  std::string failure;
+  if (descriptor < 0 || ::fsync(descriptor) != 0) failure = std::strerror(errno);
+  if (descriptor >= 0) ::close(descriptor);
   return failure.empty() ? "" : "cannot write '" + path.string() + "': " + failure;
 }
 

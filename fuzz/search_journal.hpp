@@ -1,7 +1,7 @@
-// evaluations.csv is the search's journal: one row per evaluation, appended and flushed to disk
-// batch by batch, with every number written exactly (shortest round-trip) so that a killed search
-// can be replayed from it (--resume) to the very state it had. This file knows the columns,
-// writes rows and reads them back.
+// evaluations.csv is the search's journal: one row per evaluation, appended batch by batch, with
+// every number written exactly (shortest round-trip) so that a killed search can be replayed from
+// it (--resume) to the very state it had. This file knows the columns, writes rows and reads them
+// back.
 //
 // Columns: evaluation, seed, target, status (judged / failed / infeasible), kind (an ego
 // failure's finding kind, else empty), every parameter by name, the point in the unit cube
@@ -42,8 +42,12 @@ class SearchJournal {
   std::string header_;
 };
 
-// Appends `text` to the file at `path` and flushes it to disk (fsync). Returns an error message
-// naming the file, empty on success.
-std::string append_durably(const std::filesystem::path& path, const std::string& text);
+// Appends `text` to the file at `path` with one write: once it returns, a kill of the process
+// cannot lose it (a power cut can, until sync_file). Returns an error message naming the file,
+// empty on success.
+std::string append_to_file(const std::filesystem::path& path, const std::string& text);
+
+// Flushes the file at `path` to disk (fsync). An error message naming the file, or empty.
+std::string sync_file(const std::filesystem::path& path);
 
 }  // namespace scenfuzz

@@ -1,5 +1,6 @@
 #include "fuzz/search_outputs.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -249,24 +250,39 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
 
 std::string SearchOutputs::end_batch(const SearchSummary& search, const FindingLog& log) {
   if (!batch_rows_.empty()) {
-    std::string failure = append_durably(dir_ / "evaluations.csv", batch_rows_);
-    if (!failure.empty()) return failure;
+    if (std::string failure = append_to_file(dir_ / "evaluations.csv", batch_rows_);
+        !failure.empty())
+      return failure;
     batch_rows_.clear();
   }
-  return write_file_atomically(dir_ / "summary.json", summary(search, log, false).dump(2) + "\n");
+  // The GA's descents make batches of one or two simulations: the summary (with an fsync of the
+  // journal before it) follows every new finding at once, and otherwise every second.
+  const bool new_findings = log.findings().size() != findings_in_summary_;
+  if (!new_findings && Clock::now() - last_summary_ < std::chrono::seconds(1)) return {};
+  return write_summary(search, log, false, "");
 }
 
 std::string SearchOutputs::finish(const SearchSummary& search, const FindingLog& log,
                                   const std::string& error) {
   std::string failure;
   if (!batch_rows_.empty()) {
-    failure = append_durably(dir_ / "evaluations.csv", batch_rows_);
+    failure = append_to_file(dir_ / "evaluations.csv", batch_rows_);
     if (failure.empty()) batch_rows_.clear();
   }
-  std::string summary_failure = write_file_atomically(
-      dir_ / "summary.json",
-      summary(search, log, true, error.empty() ? failure : error).dump(2) + "\n");
+  std::string summary_failure = write_summary(search, log, true, error.empty() ? failure : error);
   return failure.empty() ? summary_failure : failure;
+}
+
+std::string SearchOutputs::write_summary(const SearchSummary& search, const FindingLog& log,
+                                         bool complete, const std::string& error) {
+  // The journal reaches the disk before a summary that counts its rows.
+  std::string failure = sync_file(dir_ / "evaluations.csv");
+  const std::string written = write_file_atomically(
+      dir_ / "summary.json",
+      summary(search, log, complete, error.empty() ? failure : error).dump(2) + "\n");
+  last_summary_ = Clock::now();
+  findings_in_summary_ = log.findings().size();
+  return failure.empty() ? written : failure;
 }
 
 std::string SearchOutputs::why_nothing_judged(const SearchSummary& search) const {

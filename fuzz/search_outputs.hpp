@@ -1,10 +1,12 @@
 // What a search writes into its output folder, so that what is on disk is consistent at every
 // moment, even after kill -9: search.json (what is searched, once), evaluations.csv (the
-// journal, appended and flushed batch by batch), findings/NNN-<name>.<ext> with their trace and
-// picture (the scenario file last, so that its presence means the finding is whole), and
-// summary.json (rewritten atomically after every batch, and once more when the search ends).
+// journal, appended batch by batch), findings/NNN-<name>.<ext> with their trace and picture (the
+// scenario file last, so that its presence means the finding is whole), and summary.json
+// (rewritten atomically after a batch with a new finding or a second after the last time, the
+// journal flushed to disk first, and once more when the search ends).
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -44,8 +46,8 @@ class SearchOutputs {
   // written).
   std::string write_finding(const Finding& finding, std::string& failure, bool& fatal);
 
-  // Makes the batch durable: appends its rows to the journal, then rewrites summary.json. An
-  // error message naming the file when it cannot.
+  // Appends the batch's rows to the journal, then rewrites summary.json when it is due. An error
+  // message naming the file when it cannot.
   std::string end_batch(const SearchSummary& search, const FindingLog& log);
 
   // The final summary.json; `error` (a failed write) is recorded as the reason of stop "error".
@@ -64,6 +66,8 @@ class SearchOutputs {
 
  private:
   std::filesystem::path finding_path(const Finding& finding, const std::string& extension) const;
+  std::string write_summary(const SearchSummary& search, const FindingLog& log, bool complete,
+                            const std::string& error);
   std::string finding_header(const Finding& finding, const ScenarioRun& run,
                              const std::filesystem::path& scenario_path) const;
 
@@ -81,6 +85,9 @@ class SearchOutputs {
   std::string first_infeasible_;
   std::string first_failure_;
   std::size_t ego_failures_ = 0;
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point last_summary_ = Clock::now();
+  std::size_t findings_in_summary_ = 0;
 };
 
 // "001", "012", "1234": finding numbers in file names.
