@@ -14,6 +14,7 @@
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/socket.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,26 +69,32 @@ int milliseconds_until(Clock::time_point deadline) {
 }
 
 enum class Transfer { complete, closed, timed_out };
+enum class Wait { ready, child_ended, timed_out };
 
-// Waits until `fd` is ready for `events` or the deadline passes. POLLHUP/POLLERR count as
-// ready: the following read or write then reports the closed peer.
-bool wait_ready(int fd, short events, Clock::time_point deadline) {
+// Waits until `fd` is ready for `events`, the child has ended (`child_fd`, a pidfd, is readable;
+// -1 is not watched) or the deadline passes. POLLHUP/POLLERR count as ready: the following read
+// or write then reports the closed peer. The child's end is watched besides the socket because
+// a process the plugin forked keeps the socket open after the plugin itself has died. Data the
+// child sent before it ended is already in the socket, so the socket is looked at first.
+Wait wait_ready(int fd, short events, int child_fd, Clock::time_point deadline) {
   for (;;) {
-    pollfd entry{fd, events, 0};
-    const int ready = poll(&entry, 1, milliseconds_until(deadline));
-    if (ready > 0) return true;
+    pollfd entries[2] = {{fd, events, 0}, {child_fd, POLLIN, 0}};
+    const int ready = poll(entries, 2, milliseconds_until(deadline));
+    if (ready > 0) return entries[0].revents != 0 ? Wait::ready : Wait::child_ended;
     if (ready == 0) {
-      if (Clock::now() >= deadline) return false;
+      if (Clock::now() >= deadline) return Wait::timed_out;
       continue;
     }
-    if (errno != EINTR) return true;  // let the read or write report the error
+    if (errno != EINTR) return Wait::ready;  // let the read or write report the error
   }
 }
 
-Transfer send_all(int fd, const void* data, size_t size, Clock::time_point deadline) {
+Transfer send_all(int fd, int child_fd, const void* data, size_t size, Clock::time_point deadline) {
   const auto* bytes = static_cast<const char*>(data);
   while (size > 0) {
-    if (!wait_ready(fd, POLLOUT, deadline)) return Transfer::timed_out;
+    const Wait wait = wait_ready(fd, POLLOUT, child_fd, deadline);
+    if (wait == Wait::timed_out) return Transfer::timed_out;
+    if (wait == Wait::child_ended) return Transfer::closed;
     const ssize_t sent = send(fd, bytes, size, MSG_NOSIGNAL | MSG_DONTWAIT);
     if (sent < 0) {
       if (errno == EINTR || errno == EAGAIN || errno == EWOULDBLOCK) continue;
@@ -99,10 +106,12 @@ Transfer send_all(int fd, const void* data, size_t size, Clock::time_point deadl
   return Transfer::complete;
 }
 
-Transfer receive_all(int fd, void* data, size_t size, Clock::time_point deadline) {
+Transfer receive_all(int fd, int child_fd, void* data, size_t size, Clock::time_point deadline) {
   auto* bytes = static_cast<char*>(data);
   while (size > 0) {
-    if (!wait_ready(fd, POLLIN, deadline)) return Transfer::timed_out;
+    const Wait wait = wait_ready(fd, POLLIN, child_fd, deadline);
+    if (wait == Wait::timed_out) return Transfer::timed_out;
+    if (wait == Wait::child_ended) return Transfer::closed;
     const ssize_t received = recv(fd, bytes, size, MSG_DONTWAIT);
     if (received < 0) {
       if (errno == EINTR || errno == EAGAIN || errno == EWOULDBLOCK) continue;
@@ -115,43 +124,11 @@ Transfer receive_all(int fd, void* data, size_t size, Clock::time_point deadline
   return Transfer::complete;
 }
 
-// Reaps `child`, waiting for it to exit until `deadline` and killing it after that. Returns
-// the wait status.
-int reap(pid_t child, Clock::time_point deadline) {
-  int status = 0;
-  for (;;) {
-    const pid_t reaped = waitpid(child, &status, WNOHANG);
-    if (reaped == child) return status;
-    if (reaped < 0 && errno != EINTR) return 0;  // not our child any more: nothing to reap
-    if (reaped == 0 && Clock::now() >= deadline) break;
-    const timespec pause{0, 1'000'000};
-    nanosleep(&pause, nullptr);
-  }
-  kill(child, SIGKILL);
-  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
-  }
-  return status;
-}
-
+// "SIGSEGV"; "signal 40" for one glibc has no abbreviation for (real-time signals).
 std::string signal_name(int number) {
-  switch (number) {
-    case SIGSEGV: return "SIGSEGV";
-    case SIGBUS: return "SIGBUS";
-    case SIGFPE: return "SIGFPE";
-    case SIGILL: return "SIGILL";
-    case SIGABRT: return "SIGABRT";
-    case SIGTRAP: return "SIGTRAP";
-    case SIGSYS: return "SIGSYS";
-    case SIGKILL: return "SIGKILL";
-    case SIGTERM: return "SIGTERM";
-    case SIGINT: return "SIGINT";
-    case SIGHUP: return "SIGHUP";
-    case SIGQUIT: return "SIGQUIT";
-    case SIGPIPE: return "SIGPIPE";
-    case SIGXCPU: return "SIGXCPU";
-    case SIGXFSZ: return "SIGXFSZ";
-    default: return "signal " + std::to_string(number);
-  }
+  const char* abbreviation = sigabbrev_np(number);
+  if (abbreviation == nullptr) return "signal " + std::to_string(number);
+  return std::string("SIG") + abbreviation;
 }
 
 // "2", "0.3": seconds as people write them.
@@ -226,6 +203,9 @@ void isolate_child(int socket_fd, pid_t parent) {
 
 [[noreturn]] void run_child(int socket_fd, pid_t parent, const char* library,
                             const scenfuzz_ego_config& config) {
+  // Before any plugin code runs, so that every process it forks joins the group the parent
+  // kills at the end (the parent sets it too, whichever of the two runs first).
+  setpgid(0, 0);
   isolate_child(socket_fd, parent);
 
   StartReply start{};
@@ -293,14 +273,17 @@ PluginDriver::PluginDriver(const PluginOptions& options, const scenfuzz_ego_conf
   if (!(options.step_timeout > 0) || !(options.start_timeout > 0)) {
     throw std::invalid_argument("ego plugin: the step and start timeouts must be positive");
   }
+  // The start limit counts from the call: starting the process is part of starting the plugin.
+  const auto deadline = deadline_after(options.start_timeout);
   scenfuzz_ego_config child_config = config;
   child_config.abi_version = SCENFUZZ_EGO_ABI_VERSION;
   const std::string path = library_to_open(options.library);
 
   int ends[2];
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) {
-    throw EgoPluginError("ego plugin '" + library_ +
-                         "': cannot create a socket: " + std::strerror(errno));
+    throw EgoPluginError(
+        EgoFailureKind::error,
+        "ego plugin '" + library_ + "': cannot create a socket: " + std::strerror(errno), 0);
   }
   const pid_t parent = getpid();
   flockfile(stdout);
@@ -318,24 +301,31 @@ PluginDriver::PluginDriver(const PluginOptions& options, const scenfuzz_ego_conf
   close(ends[1]);
   if (child < 0) {
     close(ends[0]);
-    throw EgoPluginError("ego plugin '" + library_ +
-                         "': cannot start a process: " + std::strerror(fork_error));
+    throw EgoPluginError(
+        EgoFailureKind::error,
+        "ego plugin '" + library_ + "': cannot start a process: " + std::strerror(fork_error), 0);
   }
+  setpgid(child, child);  // as the child does: whichever runs first, the group exists at once
   child_ = child;
   socket_ = ends[0];
+  // The system call, not glibc's wrapper, whose header lacks extern "C" in glibc 2.36. -1 before
+  // Linux 5.3: a death is then seen by the socket alone.
+  child_fd_ = static_cast<int>(syscall(SYS_pidfd_open, child, 0));
 
   StartReply start{};
-  const Transfer received =
-      receive_all(socket_, &start, sizeof start, deadline_after(options.start_timeout));
+  const Transfer received = receive_all(socket_, child_fd_, &start, sizeof start, deadline);
   if (received == Transfer::timed_out) {
-    shut_down();
-    throw EgoPluginError("ego plugin '" + library_ + "' did not start within " +
-                         seconds_text(options.start_timeout) + " s (killed)");
+    end_group();
+    close_descriptors();
+    throw EgoPluginError(EgoFailureKind::hang,
+                         "ego plugin '" + library_ + "' did not start within " +
+                             seconds_text(options.start_timeout) + " s (killed)",
+                         0);
   }
   if (received == Transfer::closed) {
-    const std::string message = describe_death("while starting");
-    shut_down();
-    throw EgoPluginError(message);
+    const EgoPluginError error = describe_death("while starting");
+    close_descriptors();
+    throw error;
   }
   start.detail[sizeof start.detail - 1] = '\0';
   std::string problem;
@@ -353,7 +343,7 @@ PluginDriver::PluginDriver(const PluginOptions& options, const scenfuzz_ego_conf
   }
   if (problem.empty()) problem = "ego plugin '" + library_ + "' sent a malformed start reply";
   shut_down();
-  throw EgoPluginError(problem);
+  throw EgoPluginError(EgoFailureKind::error, problem, 0);
 }
 
 PluginDriver::~PluginDriver() { shut_down(); }
@@ -363,6 +353,7 @@ PluginDriver::PluginDriver(PluginDriver&& other) noexcept
       step_timeout_(other.step_timeout_),
       child_(std::exchange(other.child_, -1)),
       socket_(std::exchange(other.socket_, -1)),
+      child_fd_(std::exchange(other.child_fd_, -1)),
       steps_(other.steps_),
       failure_(std::move(other.failure_)) {}
 
@@ -373,6 +364,7 @@ PluginDriver& PluginDriver::operator=(PluginDriver&& other) noexcept {
     step_timeout_ = other.step_timeout_;
     child_ = std::exchange(other.child_, -1);
     socket_ = std::exchange(other.socket_, -1);
+    child_fd_ = std::exchange(other.child_fd_, -1);
     steps_ = other.steps_;
     failure_ = std::move(other.failure_);
   }
@@ -380,76 +372,133 @@ PluginDriver& PluginDriver::operator=(PluginDriver&& other) noexcept {
 }
 
 scenfuzz_control PluginDriver::step(const scenfuzz_observation& observation) {
-  if (!failure_.empty()) throw EgoPluginError(failure_);
+  if (failure_) throw *failure_;
   // Not an assert: a stray waitpid(-1) would reap some other part of scenfuzz's children.
   if (child_ <= 0) throw std::logic_error("PluginDriver::step on a moved-from driver");
   assert(observation.object_count <= SCENFUZZ_MAX_OBJECTS);
   assert(observation.route_point_count <= SCENFUZZ_ROUTE_POINTS);
+  const auto deadline = deadline_after(step_timeout_);
   ++steps_;
   const std::string when =
       "at step " + std::to_string(steps_) + " (t = " + seconds_text(observation.ego.time) + " s)";
 
-  const auto deadline = deadline_after(step_timeout_);
-  Transfer transfer = send_all(socket_, &observation, sizeof observation, deadline);
+  Transfer transfer = send_all(socket_, child_fd_, &observation, sizeof observation, deadline);
   StepReply reply{};
   if (transfer == Transfer::complete) {
-    transfer = receive_all(socket_, &reply, sizeof reply, deadline);
+    transfer = receive_all(socket_, child_fd_, &reply, sizeof reply, deadline);
   }
   if (transfer == Transfer::timed_out) {
-    kill(child_, SIGKILL);
-    shut_down();
-    fail("ego plugin '" + library_ + "' did not answer within " + seconds_text(step_timeout_) +
-         " s " + when + " (killed)");
+    end_group();
+    close_descriptors();
+    fail({EgoFailureKind::hang,
+          "ego plugin '" + library_ + "' did not answer within " + seconds_text(step_timeout_) +
+              " s " + when + " (killed)",
+          steps_});
   }
   if (transfer == Transfer::closed) {
-    const std::string message = describe_death(when);
-    shut_down();
-    fail(message);
+    const EgoPluginError error = describe_death(when);
+    close_descriptors();
+    fail(error);
   }
   if (reply.status != 0) {
-    fail("ego plugin '" + library_ + "' returned error " + std::to_string(reply.status) + " " +
-         when);
+    fail({EgoFailureKind::error,
+          "ego plugin '" + library_ + "' returned error " + std::to_string(reply.status) + " " +
+              when,
+          steps_});
   }
   if (!std::isfinite(reply.control.acceleration) || !std::isfinite(reply.control.steering_angle)) {
-    fail("ego plugin '" + library_ + "' returned a non-finite control (acceleration " +
-         seconds_text(reply.control.acceleration) + ", steering angle " +
-         seconds_text(reply.control.steering_angle) + ") " + when);
+    fail({EgoFailureKind::error,
+          "ego plugin '" + library_ + "' returned a non-finite control (acceleration " +
+              seconds_text(reply.control.acceleration) + ", steering angle " +
+              seconds_text(reply.control.steering_angle) + ") " + when,
+          steps_});
   }
   return reply.control;
 }
 
-void PluginDriver::fail(const std::string& what) {
-  failure_ = what;
-  throw EgoPluginError(what);
+void PluginDriver::fail(const EgoPluginError& error) {
+  failure_ = error;
+  throw error;
 }
 
-std::string PluginDriver::describe_death(const std::string& when) {
-  const int status = reap(child_, deadline_after(step_timeout_));
-  child_ = -1;
+EgoPluginError PluginDriver::describe_death(const std::string& when) {
+  // The socket closes a moment before the process is gone; a child that closed it and lives
+  // on is killed after step_timeout (and reported as killed).
+  await_exit(step_timeout_);
+  const int status = end_group();
   std::string how;
+  std::string signal;
   if (WIFSIGNALED(status)) {
-    how = "crashed (" + signal_name(WTERMSIG(status)) + ")";
+    signal = signal_name(WTERMSIG(status));
+    how = "crashed (" + signal + ")";
   } else if (WIFEXITED(status)) {
     how = "exited with status " + std::to_string(WEXITSTATUS(status));
   } else {
     how = "stopped answering";
   }
-  return "ego plugin '" + library_ + "' " + how + " " + when;
+  return {EgoFailureKind::crash, "ego plugin '" + library_ + "' " + how + " " + when, steps_,
+          signal};
+}
+
+bool PluginDriver::await_exit(double seconds) const {
+  if (child_ <= 0) return true;
+  const auto deadline = deadline_after(seconds);
+  if (child_fd_ >= 0) {
+    for (;;) {
+      pollfd entry{child_fd_, POLLIN, 0};
+      const int ready = poll(&entry, 1, milliseconds_until(deadline));
+      if (ready > 0) return true;
+      if (ready == 0 && Clock::now() >= deadline) return false;
+      if (ready < 0 && errno != EINTR) break;  // fall back to asking waitid
+    }
+  }
+  for (;;) {
+    siginfo_t info{};
+    // WNOWAIT: the child stays unreaped, so its process group id cannot be reused before
+    // end_group has killed the group.
+    if (waitid(P_PID, static_cast<id_t>(child_), &info, WEXITED | WNOHANG | WNOWAIT) != 0) {
+      if (errno == EINTR) continue;
+      return true;  // not our child: nothing to wait for
+    }
+    if (info.si_pid == child_) return true;
+    if (Clock::now() >= deadline) return false;
+    const timespec pause{0, 1'000'000};
+    nanosleep(&pause, nullptr);
+  }
+}
+
+int PluginDriver::end_group() noexcept {
+  if (child_ <= 0) return 0;
+  // The child is not reaped yet, so the group's id is still its own. Killing the child by its
+  // id too covers a group that setpgid could not make.
+  kill(-child_, SIGKILL);
+  kill(child_, SIGKILL);
+  int status = 0;
+  while (waitpid(child_, &status, 0) < 0 && errno == EINTR) {
+  }
+  child_ = -1;
+  return status;
 }
 
 void PluginDriver::shut_down() noexcept {
   if (child_ > 0) {
-    // End of file tells the child to call destroy and exit; its end of file tells us it has.
-    const auto deadline = deadline_after(step_timeout_);
+    // End of file tells the child to call destroy and exit. Its exit is what is waited for,
+    // not the socket's end of file: a process the plugin forked may hold the socket open.
     shutdown(socket_, SHUT_WR);
-    char ignored;
-    receive_all(socket_, &ignored, 1, deadline);
-    reap(child_, deadline);
-    child_ = -1;
+    await_exit(step_timeout_);
+    end_group();
   }
+  close_descriptors();
+}
+
+void PluginDriver::close_descriptors() noexcept {
   if (socket_ >= 0) {
     close(socket_);
     socket_ = -1;
+  }
+  if (child_fd_ >= 0) {
+    close(child_fd_);
+    child_fd_ = -1;
   }
 }
 

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "physics/collision/collision_world.hpp"
+#include "physics/ego/observation_json.hpp"
 #include "physics/ego/plugin_driver.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/manoeuvre_driver.hpp"
@@ -92,6 +93,16 @@ void end_with(Trace& trace, EndReason reason, TraceEventKind kind, double time,
   trace.events.push_back({kind, time, -1, std::move(message)});
 }
 
+// The run ends because the plugin failed: the event, and what a finding about it needs.
+// `last_observation` is what the failing step was handed; null when the plugin failed to start.
+void end_with_ego_failure(Trace& trace, const EgoPluginError& error, double time,
+                          const scenfuzz_observation* last_observation) {
+  end_with(trace, EndReason::ego_failure, TraceEventKind::ego_failure, time, error.what());
+  trace.ego_failure = EgoFailure{
+      error.kind(), error.what(), error.signal(),
+      error.step(), time,         last_observation ? observation_json(*last_observation) : ""};
+}
+
 }  // namespace
 
 Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options) {
@@ -167,10 +178,11 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   std::optional<PluginDriver> plugin;
   if (!options.ego_plugin.empty()) {
     try {
-      plugin.emplace(PluginOptions{options.ego_plugin, options.plugin_step_timeout},
+      plugin.emplace(PluginOptions{options.ego_plugin, options.plugin_step_timeout,
+                                   options.plugin_start_timeout},
                      plugin_config(setup, dt, options.seed));
     } catch (const EgoPluginError& error) {
-      end_with(trace, EndReason::ego_failure, TraceEventKind::ego_failure, 0, error.what());
+      end_with_ego_failure(trace, error, 0, nullptr);
       return trace;
     }
   }
@@ -273,7 +285,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
         scenfuzz_control answer = plugin->step(observation);
         control = {answer.acceleration, answer.steering_angle};
       } catch (const EgoPluginError& error) {
-        end_with(trace, EndReason::ego_failure, TraceEventKind::ego_failure, t, error.what());
+        end_with_ego_failure(trace, error, t, &observation);
         break;
       }
     } else {

@@ -246,6 +246,9 @@ TEST(PluginDriver, ReportsACrashWithSignalAndStepAndTheNextDriverStillWorks) {
   } catch (const EgoPluginError& error) {
     EXPECT_THAT(error.what(), HasSubstr("'" + library + "'"));
     EXPECT_THAT(error.what(), HasSubstr("crashed (SIGSEGV) at step 3"));
+    EXPECT_EQ(error.kind(), EgoFailureKind::crash);
+    EXPECT_EQ(error.signal(), "SIGSEGV");
+    EXPECT_EQ(error.step(), 3);
   }
   EXPECT_TRUE(reaped(child));
   EXPECT_THROW(driver.step(observation), EgoPluginError);  // spent
@@ -265,6 +268,9 @@ TEST(PluginDriver, KillsAPluginThatDoesNotAnswerInTime) {
   } catch (const EgoPluginError& error) {
     EXPECT_THAT(error.what(), HasSubstr("'" + library + "' did not answer within 0.3 s at step 1"));
     EXPECT_THAT(error.what(), HasSubstr("(killed)"));
+    EXPECT_EQ(error.kind(), EgoFailureKind::hang);
+    EXPECT_EQ(error.signal(), "") << "killed by the host, not by a signal of its own";
+    EXPECT_EQ(error.step(), 1);
   }
   EXPECT_TRUE(reaped(child));
   EXPECT_EQ(driver.child_process(), -1);
@@ -279,6 +285,16 @@ TEST(PluginDriver, ReportsTheErrorCodeAPluginReturns) {
     FAIL() << "the error went unnoticed";
   } catch (const EgoPluginError& error) {
     EXPECT_THAT(error.what(), HasSubstr("'" + library + "' returned error 7 at step 2"));
+    EXPECT_EQ(error.kind(), EgoFailureKind::error);
+    EXPECT_EQ(error.step(), 2);
+  }
+  try {
+    driver.step(open_road(0));
+    FAIL() << "a spent driver answered";
+  } catch (const EgoPluginError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("returned error 7 at step 2")) << "the same error again";
+    EXPECT_EQ(error.kind(), EgoFailureKind::error);
+    EXPECT_EQ(error.step(), 2);
   }
 }
 
@@ -289,6 +305,8 @@ TEST(PluginDriver, NamesTheLibraryAndTheSymbolItLacks) {
     FAIL() << "a plugin without scenfuzz_ego_step was accepted";
   } catch (const EgoPluginError& error) {
     EXPECT_THAT(error.what(), HasSubstr("'" + library + "' lacks symbol scenfuzz_ego_step"));
+    EXPECT_EQ(error.kind(), EgoFailureKind::error);
+    EXPECT_EQ(error.step(), 0);
   }
 }
 
@@ -300,6 +318,8 @@ TEST(PluginDriver, NamesALibraryThatCannotBeLoaded) {
   } catch (const EgoPluginError& error) {
     EXPECT_THAT(error.what(), HasSubstr("cannot load ego plugin '" + library + "'"));
     EXPECT_THAT(error.what(), HasSubstr("No such file"));
+    EXPECT_EQ(error.kind(), EgoFailureKind::error);
+    EXPECT_EQ(error.step(), 0);
   }
 }
 
