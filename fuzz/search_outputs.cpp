@@ -143,7 +143,8 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
                " simulated; " + origin;
     header += "\n" + comment + origin + "\n";
     if (failure && !failure->last_observation.empty())
-      header += comment + "last observation: " + one_line(failure->last_observation) + "\n";
+      header += comment + "last observation handed to the plugin: " +
+                finding_path(finding, ".observation.json").string() + "\n";
   } else {
     const SpecVerdict& verdict = run.verdicts[finding.objective];
     header += "spec " + finding.objective_name + " violated, robustness " +
@@ -182,6 +183,9 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
     files.emplace_back(finding_path(finding, ".csv"), trace_csv(*run.trace, lane_ids));
     files.emplace_back(finding_path(finding, ".svg"), render_trace_svg(*run.map, *run.trace));
   }
+  if (finding.ego_failure() && !run.trace->ego_failure->last_observation.empty())
+    files.emplace_back(finding_path(finding, ".observation.json"),
+                       run.trace->ego_failure->last_observation + "\n");
   files.emplace_back(scenario_path, finding_header(finding, run, scenario_path) +
                                         print_concrete_scenario(file_, scenario_, run.values));
   for (const auto& [path, content] : files) {
