@@ -84,23 +84,23 @@ Quote quote_at(std::string_view text, std::size_t i, std::size_t& width) {
   return Quote::none;
 }
 
+}  // namespace
+
 class Lexer : private TextCursor {
  public:
   Lexer(const SourceFile& file, Diagnostics& diagnostics)
       : TextCursor(file.text()), diagnostics_(diagnostics) {}
 
-  std::vector<Token> run() {
-    std::vector<Token> tokens;
+  Token next_token() {
     while (true) {
       skip_space_and_comments();
       if (at_end()) break;
-      if (std::optional<Token> token = next()) tokens.push_back(std::move(*token));
+      if (std::optional<Token> token = next()) return std::move(*token);
     }
     Token end;
     end.kind = TokenKind::end_of_file;
     end.location = here();
-    tokens.push_back(end);
-    return tokens;
+    return end;
   }
 
  private:
@@ -298,10 +298,20 @@ class Lexer : private TextCursor {
   Diagnostics& diagnostics_;
 };
 
-}  // namespace
+TokenReader::TokenReader(const SourceFile& file, Diagnostics& diagnostics)
+    : lexer_(std::make_unique<Lexer>(file, diagnostics)) {}
+
+TokenReader::~TokenReader() = default;
+
+Token TokenReader::next() { return lexer_->next_token(); }
 
 std::vector<Token> tokenize(const SourceFile& file, Diagnostics& diagnostics) {
-  return Lexer(file, diagnostics).run();
+  TokenReader reader(file, diagnostics);
+  std::vector<Token> tokens;
+  do {
+    tokens.push_back(reader.next());
+  } while (tokens.back().kind != TokenKind::end_of_file);
+  return tokens;
 }
 
 }  // namespace scenfuzz::avunit
