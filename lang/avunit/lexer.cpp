@@ -110,7 +110,7 @@ class Lexer : private TextCursor {
       if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
         advance();
       } else if ((c == '/' && peek(1) == '/') || c == '#') {
-        while (!at_end() && peek() != '\n') advance();
+        while (!at_end() && !at_line_break()) advance();
       } else if (c == '/' && peek(1) == '*') {
         SourceLocation start = here();
         advance(2);
@@ -212,7 +212,7 @@ class Lexer : private TextCursor {
     Quote open = quote_at(text_, pos_, width);
     advance(width);
     std::size_t content_begin = pos_;
-    while (!at_end() && peek() != '\n') {
+    while (!at_end() && !at_line_break()) {
       std::size_t close_width = 0;
       if (quote_at(text_, pos_, close_width) == open) {
         Token token = make(TokenKind::string, start);
