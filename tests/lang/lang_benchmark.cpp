@@ -62,7 +62,8 @@ void reset_peak_resident() {
 }
 
 // What `scenfuzz check` does with a file it has read: parse, elaborate, format the diagnostics.
-void check(benchmark::State& state, const std::string& text) {
+// `broken`: the file is meant to have errors.
+void check(benchmark::State& state, const std::string& text, bool broken = false) {
   double peak = 0.0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -72,8 +73,8 @@ void check(benchmark::State& state, const std::string& text) {
     avunit::ParseResult parsed = avunit::parse(file);
     std::string messages = format_diagnostics(file, parsed.diagnostics);
     benchmark::DoNotOptimize(messages);
-    if (!parsed.ok() || !parsed.scenario.has_scenario) {
-      state.SkipWithError(("the generated file does not check:\n" + messages).c_str());
+    if (broken ? parsed.ok() : !parsed.ok() || !parsed.scenario.has_scenario) {
+      state.SkipWithError(("the generated file is not as meant:\n" + messages).c_str());
       return;
     }
     state.PauseTiming();
@@ -92,6 +93,19 @@ void BM_CheckBigAvunit(benchmark::State& state) {
   check(state, text);
 }
 BENCHMARK(BM_CheckBigAvunit)->Arg(400000)->Unit(benchmark::kMillisecond);
+
+// The same with as many misspelt names as are reported (Diagnostics::kErrorLimit): each is
+// weighed against every defined name for a "did you mean" suggestion.
+void BM_CheckBigAvunitWithErrors(benchmark::State& state) {
+  static const std::string text = [&] {
+    std::string broken = big_avunit(static_cast<std::size_t>(state.range(0)));
+    for (std::size_t i = 0; i < Diagnostics::kErrorLimit; ++i)
+      broken += "e" + std::to_string(i) + " = a12" + std::to_string(i) + "x;\n";
+    return broken;
+  }();
+  check(state, text, true);
+}
+BENCHMARK(BM_CheckBigAvunitWithErrors)->Arg(400000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace scenfuzz
