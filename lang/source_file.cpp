@@ -5,23 +5,26 @@
 #include <fstream>
 #include <sstream>
 
+#include "lang/line_break.hpp"
+
 namespace scenfuzz {
 
 SourceFile::SourceFile(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)) {
+  // LF, CRLF and a lone CR each end a line, as they do for the lexers' line numbers.
+  std::string_view all(text_);
   line_starts_.push_back(0);
-  for (std::size_t i = 0; i < text_.size(); ++i)
-    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  for (std::size_t i = find_line_break(all, 0); i < all.size();
+       i = find_line_break(all, line_starts_.back())) {
+    line_starts_.push_back(i + line_break_width(all, i));
+  }
 }
 
 std::string_view SourceFile::line_text(std::uint32_t line) const {
   if (line == 0 || line > line_starts_.size()) return {};
-  std::size_t begin = line_starts_[line - 1];
-  std::size_t end = line < line_starts_.size() ? line_starts_[line] - 1 : text_.size();
   std::string_view text(text_);
-  std::string_view result = text.substr(begin, end - begin);
-  if (!result.empty() && result.back() == '\r') result.remove_suffix(1);
-  return result;
+  std::size_t begin = line_starts_[line - 1];
+  return text.substr(begin, find_line_break(text, begin) - begin);
 }
 
 std::optional<SourceFile> read_source_file(const std::string& path) {

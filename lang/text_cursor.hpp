@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "lang/line_break.hpp"
 #include "lang/source_location.hpp"
 
 namespace scenfuzz {
@@ -25,9 +26,13 @@ class TextCursor {
 
   SourceLocation here() const { return {line_, column_, static_cast<std::uint32_t>(pos_), 0}; }
 
+  // At LF, CR or CRLF: what ends a line, whatever the file's line endings.
+  bool at_line_break() const { return !at_end() && is_line_break_byte(text_[pos_]); }
+
+  // Moves past one character; a CRLF line break is one character.
   void advance() {
-    if (text_[pos_] == '\n') {
-      ++pos_;
+    if (std::size_t width = line_break_width(text_, pos_)) {
+      pos_ += width;
       ++line_;
       column_ = 1;
       return;
@@ -37,6 +42,7 @@ class TextCursor {
     if (pos_ >= text_.size() || !is_continuation_byte(text_[pos_])) ++column_;
   }
 
+  // Moves past n characters (none of the callers spans a line break, so n is also bytes).
   void advance(std::size_t n) {
     for (std::size_t i = 0; i < n && !at_end(); ++i) advance();
   }

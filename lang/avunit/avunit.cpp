@@ -17,11 +17,15 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 ParseResult parse(const SourceFile& file) {
   ParseResult result;
-  std::vector<Token> tokens = tokenize(file, result.diagnostics);
-  std::vector<Statement> statements = parse_statements(tokens, result.diagnostics);
   SourceLanguage language =
       ends_with(file.path(), ".scenest") ? SourceLanguage::scenest : SourceLanguage::avunit;
-  result.scenario = elaborate(statements, language, result.diagnostics);
+  // Each statement is elaborated as soon as it is parsed, and its tokens and syntax then let go:
+  // memory grows with what the file's names are bound to, not with its text.
+  TokenReader reader(file, result.diagnostics);
+  StatementElaborator elaborator(language, result.diagnostics);
+  parse_statements(reader, result.diagnostics,
+                   [&](const Statement& statement) { elaborator.add(statement); });
+  result.scenario = elaborator.finish();
   return result;
 }
 

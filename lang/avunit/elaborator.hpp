@@ -3,6 +3,7 @@
 // the executed scenario and its specifications, and names each parameter by where it sits.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -12,8 +13,24 @@
 
 namespace scenfuzz::avunit {
 
-ScenarioTemplate elaborate(const std::vector<Statement>& statements, SourceLanguage language,
-                           Diagnostics& diagnostics);
+class Elaborator;
+
+// Elaborates statements one at a time, as the parser gives them, so that a big file's syntax
+// trees need not all be held at once: only what its names are bound to.
+class StatementElaborator {
+ public:
+  StatementElaborator(SourceLanguage language, Diagnostics& diagnostics);
+  ~StatementElaborator();
+  StatementElaborator(const StatementElaborator&) = delete;
+  StatementElaborator& operator=(const StatementElaborator&) = delete;
+
+  void add(const Statement& statement);
+  // The template of all the statements added.
+  ScenarioTemplate finish();
+
+ private:
+  std::unique_ptr<Elaborator> elaborator_;
+};
 
 // A lone formula: AVUnit's formula syntax where a name that is neither a built-in nor defined is
 // a signal of that name (dotted names too: `ego.speed`), and such a signal alone is a flag.

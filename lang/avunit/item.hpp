@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "lang/boxed.hpp"
 #include "lang/scenario.hpp"
 
 namespace scenfuzz::avunit {
@@ -61,17 +62,35 @@ struct Projection {
   bool complete = false;
 };
 
+// Each alternative is boxed: an actor takes 2 KB and a position 500 bytes, while a file of many
+// small assignments holds hundreds of thousands of items, most with no payload at all (numbers,
+// strings, tuples). A box allocates only the size of what it holds.
+using ItemPayload =
+    std::variant<std::monostate, Boxed<Position>, Boxed<Heading>, Boxed<State>, Boxed<Motion>,
+                 Boxed<ActorType>, Boxed<Shape>, Boxed<Actor>, Boxed<Obstacle>, Boxed<Environment>,
+                 Boxed<MapReference>, Boxed<std::shared_ptr<const ScenarioParts>>,
+                 Boxed<Projection>, Boxed<SpecTerm>, Boxed<Formula>, Boxed<IntersectionControl>,
+                 Boxed<SpeedLimit>>;
+
 struct Item {
   ItemKind kind = ItemKind::error;
   SourceLocation location;
   std::string word;
   Value value;  // number, time
   std::vector<Item> elements;
-  std::variant<std::monostate, Position, Heading, State, Motion, ActorType, Shape, Actor, Obstacle,
-               Environment, MapReference, std::shared_ptr<const ScenarioParts>, Projection,
-               SpecTerm, Formula, IntersectionControl, SpeedLimit>
-      payload;
+  ItemPayload payload;
 };
+
+// The payload of an item of the kind that carries a T (throws std::bad_variant_access otherwise,
+// a programmer bug).
+template <class T>
+T& payload_of(Item& item) {
+  return *std::get<Boxed<T>>(item.payload);
+}
+template <class T>
+const T& payload_of(const Item& item) {
+  return *std::get<Boxed<T>>(item.payload);
+}
 
 // How an item is named in messages: "a number", "a tuple of 3 elements", "vehicle 'npc1'".
 std::string describe(const Item& item);

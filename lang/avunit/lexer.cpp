@@ -84,23 +84,23 @@ Quote quote_at(std::string_view text, std::size_t i, std::size_t& width) {
   return Quote::none;
 }
 
+}  // namespace
+
 class Lexer : private TextCursor {
  public:
   Lexer(const SourceFile& file, Diagnostics& diagnostics)
       : TextCursor(file.text()), diagnostics_(diagnostics) {}
 
-  std::vector<Token> run() {
-    std::vector<Token> tokens;
+  Token next_token() {
     while (true) {
       skip_space_and_comments();
       if (at_end()) break;
-      if (std::optional<Token> token = next()) tokens.push_back(std::move(*token));
+      if (std::optional<Token> token = next()) return std::move(*token);
     }
     Token end;
     end.kind = TokenKind::end_of_file;
     end.location = here();
-    tokens.push_back(end);
-    return tokens;
+    return end;
   }
 
  private:
@@ -110,7 +110,7 @@ class Lexer : private TextCursor {
       if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
         advance();
       } else if ((c == '/' && peek(1) == '/') || c == '#') {
-        while (!at_end() && peek() != '\n') advance();
+        while (!at_end() && !at_line_break()) advance();
       } else if (c == '/' && peek(1) == '*') {
         SourceLocation start = here();
         advance(2);
@@ -212,7 +212,7 @@ class Lexer : private TextCursor {
     Quote open = quote_at(text_, pos_, width);
     advance(width);
     std::size_t content_begin = pos_;
-    while (!at_end() && peek() != '\n') {
+    while (!at_end() && !at_line_break()) {
       std::size_t close_width = 0;
       if (quote_at(text_, pos_, close_width) == open) {
         Token token = make(TokenKind::string, start);
@@ -298,10 +298,20 @@ class Lexer : private TextCursor {
   Diagnostics& diagnostics_;
 };
 
-}  // namespace
+TokenReader::TokenReader(const SourceFile& file, Diagnostics& diagnostics)
+    : lexer_(std::make_unique<Lexer>(file, diagnostics)) {}
+
+TokenReader::~TokenReader() = default;
+
+Token TokenReader::next() { return lexer_->next_token(); }
 
 std::vector<Token> tokenize(const SourceFile& file, Diagnostics& diagnostics) {
-  return Lexer(file, diagnostics).run();
+  TokenReader reader(file, diagnostics);
+  std::vector<Token> tokens;
+  do {
+    tokens.push_back(reader.next());
+  } while (tokens.back().kind != TokenKind::end_of_file);
+  return tokens;
 }
 
 }  // namespace scenfuzz::avunit

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "lang/avunit/token_window.hpp"
 
 namespace scenfuzz::avunit {
 
@@ -18,6 +21,13 @@ constexpr int kMaxNesting = 200;
 // bounded too, because everything after the parser walks the tree recursively.
 constexpr int kMaxDepth = 256;
 
+// A window over tokens already read; `tokens` ends with end_of_file and outlives the window.
+TokenWindow window_over(const std::vector<Token>& tokens) {
+  return TokenWindow([&tokens, next = std::size_t{0}]() mutable {
+    return tokens[std::min(next++, tokens.size() - 1)];
+  });
+}
+
 bool is_comparison(TokenKind kind) {
   switch (kind) {
     case TokenKind::less:
@@ -32,8 +42,8 @@ bool is_comparison(TokenKind kind) {
 
 class Parser {
  public:
-  Parser(const std::vector<Token>& tokens, Diagnostics& diagnostics)
-      : tokens_(tokens), diagnostics_(diagnostics) {}
+  Parser(TokenWindow tokens, Diagnostics& diagnostics)
+      : tokens_(std::move(tokens)), diagnostics_(diagnostics) {}
 
   // A whole input that is one expression (a formula given on the command line).
   std::optional<Syntax> lone_expression() {
@@ -48,45 +58,42 @@ class Parser {
     }
   }
 
-  std::vector<Statement> run() {
-    std::vector<Statement> statements;
+  void run(const std::function<void(Statement)>& each) {
     while (!at(TokenKind::end_of_file) && !diagnostics_.too_many_errors()) {
       if (at(TokenKind::semicolon)) {
         ++pos_;  // an empty statement, e.g. the `;` LawBreaker files leave after a `}`
         continue;
       }
       std::size_t start = pos_;
+      // Nothing before the previous token is looked at again.
+      tokens_.forget_before(start > 0 ? start - 1 : 0);
       nesting_ = 0;
       partial_ = Statement{};
       try {
-        statements.push_back(statement());
+        each(statement());
       } catch (const SyntaxError&) {
         // The name is still bound, to an error, so that its uses stay silent.
         if (!partial_.name.empty() && partial_.kind != StatementKind::assertion) {
           partial_.value.kind = SyntaxKind::error;
-          statements.push_back(partial_);
+          each(partial_);
         }
         recover(start);
       }
     }
-    return statements;
   }
 
  private:
-  const Token& peek(std::size_t ahead = 0) const {
-    std::size_t i = pos_ + ahead;
-    return i < tokens_.size() ? tokens_[i] : tokens_.back();
-  }
-  bool at(TokenKind kind) const { return peek().kind == kind; }
-  bool at_word(const char* word, std::size_t ahead = 0) const {
+  const Token& peek(std::size_t ahead = 0) { return tokens_.at(pos_ + ahead); }
+  bool at(TokenKind kind) { return peek().kind == kind; }
+  bool at_word(const char* word, std::size_t ahead = 0) {
     return peek(ahead).kind == TokenKind::identifier && peek(ahead).text == word;
   }
   const Token& take() {
     const Token& token = peek();
-    if (pos_ < tokens_.size() - 1) ++pos_;
+    if (token.kind != TokenKind::end_of_file) ++pos_;
     return token;
   }
-  const Token& previous() const { return tokens_[pos_ > 0 ? pos_ - 1 : 0]; }
+  const Token& previous() { return tokens_.at(pos_ > 0 ? pos_ - 1 : 0); }
 
   // A token the lexer could not read has been reported already: failing at it says nothing more.
   [[noreturn]] void fail(SourceLocation where, const std::string& message) {
@@ -96,18 +103,16 @@ class Parser {
 
   // `name =`, `name |=` or `Trace name =` at token i: `=` and `|=` occur nowhere else, so this is
   // certainly where a statement starts.
-  bool statement_starts_at(std::size_t i) const {
-    auto kind = [&](std::size_t k) {
-      return k < tokens_.size() ? tokens_[k].kind : TokenKind::end_of_file;
-    };
+  bool statement_starts_at(std::size_t i) {
+    auto kind = [&](std::size_t k) { return tokens_.at(k).kind; };
     if (kind(i) != TokenKind::identifier) return false;
     if (kind(i + 1) == TokenKind::assign || kind(i + 1) == TokenKind::satisfies) return true;
-    return tokens_[i].text == "Trace" && kind(i + 1) == TokenKind::identifier &&
+    return tokens_.at(i).text == "Trace" && kind(i + 1) == TokenKind::identifier &&
            kind(i + 2) == TokenKind::assign;
   }
 
   // Just after the previous token: where a missing `;` or `)` belongs.
-  SourceLocation after_previous() const {
+  SourceLocation after_previous() {
     const Token& token = previous();
     SourceLocation where = token.location;
     std::uint32_t characters = 0;
@@ -146,8 +151,9 @@ class Parser {
   void recover(std::size_t start) {
     std::size_t error_at = pos_;
     std::vector<bool> braces;  // open braces; true for those of CreateScenario
-    for (std::size_t i = start; i < tokens_.size(); ++i) {
-      TokenKind kind = tokens_[i].kind;
+    // The end_of_file token ends the loop.
+    for (std::size_t i = start;; ++i) {
+      TokenKind kind = tokens_.at(i).kind;
       bool in_scenario = std::find(braces.begin(), braces.end(), true) != braces.end();
       if (kind == TokenKind::end_of_file ||
           (i > start && i >= error_at && statement_starts_at(i))) {
@@ -155,15 +161,14 @@ class Parser {
         return;
       }
       if (kind == TokenKind::left_brace)
-        braces.push_back(i > 0 && tokens_[i - 1].kind == TokenKind::identifier &&
-                         tokens_[i - 1].text == "CreateScenario");
+        braces.push_back(i > 0 && tokens_.at(i - 1).kind == TokenKind::identifier &&
+                         tokens_.at(i - 1).text == "CreateScenario");
       if (kind == TokenKind::right_brace && !braces.empty()) braces.pop_back();
       if (kind == TokenKind::semicolon && !in_scenario && i >= error_at) {
         pos_ = i + 1;
         return;
       }
     }
-    pos_ = tokens_.size() - 1;
   }
 
   Statement statement() {
@@ -528,7 +533,7 @@ class Parser {
         // `(x)` groups; `(x,)` and `(x, y)` are tuples.
         node.parenthesised = single && node.children.size() == 1 &&
                              previous().kind == TokenKind::right_paren &&
-                             tokens_[pos_ - 2].kind != TokenKind::comma;
+                             tokens_.at(pos_ - 2).kind != TokenKind::comma;
         node.location = span(token.location, previous().location);
         return deepen(node);
       }
@@ -568,7 +573,7 @@ class Parser {
     return deepen(node);
   }
 
-  const std::vector<Token>& tokens_;
+  TokenWindow tokens_;
   Diagnostics& diagnostics_;
   std::size_t pos_ = 0;
   int nesting_ = 0;
@@ -577,14 +582,14 @@ class Parser {
 
 }  // namespace
 
-std::vector<Statement> parse_statements(const std::vector<Token>& tokens,
-                                        Diagnostics& diagnostics) {
-  return Parser(tokens, diagnostics).run();
+void parse_statements(TokenReader& reader, Diagnostics& diagnostics,
+                      const std::function<void(Statement)>& each) {
+  Parser(TokenWindow([&reader] { return reader.next(); }), diagnostics).run(each);
 }
 
 std::optional<Syntax> parse_lone_expression(const std::vector<Token>& tokens,
                                             Diagnostics& diagnostics) {
-  return Parser(tokens, diagnostics).lone_expression();
+  return Parser(window_over(tokens), diagnostics).lone_expression();
 }
 
 }  // namespace scenfuzz::avunit

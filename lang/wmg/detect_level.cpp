@@ -1,6 +1,9 @@
 #include "lang/wmg/detect_level.hpp"
 
+#include <algorithm>
 #include <string_view>
+
+#include "lang/line_break.hpp"
 
 namespace scenfuzz::wmg {
 
@@ -33,10 +36,9 @@ int detect_wmg_level(const SourceFile& file) {
   std::string_view text = file.text();
   std::size_t start = 0;
   while (start <= text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
+    std::size_t end = find_line_break(text, start);
     if (starts_with_scenery_elements(text.substr(start, end - start))) return 2;
-    start = end + 1;
+    start = end + std::max<std::size_t>(line_break_width(text, end), 1);
   }
   return 1;
 }

@@ -92,7 +92,7 @@ class Lexer : private TextCursor {
       if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
         advance();
       } else if (c == '#') {
-        while (!at_end() && peek() != '\n') advance();
+        while (!at_end() && !at_line_break()) advance();
       } else if (static_cast<unsigned char>(c) == 0xEF && peek(1) == '\xBB' && peek(2) == '\xBF') {
         advance(3);  // UTF-8 byte order mark
       } else {
@@ -172,7 +172,7 @@ class Lexer : private TextCursor {
     SourceLocation start = here();
     advance(single_quote_width(text_, pos_));
     std::size_t content_begin = pos_;
-    while (!at_end() && peek() != '\n') {
+    while (!at_end() && !at_line_break()) {
       std::size_t close_width = single_quote_width(text_, pos_);
       if (close_width > 0) {
         std::string contents(text_.substr(content_begin, pos_ - content_begin));
@@ -194,7 +194,7 @@ class Lexer : private TextCursor {
   Token double_quoted_string() {
     SourceLocation start = here();
     advance();
-    while (!at_end() && peek() != '\n' && peek() != '"') advance();
+    while (!at_end() && !at_line_break() && peek() != '"') advance();
     if (!at_end() && peek() == '"') advance();
     return invalid(start, "strings are written in single quotes: 'text'");
   }
