@@ -14,6 +14,8 @@
 #include "physics/map/scenario_position.hpp"
 #include "physics/planning/path_planner.hpp"
 #include "physics/simulation/relative_position.hpp"
+#include "physics/simulation/scenario_checks.hpp"
+#include "physics/simulation/simulation_limits.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -36,7 +38,8 @@ struct Context {
   std::optional<MapPose> ego_pose;
   std::unordered_map<std::string, double> initial_headings;  // by actor name
   std::unordered_map<std::string, MapPose> initial_poses;    // by actor name
-  std::string actor;  // the actor being prepared, for messages
+  std::string actor;        // the actor being prepared, for messages
+  bool pedestrian = false;  // whether it is one, for the bound on its speeds
   double duration = kDefaultDuration;
 };
 
@@ -98,7 +101,7 @@ std::optional<MapPose> with_heading(Context& context, const State& state, MapPos
 }
 
 // A state's pose: its position, and its heading (the lane's direction when it gives none).
-std::optional<MapPose> place_state(Context& context, const State& state) {
+std::optional<MapPose> place_state_unchecked(Context& context, const State& state) {
   if (state.position.kind == PositionKind::relative) {
     const Position& position = state.position;
     auto reference = context.initial_poses.find(position.reference);
@@ -138,15 +141,22 @@ std::optional<MapPose> place_state(Context& context, const State& state) {
   return with_heading(context, state, pose);
 }
 
+// As place_state_unchecked, and the position lies on some map: absurd coordinates (1e300 from a
+// careless range) are an error here, not a non-finite pose in the collision world later.
+std::optional<MapPose> place_state(Context& context, const State& state) {
+  auto pose = place_state_unchecked(context, state);
+  if (pose && !check_position(pose->position, state.position.location, context.diagnostics))
+    return std::nullopt;
+  return pose;
+}
+
 // A speed the scenario gives, checked; `fallback` when it gives none.
 std::optional<double> speed_of(Context& context, const State& state, double fallback) {
   if (!state.speed) return fallback;
   double speed = evaluate(*state.speed, context.values);
-  if (!std::isfinite(speed) || speed < 0) {
-    context.diagnostics.error(state.speed->location,
-                              "a speed must be a finite number >= 0, not " + format_number(speed));
+  if (!check_speed(speed, context.pedestrian, context.actor, state.speed->location,
+                   context.diagnostics))
     return std::nullopt;
-  }
   return speed;
 }
 
@@ -334,6 +344,12 @@ std::optional<ManoeuvreScript> manoeuvre_script(Context& context, const Actor& a
         ok = false;
         continue;
       }
+      if (parameter.name == "speed" &&
+          !check_speed(value, context.pedestrian, actor.name, where(parameter.location, location),
+                       context.diagnostics)) {
+        ok = false;
+        continue;
+      }
       *slot = value;
     }
     bool turn = choice->primitive == MotionPrimitive::turn_left ||
@@ -415,6 +431,7 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
                           : actor.kind == ActorKind::cyclist ? ActorCategory::bicycle
                                                              : ActorCategory::car);
   context.actor = actor.name;
+  context.pedestrian = pedestrian;
   auto start = place_state(context, actor.initial);
   if (!start) return std::nullopt;
   context.initial_headings[actor.name] = start->heading;
@@ -556,12 +573,13 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
                                                   const RoadMap& map, std::uint64_t seed,
                                                   Diagnostics& diagnostics) {
   std::size_t errors_before = diagnostics.error_count();
-  Context context{scenario,     values, map, seed, diagnostics,
-                  std::nullopt, {},     {},  {},   kDefaultDuration};
+  Context context{scenario, values, map, seed,  diagnostics,     std::nullopt,
+                  {},       {},     {},  false, kDefaultDuration};
   SimulationSetup setup;
   if (scenario.duration) {
     double duration = evaluate(*scenario.duration, values);
-    if (std::isfinite(duration) && duration > 0) context.duration = duration;
+    if (!check_duration(duration, scenario.duration->location, diagnostics)) return std::nullopt;
+    if (duration > 0) context.duration = duration;
   }
   setup.duration = context.duration;
 
@@ -571,6 +589,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   context.actor = setup.ego_name;
   auto ego_pose = place_state(context, ego.initial);
   if (!ego_pose) return std::nullopt;
+  warn_if_far_from_lanes(map, ego_pose->position, ego.initial.position.location, diagnostics);
   context.ego_pose = ego_pose;
   context.initial_headings[setup.ego_name] = ego_pose->heading;
   context.initial_poses[setup.ego_name] = *ego_pose;
@@ -591,12 +610,20 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
                                                   "target");
       return std::nullopt;
     }
+    if (route->length < kMinimumEgoRoute) {
+      report_empty_ego_route(map, ego_pose->position, target->position, ego.target->location,
+                             diagnostics);
+      return std::nullopt;
+    }
     setup.ego_route = defer_lane_changes(map, std::move(*route), kLaneChangePreparation);
   } else {
     auto lane = project_to_lane(map, ego_pose->position, ego_pose->heading);
     if (lane)
       setup.ego_route = route_ahead(map, LanePosition{lane->lane, lane->s, 0},
                                     setup.ego_body.max_speed * context.duration + kPathEndMargin);
+    // At the end of a lane that leads nowhere (or off the map beyond one) the ego has no lanes
+    // ahead: it drives without a route, as off the lanes.
+    if (setup.ego_route.length < kMinimumEgoRoute) setup.ego_route = {};
   }
 
   // Obstacles first: vehicles' paths are planned around them.

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 #include "physics/collision/collision_world.hpp"
@@ -18,6 +19,7 @@
 #include "physics/simulation/manoeuvre_driver.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
 #include "physics/simulation/plugin_observation.hpp"
+#include "physics/simulation/simulation_limits.hpp"
 #include "physics/simulation/traffic_signals.hpp"
 
 namespace scenfuzz {
@@ -107,6 +109,11 @@ void end_with_ego_failure(Trace& trace, const EgoPluginError& error, double time
 
 Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options) {
   const double dt = options.dt;
+  const double duration = options.duration.value_or(setup.duration);
+  // Before anything is allocated or started: 1e9 s would otherwise end in bad_alloc. Callers
+  // check options with the same function and report them as bad input.
+  if (auto problem = sample_count_problem(duration, dt))
+    throw std::invalid_argument("simulate: " + *problem);
   Trace trace;
   trace.map_name = map.name();
   trace.seed = options.seed;
@@ -187,7 +194,6 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     }
   }
 
-  const double duration = options.duration.value_or(setup.duration);
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
   reserve_samples(trace, last_step + 1);
   std::set<std::pair<BodyId, BodyId>> collided;

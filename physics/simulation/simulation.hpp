@@ -25,9 +25,11 @@ struct SimulationOptions {
   std::string ego_plugin;          // a shared library to drive the ego; empty: the reference driver
   double plugin_step_timeout = 2;  // s of wall time a plugin may take for one step
   double plugin_start_timeout = 10;  // s of wall time for loading a plugin and its create
-  double target_reach = 2;         // m: the ego has reached its target within this distance
+  double target_reach = 2;           // m: the ego has reached its target within this distance
 };
 
+// Throws std::invalid_argument when the duration and dt take more samples than a trace may hold
+// (sample_count_problem in simulation_limits.hpp says so beforehand).
 Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options);
 
 }  // namespace scenfuzz
