@@ -37,8 +37,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   app.footer(
       "Without a subcommand, scenfuzz searches FILE's parameter ranges for points that violate "
       "its specs and writes every finding into --out. Exit status: 0 success (no finding), 1 "
-      "findings (a specification is violated, also for run and stl), 2 a bad command line or a "
-      "scenario, map or trace file that cannot be read or has errors.");
+      "findings (a specification is violated, also for run and stl; for run also an ego plugin "
+      "that crashed, hung or failed), 2 a bad command line (an option's value out of its "
+      "bounds among them) or a scenario, map or trace file that cannot be read or has errors.");
 
   FuzzCommandOptions fuzz_options;
   app.add_option("FILE", fuzz_options.path,
