@@ -3,14 +3,24 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "fuzz/commands.hpp"
+#include "fuzz/options.hpp"
 
 namespace scenfuzz {
 
 namespace {
+
+// The checks of several simulation options together, which CLI11 cannot make one option at a time.
+bool simulation_options_valid(const SimulationCommandOptions& options, std::ostream& err) {
+  const std::optional<std::string> problem = check_simulation_options(options);
+  if (problem)
+    err << "scenfuzz: error: " << *problem << "\nRun with --help for more information.\n";
+  return !problem;
+}
 
 int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App app{
@@ -27,50 +37,15 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   app.footer(
       "Without a subcommand, scenfuzz searches FILE's parameter ranges for points that violate "
       "its specs and writes every finding into --out. Exit status: 0 success (no finding), 1 "
-      "findings (a specification is violated, also for run and stl), 2 a bad command line or a "
-      "scenario, map or trace file that cannot be read or has errors.");
+      "findings (a specification is violated, also for run and stl; for run also an ego plugin "
+      "that crashed, hung or failed), 2 a bad command line (an option's value out of its "
+      "bounds among them) or a scenario, map or trace file that cannot be read or has errors.");
 
   FuzzCommandOptions fuzz_options;
   app.add_option("FILE", fuzz_options.path,
                  "Logical scenario to search (AVUnit, scenest or WMG SDL)")
       ->type_name("");
-  app.add_option("--budget", fuzz_options.budget,
-                 "Simulations to spend (default 500); infeasible points are not counted")
-      ->type_name("N");
-  app.add_option("--algo", fuzz_options.algorithm,
-                 "Search: ga (default), random, halton, lhs, or nlopt:NAME (an NLopt algorithm: "
-                 "GN_ISRES, GN_CRS2_LM, GN_ESCH, GN_DIRECT_L, GN_MLSL_LDS, LN_BOBYQA, LN_COBYLA, "
-                 "LN_SBPLX, LN_NELDERMEAD, ...)")
-      ->type_name("NAME");
-  app.add_option("--seed", fuzz_options.seed,
-                 "Seed of every random choice; the same seed gives the same findings for any -j")
-      ->type_name("N");
-  app.add_option("-j,--jobs", fuzz_options.jobs, "Worker threads (default: all cores)")
-      ->type_name("N");
-  app.add_option("--time-limit", fuzz_options.time_limit, "Stop after this many seconds")
-      ->type_name("S");
-  app.add_option("--spec", fuzz_options.specs,
-                 "Target this spec (repeatable); by default every spec shares the budget")
-      ->type_name("NAME")
-      ->allow_extra_args(false);
-  app.add_option("--out", fuzz_options.out_dir,
-                 "Folder for findings/, evaluations.csv and summary.json (default scenfuzz-out)")
-      ->type_name("DIR");
-  app.add_option("--map-path", fuzz_options.simulation.map_paths,
-                 "Folder to search for maps (repeatable; also SCENFUZZ_MAP_PATH)")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
-  app.add_option("--ego-plugin", fuzz_options.simulation.ego_plugin,
-                 "Shared library that drives the ego (docs/ego-plugin.md)")
-      ->type_name("LIB");
-  app.add_option("--duration", fuzz_options.simulation.duration, "Simulated seconds per run")->type_name("S");
-  app.add_option("--dt", fuzz_options.simulation.dt, "Seconds per step (default 0.05)")->type_name("S");
-  app.add_flag("--continue-after-collision", fuzz_options.simulation.continue_after_collision,
-               "Keep simulating after the ego's first collision");
-  app.add_flag("--quiet", fuzz_options.quiet, "No progress and no summary");
-  app.add_flag("--resume", fuzz_options.resume, "Continue the search journalled in --out");
-  app.add_flag("--force", fuzz_options.force, "Replace an earlier search in --out");
-  app.add_flag("--json", fuzz_options.json, "Progress, findings and the summary as JSON lines");
+  add_search_options(&app, fuzz_options);
 
   std::vector<std::string> check_files;
   CLI::App* check = app.add_subcommand(
@@ -117,38 +92,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   run_command->add_option("FILE", run_options.path, "AVUnit, scenest or WMG SDL scenario file")
       ->required()
       ->type_name("");
-  run_command->add_option("--seed", run_options.seed, "Seed of every random draw (default 0)")
-      ->type_name("N");
-  run_command
-      ->add_option("--out", run_options.out_dir, "Folder for the outputs (default scenfuzz-run)")
-      ->type_name("DIR");
-  run_command
-      ->add_option("--at", run_options.at,
-                   "Which point of a logical scenario to simulate: mid (the middle of "
-                   "every range) or random (drawn from --seed)")
-      ->check(CLI::IsMember({"mid", "random"}))
-      ->type_name("mid|random");
-  run_command
-      ->add_option("--map-path", run_options.simulation.map_paths,
-                   "Folder to look for Apollo maps in; repeatable")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
-  run_command
-      ->add_option("--ego-plugin", run_options.simulation.ego_plugin,
-                   "Drive the ego with this shared library (docs/ego-plugin.md) instead of "
-                   "the reference driver")
-      ->type_name("LIB");
-  run_command
-      ->add_option("--duration", run_options.simulation.duration,
-                   "Seconds to simulate (default: the scenario's, else 30)")
-      ->check(CLI::PositiveNumber)
-      ->type_name("S");
-  run_command->add_option("--dt", run_options.simulation.dt, "Seconds per step (default 0.05)")
-      ->check(CLI::Range(0.001, 1.0))
-      ->type_name("S");
-  run_command->add_flag("--continue-after-collision", run_options.simulation.continue_after_collision,
-                        "Keep simulating after the ego's first collision");
-  run_command->add_flag("--json", run_options.json, "Print the summary as JSON");
+  add_run_options(run_command, run_options);
 
   StlCommandOptions stl_options;
   CLI::App* stl = app.add_subcommand(
@@ -208,9 +152,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       ->type_name("");
   bench_falsification->add_option("--seeds", bench_options.seeds, "Runs per algorithm (default 20)")
       ->type_name("N");
-  bench_falsification
-      ->add_option("--budget", bench_options.budget, "Simulations per run (default 500)")
-      ->type_name("N");
+  add_checked_option(bench_falsification, "--budget", bench_options.budget, "N",
+                     within(1, kMaxBudget), "Simulations per run", "500");
   bench_falsification->add_flag(
       "--first-only", bench_options.first_finding_only,
       "Stop each run at its first finding: the same first-finding medians in a fraction of the "
@@ -222,10 +165,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("LIST");
-  bench_falsification
-      ->add_option("-j,--jobs", bench_options.jobs,
-                   "Searches run at once, one thread each (default: all cores)")
-      ->type_name("N");
+  add_checked_option(bench_falsification, "-j,--jobs", bench_options.jobs, "N", within(0, kMaxJobs),
+                     "Searches run at once, one thread each; 0 means all cores", "all cores");
   CLI::App* bench_cc = bench->add_subcommand(
       "cc",
       "ARCH-COMP chasing cars under the competition's protocol: per requirement, runs that stop "
@@ -234,9 +175,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   bench_cc
       ->add_option("--runs", bench_options.runs, "Runs per requirement, seeds 1..N (default 10)")
       ->type_name("N");
-  bench_cc
-      ->add_option("--budget", bench_options.budget, "Simulations per run at most (default 1500)")
-      ->type_name("N");
+  add_checked_option(bench_cc, "--budget", bench_options.budget, "N", within(1, kMaxBudget),
+                     "Simulations per run at most", "1500");
   bench_cc->add_option("--algo", bench_algorithm, "Search algorithm, as for --algo (default ga)")
       ->type_name("NAME");
   bench_cc
@@ -252,8 +192,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
                    "least 5 s apart; default 20, 40 dimensions)")
       ->check(CLI::Range(1, 20))
       ->type_name("N");
-  bench_cc->add_option("-j,--jobs", bench_options.jobs, "Runs at once (default: all cores)")
-      ->type_name("N");
+  add_checked_option(bench_cc, "-j,--jobs", bench_options.jobs, "N", within(0, kMaxJobs),
+                     "Runs at once; 0 means all cores", "all cores");
   CLI::App* bench_parallel = bench->add_subcommand(
       "parallel",
       "Run one search with -j 1 and with -j 2: wall time of each, the speed-up, and whether "
@@ -264,8 +204,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
                    "corpora/avunit/pedestrian_step_out.avu:spec1)")
       ->expected(0, 1)
       ->type_name("");
-  bench_parallel->add_option("--budget", bench_options.budget, "Simulations per run (default 200)")
-      ->type_name("N");
+  add_checked_option(bench_parallel, "--budget", bench_options.budget, "N", within(1, kMaxBudget),
+                     "Simulations per run", "200");
   bench_parallel->add_option("--algo", bench_algorithm, "Search algorithm (default ga)")
       ->type_name("NAME");
 
@@ -279,7 +219,10 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   if (check->parsed()) return run_check(check_files, err);
   if (space->parsed()) return run_space(space_file, space_json, out, err);
   if (map->parsed()) return run_map(map_options, out, err);
-  if (run_command->parsed()) return run_run(run_options, out, err);
+  if (run_command->parsed()) {
+    if (!simulation_options_valid(run_options.simulation, err)) return kExitUsage;
+    return run_run(run_options, out, err);
+  }
   if (stl->parsed()) return run_stl(stl_options, out, err);
   if (convert->parsed()) return run_convert(convert_file, out, err);
   if (bench->parsed()) {
@@ -294,6 +237,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
            "subcommand\nRun with --help for more information.\n";
     return kExitUsage;
   }
+  if (!simulation_options_valid(fuzz_options.simulation, err)) return kExitUsage;
   return run_fuzz(fuzz_options, out, err);
 }
 

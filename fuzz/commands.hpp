@@ -1,6 +1,7 @@
 // The subcommands behind the command line, callable without it (tests, other front ends).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <ostream>
@@ -33,23 +34,17 @@ struct MapCommandOptions {
 // --svg. A map that cannot be found or read gives kExitBadInput with the reason on `err`.
 int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& err);
 
-// The options of every simulation, which `run` and the search share.
+// The options of every simulation, which `run` and the search share. The fields, their defaults
+// and what they mean are declared in fuzz/options.def, with the command-line options.
 struct SimulationCommandOptions {
-  std::vector<std::string> map_paths;  // --map-path, in order
-  std::string ego_plugin;              // --ego-plugin: a shared library driving the ego
-  std::optional<double> duration;      // --duration: overrides the scenario's
-  double dt = 0.05;                    // --dt
-  bool continue_after_collision = false;
-  double ego_step_timeout = 2;    // --ego-step-timeout: s of wall time per plugin step
-  double ego_start_timeout = 10;  // --ego-start-timeout: s for loading the plugin and create
+#define SCENFUZZ_SIMULATION_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
 };
 
 struct RunCommandOptions {
-  std::string path;
-  std::uint64_t seed = 0;                // --seed: perception noise, random walks, --at random
-  std::string out_dir = "scenfuzz-run";  // --out: trace.csv, trace.json, trace.svg, scenario.avu
-  std::string at;                        // --at: "mid" or "random" for a logical scenario
-  bool json = false;                     // --json: the summary as JSON
+  std::string path;  // FILE
+#define SCENFUZZ_RUN_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
   SimulationCommandOptions simulation;
 };
 
@@ -88,18 +83,9 @@ std::optional<ScenarioFile> read_scenario(const std::string& path, const std::st
                                           std::ostream& err);
 
 struct FuzzCommandOptions {
-  std::string path;
-  std::size_t budget = 500;              // --budget: simulations (infeasible points are free)
-  std::string algorithm = "ga";          // --algo
-  std::uint64_t seed = 0;                // --seed
-  std::size_t jobs = 0;                  // -j: worker threads, 0 = all cores
-  double time_limit = 0;                 // --time-limit: seconds, 0 = none
-  std::vector<std::string> specs;        // --spec: the specs to target; none = all
-  std::string out_dir = "scenfuzz-out";  // --out
-  bool resume = false;  // --resume: continue the search journalled in --out
-  bool force = false;   // --force: replace an earlier search in --out
-  bool quiet = false;   // --quiet: no progress, no summary
-  bool json = false;    // --json: JSON lines (progress, findings, summary) on stdout
+  std::string path;  // FILE
+#define SCENFUZZ_SEARCH_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
   SimulationCommandOptions simulation;
 };
 

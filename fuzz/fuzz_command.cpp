@@ -15,6 +15,7 @@
 #include "fuzz/commands.hpp"
 #include "fuzz/findings.hpp"
 #include "fuzz/journal_replay.hpp"
+#include "fuzz/options.hpp"
 #include "fuzz/output_folder.hpp"
 #include "fuzz/progress_report.hpp"
 #include "fuzz/report_format.hpp"
@@ -24,6 +25,7 @@
 #include "fuzz/search_strategy.hpp"
 #include "fuzz/stop_signals.hpp"
 #include "lang/avunit/avunit.hpp"
+#include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/robustness.hpp"
 
@@ -63,10 +65,7 @@ std::optional<ScenarioEvaluator> make_evaluator(const FuzzCommandOptions& option
 // The search's options, or nullopt after a usage error on `err` (an unknown --spec or --algo).
 std::optional<SearchOptions> search_options(const FuzzCommandOptions& options,
                                             const Evaluator& evaluator, std::ostream& err) {
-  if (options.budget == 0) {
-    err << "scenfuzz: error: --budget must be at least 1 simulation\n";
-    return std::nullopt;
-  }
+  SCENFUZZ_DEMAND(options.budget > 0);  // the command line checks it
   const std::vector<std::string> objectives = evaluator.objectives();
   SearchOptions search;
   search.algorithm = options.algorithm;
@@ -93,6 +92,22 @@ std::optional<SearchOptions> search_options(const FuzzCommandOptions& options,
     return std::nullopt;
   }
   return search;
+}
+
+// Checks what setting the scenario up at the centre of its space says: its warnings (an ego far
+// from every lane) are shown once, and its own duration must fit --dt (the command line could not
+// know it). False after an error on `err`.
+bool check_setup(const FuzzCommandOptions& options, const SourceFile& file,
+                 const ScenarioEvaluator& evaluator, std::ostream& err) {
+  const SetupProbe probe =
+      evaluator.probe(std::vector<double>(evaluator.space().dimensions.size(), 0.5));
+  err << format_diagnostics(file, probe.warnings);
+  if (options.simulation.duration || !probe.duration) return true;
+  const std::optional<std::string> problem =
+      check_step_count(*probe.duration, options.simulation.dt,
+                       "the scenario's duration of " + format_number(*probe.duration) + " s");
+  if (problem) err << "scenfuzz: error: " << *problem << "\n";
+  return !problem;
 }
 
 // Locks --out and decides what happens to an earlier search there: resumed (its journal read
@@ -276,9 +291,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
   if (!evaluator) return kExitBadInput;
   std::optional<SearchOptions> search = search_options(options, *evaluator, err);
   if (!search) return kExitUsage;
-  // Warnings that hold for most points (an ego far from every lane), shown once, at the centre.
-  err << format_diagnostics(input->file, evaluator->setup_warnings(std::vector<double>(
-                                             evaluator->space().dimensions.size(), 0.5)));
+  if (!check_setup(options, input->file, *evaluator, err)) return kExitUsage;
 
   OutputFolderLock lock;
   SearchOutputs outputs(options, input->file, input->scenario, *evaluator);

@@ -11,6 +11,8 @@
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
+#include "fuzz/ego_failure_report.hpp"
+#include "fuzz/options.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "lang/number_format.hpp"
@@ -99,8 +101,8 @@ nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
                           {"second_side", std::string(body_side_name(c.second_side))},
                           {"point", {c.point.x, c.point.y}}});
   summary["collisions"] = collisions;
-  for (const TraceEvent& event : trace.events)
-    if (event.kind == TraceEventKind::ego_failure) summary["ego_failure"] = event.message;
+  if (const std::optional<EgoFailureReport> failure = ego_failure_report(trace))
+    summary["ego_failure"] = ego_failure_json(*failure);
   summary["files"] = files;
   return summary;
 }
@@ -123,7 +125,8 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   const std::vector<double> values =
       decode(space, unit_point(space.dimensions.size(), options.at, options.seed));
 
-  std::vector<std::filesystem::path> map_paths(options.simulation.map_paths.begin(), options.simulation.map_paths.end());
+  std::vector<std::filesystem::path> map_paths(options.simulation.map_paths.begin(),
+                                               options.simulation.map_paths.end());
   std::optional<RoadMap> map;
   try {
     map = load_scenario_map(scenario.map, map_search_path(map_paths), values);
@@ -137,6 +140,16 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   err << format_diagnostics(file, diagnostics);
   if (!setup) return kExitBadInput;
 
+  // The scenario's own duration is known only now; too many steps would exhaust memory.
+  if (!options.simulation.duration) {
+    if (const std::optional<std::string> problem = check_step_count(
+            setup->duration, options.simulation.dt,
+            "the scenario's duration of " + format_number(setup->duration) + " s")) {
+      err << "scenfuzz: error: " << *problem << "\n";
+      return kExitUsage;
+    }
+  }
+
   SimulationOptions simulation;
   simulation.seed = options.seed;
   simulation.dt = options.simulation.dt;
@@ -146,22 +159,28 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   simulation.plugin_step_timeout = options.simulation.ego_step_timeout;
   simulation.plugin_start_timeout = options.simulation.ego_start_timeout;
   const Trace trace = simulate(*map, *setup, simulation);
-  if (trace.end == EndReason::ego_failure && trace.sample_count() == 0) {
-    // The plugin did not even start: a bad --ego-plugin, not something the scenario found.
-    err << "scenfuzz: error: " << trace.events.back().message << "\n";
+  const std::optional<EgoFailureReport> ego_failure = ego_failure_report(trace);
+  if (ego_failure && ego_failed_to_start(trace, *ego_failure)) {
+    // The plugin could not be loaded or created: a bad --ego-plugin, not something the scenario
+    // found.
+    err << "scenfuzz: error: " << ego_failure->message << "\n";
     return kExitBadInput;
   }
 
   std::vector<SpecVerdict> verdicts;
-  try {
-    verdicts = judge_trace(scenario, values, trace, *map, file);
-  } catch (const OracleError& error) {
-    Diagnostics oracle_diagnostics;
-    oracle_diagnostics.error(error.location(), error.what());
-    err << format_diagnostics(file, oracle_diagnostics);
-    return kExitBadInput;
+  // A plugin that crashed or hung before the first sample leaves no trace to judge.
+  if (trace.sample_count() > 0) {
+    try {
+      verdicts = judge_trace(scenario, values, trace, *map, file);
+    } catch (const OracleError& error) {
+      Diagnostics oracle_diagnostics;
+      oracle_diagnostics.error(error.location(), error.what());
+      err << format_diagnostics(file, oracle_diagnostics);
+      return kExitBadInput;
+    }
   }
-  bool violated = false;
+  // A failure of the ego under test (a crash, a hang, an error) is a finding like a violated spec.
+  bool violated = ego_failure.has_value();
   for (const SpecVerdict& verdict : verdicts) violated = violated || verdict.violated();
   const int exit_code = violated ? kExitViolated : kExitSuccess;
 
@@ -177,13 +196,14 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     std::vector<std::string> lane_ids;
     for (const Lane& lane : map->lanes()) lane_ids.push_back(lane.id);
     const std::filesystem::path dir = options.out_dir;
-    const std::vector<std::pair<std::string, std::string>> outputs = {
-        {"trace.csv", trace_csv(trace, lane_ids)},
-        {"trace.json", trace_json(trace)},
-        {"trace.svg", render_trace_svg(*map, trace)},
+    std::vector<std::pair<std::string, std::string>> outputs = {
         {"scenario" + concrete_extension(file.path()),
-         print_concrete_scenario(file, scenario, values)},
-    };
+         print_concrete_scenario(file, scenario, values)}};
+    // An ego that failed before the first sample leaves no trace to write.
+    if (trace.sample_count() > 0)
+      outputs.insert(outputs.begin(), {{"trace.csv", trace_csv(trace, lane_ids)},
+                                       {"trace.json", trace_json(trace)},
+                                       {"trace.svg", render_trace_svg(*map, trace)}});
     for (const auto& [name, content] : outputs) {
       std::string failure = write_file_atomically(dir / name, content);
       if (!failure.empty()) {
@@ -212,8 +232,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   if (trace.collisions.empty()) out << "no collision\n";
   out << "ego reached its target: " << (trace.end == EndReason::target_reached ? "yes" : "no")
       << "\n";
-  for (const TraceEvent& event : trace.events)
-    if (event.kind == TraceEventKind::ego_failure) out << "ego failure: " << event.message << "\n";
+  if (ego_failure) out << describe_ego_failure(*ego_failure) << "\n";
   for (const SpecVerdict& verdict : verdicts) out << describe_verdict(file, verdict) << "\n";
   for (const std::string& path : written) out << "wrote " << path << "\n";
   return exit_code;

@@ -119,16 +119,17 @@ std::optional<SimulationSetup> ScenarioEvaluator::set_up(ScenarioRun& run, std::
   return setup;
 }
 
-Diagnostics ScenarioEvaluator::setup_warnings(std::span<const double> unit_point) const {
+SetupProbe ScenarioEvaluator::probe(std::span<const double> unit_point) const {
   ScenarioRun run;
   run.values = decode(space_, unit_point);
   Diagnostics diagnostics;
-  (void)set_up(run, 0, diagnostics);
-  Diagnostics warnings;
+  SetupProbe probe;
+  if (std::optional<SimulationSetup> setup = set_up(run, 0, diagnostics))
+    probe.duration = setup->duration;
   for (const Diagnostic& diagnostic : diagnostics.all())
     if (diagnostic.severity == Severity::warning)
-      warnings.warning(diagnostic.location, diagnostic.message);
-  return warnings;
+      probe.warnings.warning(diagnostic.location, diagnostic.message);
+  return probe;
 }
 
 ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint64_t seed) const {

@@ -32,6 +32,12 @@ struct ScenarioRun {
   std::string failure;     // why it ran but could not be judged
 };
 
+// What setting a scenario up at one point says before any simulation.
+struct SetupProbe {
+  Diagnostics warnings;            // an ego far from every lane, ...; the evaluations keep none
+  std::optional<double> duration;  // the scenario's own, s; none when the point is infeasible
+};
+
 class ScenarioEvaluator : public Evaluator {
  public:
   // `file` and `scenario` must outlive the evaluator. The map is loaded once when it has no
@@ -48,9 +54,8 @@ class ScenarioEvaluator : public Evaluator {
   // The same evaluation, keeping everything it produced.
   ScenarioRun run(std::span<const double> unit_point, std::uint64_t seed) const;
 
-  // The warnings setting the scenario up at `unit_point` gives (an ego far from every lane),
-  // for showing once before a search; the evaluations themselves keep none.
-  Diagnostics setup_warnings(std::span<const double> unit_point) const;
+  // The scenario set up at `unit_point`, for what is checked and shown once before a search.
+  SetupProbe probe(std::span<const double> unit_point) const;
 
   const ParameterSpace& space() const { return space_; }
 

@@ -599,3 +599,190 @@ scenario = CreateScenario{load("straight"); ego; {}; {}; {};};
   EXPECT_NE(run.err.find("bad_lane.avu:1:"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("nowhere"), std::string::npos) << run.err;
 }
+
+// ---- option checks: every bad value is a usage error naming the option, before any work ----
+
+namespace {
+
+struct BadOption {
+  std::vector<std::string> args;
+  std::string option;  // what the message must name
+};
+
+// Options `run` and the search both take.
+const std::vector<BadOption> kBadSharedOptions = {
+    {{"--dt", "0"}, "--dt"},
+    {{"--dt", "-1"}, "--dt"},
+    {{"--dt", "nan"}, "--dt"},
+    {{"--dt", "1.5"}, "--dt"},
+    {{"--duration", "nan"}, "--duration"},
+    {{"--duration", "1e9"}, "--duration"},
+    {{"--duration", "1e300"}, "--duration"},
+    {{"--duration", "0"}, "--duration"},
+    {{"--duration", "inf"}, "--duration"},
+    // Each value is fine on its own; together they are 10,010,000 steps.
+    {{"--duration", "1001", "--dt", "0.0001"}, "--duration"},
+    {{"--ego-step-timeout", "0"}, "--ego-step-timeout"},
+    {{"--ego-step-timeout", "nan"}, "--ego-step-timeout"},
+    {{"--ego-step-timeout", "3601"}, "--ego-step-timeout"},
+    {{"--ego-start-timeout", "-1"}, "--ego-start-timeout"},
+    {{"--ego-start-timeout", "inf"}, "--ego-start-timeout"},
+    {{"--seed", "-1"}, "--seed"},
+    {{"--seed", "18446744073709551616"}, "--seed"},
+};
+
+// The search's own options.
+const std::vector<BadOption> kBadSearchOptions = {
+    {{"--budget", "-1"}, "--budget"},
+    {{"--budget=-1"}, "--budget"},
+    {{"--budget", "18446744073709551616"}, "--budget"},
+    {{"--budget", "0"}, "--budget"},
+    {{"--budget", "1000000001"}, "--budget"},
+    {{"--budget", "2.5"}, "--budget"},
+    {{"-j", "-1"}, "--jobs"},
+    {{"-j", "1000000"}, "--jobs"},
+    {{"--time-limit", "-1"}, "--time-limit"},
+    {{"--time-limit", "nan"}, "--time-limit"},
+    {{"--time-limit", "0"}, "--time-limit"},
+};
+
+// A concrete scenario on the built-in straight road whose spec (keep clear of the wreck) holds
+// for the first seconds whatever drives the ego.
+constexpr const char* kSafeScenario = R"(ego = AV(("east_0"->10), ("east_0"->200));
+wreck = Obstacle("east_0"->150, (box, 4.5, 1.9, 1.5));
+scenario = CreateScenario{load("straight"); ego; {}; {}; {wreck};};
+Trace trace = EXE(scenario);
+trace |= G (dis(trace[ego], trace[truth][wreck]) > 1.0);
+)";
+
+void expect_usage_error(const Outcome& run, const BadOption& bad, const std::string& command) {
+  const std::string what = command + " " + ::testing::PrintToString(bad.args);
+  EXPECT_EQ(run.exit_code, 2) << what << "\n" << run.err;
+  EXPECT_NE(run.err.find("scenfuzz: error: "), std::string::npos) << what << "\n" << run.err;
+  EXPECT_NE(run.err.find(bad.option), std::string::npos) << what << "\n" << run.err;
+  EXPECT_EQ(run.out, "") << what;
+}
+
+}  // namespace
+
+TEST_F(CliRunTest, TheSearchRejectsBadOptionValues) {
+  const std::string scenario = corpus_file("stationary_obstacle_in_lane.avu");
+  std::vector<BadOption> cases = kBadSharedOptions;
+  cases.insert(cases.end(), kBadSearchOptions.begin(), kBadSearchOptions.end());
+  for (const BadOption& bad : cases) {
+    const fs::path out = dir_ / "search";
+    std::vector<std::string> args = bad.args;
+    // Should a value get through, the search is short (an option given twice would be a usage
+    // error of its own, so only the options a case does not give).
+    const std::string given = ::testing::PrintToString(bad.args);
+    if (given.find("--budget") == std::string::npos) args.insert(args.end(), {"--budget", "2"});
+    if (given.find("--time-limit") == std::string::npos)
+      args.insert(args.end(), {"--time-limit", "60"});
+    args.insert(args.end(), {"--out", out.string(), scenario});
+    expect_usage_error(scenfuzz(args), bad, "scenfuzz");
+    EXPECT_FALSE(fs::exists(out)) << "nothing written for " << ::testing::PrintToString(bad.args);
+  }
+}
+
+TEST_F(CliRunTest, RunRejectsBadOptionValues) {
+  const std::string scenario = corpus_file("stationary_obstacle_in_lane.avu");
+  for (const BadOption& bad : kBadSharedOptions) {
+    const fs::path out = dir_ / "run";
+    std::vector<std::string> args = {"run", scenario, "--at", "mid", "--out", out.string()};
+    args.insert(args.end(), bad.args.begin(), bad.args.end());
+    expect_usage_error(scenfuzz(args), bad, "scenfuzz run");
+    EXPECT_FALSE(fs::exists(out)) << "nothing written for " << ::testing::PrintToString(bad.args);
+  }
+}
+
+// The scenario's own duration is checked against --dt once the scenario is read.
+TEST_F(CliRunTest, RunRejectsAStepTooSmallForTheScenariosDuration) {
+  const std::string path = write("safe.avu", kSafeScenario);
+  const Outcome run = scenfuzz({"run", path, "--dt", "1e-300", "--out", (dir_ / "o").string()});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--dt"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("the scenario's duration"), std::string::npos) << run.err;
+}
+
+TEST_F(CliRunTest, BoundaryValuesAreAccepted) {
+  const std::string path = write("safe.avu", kSafeScenario);
+  const Outcome run =
+      scenfuzz({"run", path, "--dt", "1", "--duration", "2", "--seed", "18446744073709551615",
+                "--ego-step-timeout", "3600", "--out", (dir_ / "o").string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json summary = nlohmann::json::parse(run.out);
+  EXPECT_EQ(summary.at("dt"), 1.0);
+  EXPECT_EQ(summary.at("seed"), 18446744073709551615ull);
+}
+
+TEST_F(CliRunTest, HelpStatesEveryBoundAndDefault) {
+  for (const std::vector<std::string>& args :
+       std::vector<std::vector<std::string>>{{"--help"}, {"run", "--help"}}) {
+    const Outcome help = scenfuzz(args);
+    ASSERT_EQ(help.exit_code, 0);
+    for (const char* text :
+         {"--dt S ", "(0 < S <= 1; default 0.05)", "(0 < S <= 43200; default the scenario's",
+          "--ego-step-timeout S", "(0 < S <= 3600; default 2)", "--ego-start-timeout S",
+          "(0 < S <= 3600; default 10)", "--continue-after-collision", "--map-path DIR",
+          "--ego-plugin LIB", "--seed N"})
+      EXPECT_NE(help.out.find(text), std::string::npos) << text << "\n" << help.out;
+  }
+  const Outcome search = scenfuzz({"--help"});
+  for (const char* text : {"(1 <= N <= 1000000000; default 500)", "(0 <= N <= 1024; default all",
+                           "--time-limit S", "(S > 0; default none)", "--resume", "--force"})
+    EXPECT_NE(search.out.find(text), std::string::npos) << text << "\n" << search.out;
+}
+
+#ifdef SCENFUZZ_TEST_PLUGIN_DIR
+
+// A plugin that crashes is a finding: exit 1, with what happened, even though every spec holds.
+TEST_F(CliRunTest, ACrashingEgoPluginIsAFinding) {
+  const std::string path = write("safe.avu", kSafeScenario);
+  const std::string plugin = std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/libcrashing.so";
+  const Outcome run =
+      scenfuzz({"run", path, "--ego-plugin", plugin, "--out", (dir_ / "o").string()});
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_NE(run.out.find("spec spec1: robustness "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(satisfied)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("ended: ego_failure"), std::string::npos) << run.out;
+  // The plugin dereferences NULL on its third step, at 0.1 s.
+  EXPECT_TRUE(std::regex_search(run.out, std::regex("ego failure.*SIGSEGV.*step 3")) &&
+              std::regex_search(run.out, std::regex("ego failure.* t = 0\\.1 s")))
+      << run.out;
+
+  const Outcome json =
+      scenfuzz({"run", path, "--ego-plugin", plugin, "--out", (dir_ / "j").string(), "--json"});
+  EXPECT_EQ(json.exit_code, 1) << json.err;
+  const nlohmann::json failure = nlohmann::json::parse(json.out).at("ego_failure");
+  ASSERT_TRUE(failure.is_object()) << failure;
+  EXPECT_NE(failure.at("reason").get<std::string>().find("SIGSEGV"), std::string::npos);
+  EXPECT_DOUBLE_EQ(failure.at("time").get<double>(), 0.1);
+  // Filled in when the simulation records the kind of failure (Trace::ego_failure).
+  if (!failure.at("kind").is_null()) {
+    EXPECT_EQ(failure.at("kind"), "ego_crash");
+    EXPECT_EQ(failure.at("signal"), "SIGSEGV");
+    EXPECT_EQ(failure.at("step"), 3);
+  }
+}
+
+// --ego-step-timeout reaches the simulation: a plugin that never answers is a hang after it.
+TEST_F(CliRunTest, AHangingEgoPluginIsAFindingAfterTheStepTimeout) {
+  const std::string path = write("safe.avu", kSafeScenario);
+  const std::string plugin = std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/libhanging.so";
+  const Outcome run = scenfuzz({"run", path, "--ego-plugin", plugin, "--ego-step-timeout", "0.2",
+                                "--out", (dir_ / "o").string(), "--json"});
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  const nlohmann::json failure = nlohmann::json::parse(run.out).at("ego_failure");
+  EXPECT_NE(failure.at("reason").get<std::string>().find("0.2 s"), std::string::npos) << failure;
+}
+
+TEST_F(CliRunTest, AnEgoPluginWithoutItsFunctionsIsABadInput) {
+  const std::string not_a_plugin = write("not_a_plugin.so", "not a shared library\n");
+  const Outcome run = scenfuzz({"run", write("safe.avu", kSafeScenario), "--ego-plugin",
+                                not_a_plugin, "--out", (dir_ / "o").string()});
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+  EXPECT_NE(run.err.find("not_a_plugin.so"), std::string::npos) << run.err;
+  EXPECT_EQ(run.out, "");
+}
+
+#endif  // SCENFUZZ_TEST_PLUGIN_DIR

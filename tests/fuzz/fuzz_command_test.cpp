@@ -179,7 +179,14 @@ TEST_F(FuzzCommandTest, BadInputIsAClearErrorWithExitTwo) {
 
   run = fuzz(kCutIn, {"--budget", "0"});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.err.find("--budget must be at least 1"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--budget: expected a whole number from 1 to"), std::string::npos)
+      << run.err;
+
+  // The scenario's own duration at a tiny --dt: too many steps, known only once it is read.
+  run = fuzz(kCutIn, {"--dt", "0.00001"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("the scenario's duration of"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--dt"), std::string::npos) << run.err;
 
   run = fuzz(kCutIn, {"--algo", "simulated_annealing"});
   EXPECT_EQ(run.exit_code, 2);
