@@ -3,9 +3,10 @@
 // AVUnit item is a number far more often than an actor, which takes 2 KB).
 #pragma once
 
-#include <cassert>
 #include <memory>
 #include <utility>
+
+#include "lang/demand.hpp"
 
 namespace scenfuzz {
 
@@ -26,11 +27,11 @@ class Boxed {
   bool has_value() const { return held_ != nullptr; }
   // Reading an empty box is a programmer bug, as reading the wrong alternative of a variant is.
   T& operator*() {
-    assert(held_ && "reading an empty Boxed");
+    SCENFUZZ_DEMAND(held_ && "reading an empty Boxed");
     return *held_;
   }
   const T& operator*() const {
-    assert(held_ && "reading an empty Boxed");
+    SCENFUZZ_DEMAND(held_ && "reading an empty Boxed");
     return *held_;
   }
 

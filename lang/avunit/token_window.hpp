@@ -2,13 +2,13 @@
 // parser has moved past them, so that parsing a big file holds only the statement at hand.
 #pragma once
 
-#include <cassert>
 #include <cstddef>
 #include <deque>
 #include <functional>
 #include <utility>
 
 #include "lang/avunit/token.hpp"
+#include "lang/demand.hpp"
 
 namespace scenfuzz::avunit {
 
@@ -20,7 +20,7 @@ class TokenWindow {
   // The token at absolute index i, reading ahead as needed; past the end, the end_of_file token.
   // References stay valid until forget_before() drops them (a deque keeps its elements in place).
   const Token& at(std::size_t i) {
-    assert(i >= first_ && "reading a token the parser already let go");
+    SCENFUZZ_DEMAND(i >= first_ && "reading a token the parser already let go");
     while (!ended_ && i - first_ >= tokens_.size()) {
       tokens_.push_back(next_());
       ended_ = tokens_.back().kind == TokenKind::end_of_file;

@@ -4,10 +4,11 @@
 #include "physics/actors/actor_class.hpp"
 
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <string>
+
+#include "lang/demand.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -254,7 +255,7 @@ std::span<const ActorClass> actor_classes() { return kActorClasses; }
 
 const ActorClass& actor_class(ActorCategory category) {
   const auto index = static_cast<std::size_t>(category);
-  assert(index < kActorClasses.size());
+  SCENFUZZ_DEMAND(index < kActorClasses.size());
   return kActorClasses[index];
 }
 

@@ -5,9 +5,9 @@
 #include "physics/actors/kinematics.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
+#include "lang/demand.hpp"
 #include "physics/map/map_point.hpp"
 
 namespace scenfuzz {
@@ -53,8 +53,8 @@ void move_along_arc(KinematicState& state, double direction, double distance, do
 
 KinematicState step_bicycle(const KinematicState& state, const VehicleControl& control,
                             const ActorClass& vehicle, double dt) {
-  assert(dt > 0);
-  assert(vehicle.wheelbase > 0);
+  SCENFUZZ_DEMAND(dt > 0);
+  SCENFUZZ_DEMAND(vehicle.wheelbase > 0);
   KinematicState next = state;
 
   const double max_angle = vehicle.max_steering_angle;
@@ -92,7 +92,7 @@ KinematicState step_bicycle(const KinematicState& state, const VehicleControl& c
 
 KinematicState step_pedestrian(const KinematicState& state, const PedestrianControl& control,
                                const ActorClass& pedestrian, double dt) {
-  assert(dt > 0);
+  SCENFUZZ_DEMAND(dt > 0);
   KinematicState next = state;
   const double speed = std::clamp(state.speed, 0.0, pedestrian.max_speed);
   const double requested = std::clamp(control.speed, 0.0, pedestrian.max_speed);

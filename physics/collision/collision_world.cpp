@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -16,6 +15,8 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "lang/demand.hpp"
 
 namespace scenfuzz {
 
@@ -264,7 +265,7 @@ struct CollisionWorld::Impl {
   }
 
   const Body& body(BodyId id) const {
-    assert(id < bodies.size() && "no such body");
+    SCENFUZZ_DEMAND(id < bodies.size() && "no such body");
     return bodies[id];
   }
 };
@@ -293,9 +294,9 @@ BodyId CollisionWorld::add_body(const BodyGeometry& geometry, const MapPose& pos
 }
 
 void CollisionWorld::set_pose(BodyId body, const MapPose& pose) {
-  assert(body < impl_->bodies.size() && "no such body");
+  SCENFUZZ_DEMAND(body < impl_->bodies.size() && "no such body");
   Impl::Body& moving = impl_->bodies[body];
-  assert(!moving.is_static && "a static body keeps the pose it was added with");
+  SCENFUZZ_DEMAND(!moving.is_static && "a static body keeps the pose it was added with");
   check_pose(pose);
   moving.pose = pose;
   moving.object->place(moving.geometry, pose);
@@ -337,7 +338,7 @@ const std::vector<Contact>& CollisionWorld::find_contacts() {
 }
 
 double CollisionWorld::distance(BodyId a, BodyId b) const {
-  assert(a != b && "a body's distance to itself");
+  SCENFUZZ_DEMAND(a != b && "a body's distance to itself");
   const Impl::Body& body_a = impl_->body(a);
   const Impl::Body& body_b = impl_->body(b);
   const fcl::CollisionObjectd& object_a = *body_a.object;

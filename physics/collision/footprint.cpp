@@ -6,10 +6,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
+
+#include "lang/demand.hpp"
 
 namespace scenfuzz {
 
@@ -87,7 +88,8 @@ double rectangle_rectangle_distance(const Footprint& a, const Footprint& b) {
 }  // namespace
 
 double signed_distance(const Footprint& a, const Footprint& b) {
-  assert(a.half_length >= 0 && a.half_width >= 0 && b.half_length >= 0 && b.half_width >= 0);
+  SCENFUZZ_DEMAND(a.half_length >= 0 && a.half_width >= 0 && b.half_length >= 0 &&
+                  b.half_width >= 0);
   if (a.round && b.round) return distance(a.centre, b.centre) - a.half_length - b.half_length;
   if (a.round) return point_rectangle_distance(b, axes_of(b), a.centre) - a.half_length;
   if (b.round) return point_rectangle_distance(a, axes_of(a), b.centre) - b.half_length;

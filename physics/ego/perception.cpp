@@ -4,13 +4,13 @@
 #include "physics/ego/perception.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "lang/demand.hpp"
 #include "physics/map/map_point.hpp"
 
 namespace scenfuzz {
@@ -124,7 +124,7 @@ PerceptionSettings degraded(const PerceptionSettings& clear, const Conditions& c
 
 Perception::Perception(const PerceptionSettings& settings, std::uint64_t seed, double dt)
     : settings_(settings), random_(seed), dt_(dt) {
-  assert(dt > 0);
+  SCENFUZZ_DEMAND(dt > 0);
   check_settings(settings_);
   history_.resize(static_cast<std::size_t>(std::lround(settings_.latency / dt_)) + 1);
 }

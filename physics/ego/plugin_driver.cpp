@@ -19,7 +19,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -28,6 +27,8 @@
 #include <cstring>
 #include <ctime>
 #include <utility>
+
+#include "lang/demand.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -375,8 +376,8 @@ scenfuzz_control PluginDriver::step(const scenfuzz_observation& observation) {
   if (failure_) throw *failure_;
   // Not an assert: a stray waitpid(-1) would reap some other part of scenfuzz's children.
   if (child_ <= 0) throw std::logic_error("PluginDriver::step on a moved-from driver");
-  assert(observation.object_count <= SCENFUZZ_MAX_OBJECTS);
-  assert(observation.route_point_count <= SCENFUZZ_ROUTE_POINTS);
+  SCENFUZZ_DEMAND(observation.object_count <= SCENFUZZ_MAX_OBJECTS);
+  SCENFUZZ_DEMAND(observation.route_point_count <= SCENFUZZ_ROUTE_POINTS);
   const auto deadline = deadline_after(step_timeout_);
   ++steps_;
   const std::string when =

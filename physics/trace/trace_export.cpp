@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -13,6 +12,8 @@
 #include <stdexcept>
 #include <string_view>
 #include <vector>
+
+#include "lang/demand.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -410,7 +411,7 @@ TraceEvent read_event(const json& value, const std::string& where, std::size_t c
 }  // namespace
 
 std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids) {
-  assert(columns_complete(trace));
+  SCENFUZZ_DEMAND(columns_complete(trace));
   std::vector<const PerceivedActor*> perceived_by_actor(trace.actors.size(), nullptr);
   for (const PerceivedActor& perceived : trace.perceived)
     if (perceived.actor < perceived_by_actor.size())
