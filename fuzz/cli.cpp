@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,11 +24,10 @@ bool simulation_options_valid(const SimulationCommandOptions& options, std::ostr
   return !problem;
 }
 
-int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App app{
-      "scenfuzz searches the parameter space of a driving scenario for concrete scenarios in "
-      "which the automated driving system under test violates its specification.",
-      "scenfuzz"};
+// What a parsed subcommand runs; empty after parsing means the search.
+using Action = std::function<int(std::ostream& out, std::ostream& err)>;
+
+void declare_app(CLI::App& app) {
   app.set_version_flag("--version", std::string("scenfuzz ") + SCENFUZZ_VERSION);
   // Without a subcommand, scenfuzz searches: `scenfuzz --budget 500 base.avu`.
   app.require_subcommand(0, 1);
@@ -36,103 +37,232 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   });
   app.footer(
       "Without a subcommand, scenfuzz searches FILE's parameter ranges for points that violate "
-      "its specs and writes every finding into --out. Exit status: 0 success (no finding), 1 "
-      "findings (a specification is violated, also for run and stl; for run also an ego plugin "
-      "that crashed, hung or failed), 2 a bad command line (an option's value out of its "
-      "bounds among them) or a scenario, map or trace file that cannot be read or has errors.");
+      "its specs and writes every finding into --out. Exit status: 0 success (nothing violated "
+      "among the judged evaluations), 1 findings (a specification is violated or the ego plugin "
+      "crashed, hung or failed; also for run and stl), 2 a bad command line (an option's value "
+      "out of its bounds among them), a scenario, map or trace file that cannot be read or has "
+      "errors, an output folder that is locked, holds an earlier search or cannot be written, or "
+      "a search that could judge nothing.");
+}
 
-  FuzzCommandOptions fuzz_options;
-  app.add_option("FILE", fuzz_options.path,
-                 "Logical scenario to search (AVUnit, scenest or WMG SDL)")
+void declare_search(CLI::App& app, FuzzCommandOptions& options) {
+  app.add_option("FILE", options.path, "Logical scenario to search (AVUnit, scenest or WMG SDL)")
       ->type_name("");
-  add_search_options(&app, fuzz_options);
+  add_search_options(&app, options);
+}
 
-  std::vector<std::string> check_files;
+// Each declare_* adds one subcommand to `app`; once it is parsed, `action` runs it. Its options
+// live in a shared_ptr that the action keeps.
+void declare_check(CLI::App& app, Action& action) {
+  auto files = std::make_shared<std::vector<std::string>>();
   CLI::App* check = app.add_subcommand(
       "check", "Parse scenario files and report their errors and warnings (nothing when clean)");
-  check->add_option("FILE", check_files, "AVUnit, scenest or WMG SDL (.sdl) scenario files")
+  check->add_option("FILE", *files, "AVUnit, scenest or WMG SDL (.sdl) scenario files")
       ->required()
       ->type_name("");
+  check->callback([files, &action] {
+    action = [files](std::ostream&, std::ostream& err) { return run_check(*files, err); };
+  });
+}
 
-  std::string space_file;
-  bool space_json = false;
+void declare_space(CLI::App& app, Action& action) {
+  struct SpaceOptions {
+    std::string file;
+    bool json = false;
+  };
+  auto options = std::make_shared<SpaceOptions>();
   CLI::App* space = app.add_subcommand(
       "space", "Print the parameter space of a scenario: one dimension per range in the file");
-  space->add_option("FILE", space_file, "AVUnit, scenest or WMG SDL scenario file")
+  space->add_option("FILE", options->file, "AVUnit, scenest or WMG SDL scenario file")
       ->required()
       ->type_name("");
-  space->add_flag("--json", space_json, "Print a JSON document instead of a table");
+  space->add_flag("--json", options->json, "Print a JSON document instead of a table");
+  space->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      return run_space(options->file, options->json, out, err);
+    };
+  });
+}
 
-  MapCommandOptions map_options;
+void declare_map(CLI::App& app, Action& action) {
+  auto options = std::make_shared<MapCommandOptions>();
   CLI::App* map = app.add_subcommand(
       "map",
       "Summarise a road map (built-in or Apollo HD map), draw it as SVG, or list the "
       "built-in maps");
-  map->add_option("MAP", map_options.name,
+  map->add_option("MAP", options->name,
                   "A built-in map (crossroads, straight?lanes=3&length=400, ...), the name of an "
                   "Apollo map folder on the map search path (san_francisco), or a map file")
       ->type_name("");
-  map->add_option("--map-path", map_options.map_paths,
+  map->add_option("--map-path", options->map_paths,
                   "Folder to look for Apollo maps in (<DIR>/<name>/base_map.bin or .txt); "
                   "repeatable, searched before SCENFUZZ_MAP_PATH and corpora/maps")
       ->type_name("DIR")
       ->allow_extra_args(false);
-  map->add_option("--svg", map_options.svg_path, "Draw the map into this SVG file")
-      ->type_name("FILE");
-  map->add_flag("--labels", map_options.labels, "With --svg: write every lane's id on the lane");
-  map->add_flag("--json", map_options.json, "Print JSON (counts, bounds, every lane) instead");
-  map->add_flag("--list", map_options.list, "List the built-in maps and their parameters");
+  map->add_option("--svg", options->svg_path, "Draw the map into this SVG file")->type_name("FILE");
+  map->add_flag("--labels", options->labels, "With --svg: write every lane's id on the lane");
+  map->add_flag("--json", options->json, "Print JSON (counts, bounds, every lane) instead");
+  map->add_flag("--list", options->list, "List the built-in maps and their parameters");
+  map->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      return run_map(*options, out, err);
+    };
+  });
+}
 
-  RunCommandOptions run_options;
-  CLI::App* run_command = app.add_subcommand(
+void declare_run(CLI::App& app, Action& action) {
+  auto options = std::make_shared<RunCommandOptions>();
+  CLI::App* run = app.add_subcommand(
       "run",
       "Simulate a scenario: print the collisions, whether the ego reached its target and the "
-      "robustness of every spec (exit 1 when one is violated); write the trace (CSV, JSON), a "
-      "bird's-eye SVG and the concrete scenario");
-  run_command->add_option("FILE", run_options.path, "AVUnit, scenest or WMG SDL scenario file")
+      "robustness of every spec (exit 1 when one is violated or the ego plugin fails); write the "
+      "trace (CSV, JSON), a bird's-eye SVG and the concrete scenario");
+  run->add_option("FILE", options->path, "AVUnit, scenest or WMG SDL scenario file")
       ->required()
       ->type_name("");
-  add_run_options(run_command, run_options);
+  add_run_options(run, *options);
+  run->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      if (!simulation_options_valid(options->simulation, err)) return kExitUsage;
+      return run_run(*options, out, err);
+    };
+  });
+}
 
-  StlCommandOptions stl_options;
+void declare_stl(CLI::App& app, Action& action) {
+  auto options = std::make_shared<StlCommandOptions>();
   CLI::App* stl = app.add_subcommand(
       "stl",
       "Evaluate an STL formula on a CSV log: print its robustness at the first sample (or at "
       "every sample with --signal); exit 0 when satisfied, 1 when violated");
-  stl->add_option("--spec", stl_options.spec,
+  stl->add_option("--spec", options->spec,
                   "The formula, in AVUnit's syntax; its names are the log's columns: "
                   "'G[0:5](x > 0.5 & F[0:2](y < 0.1))'")
       ->required()
       ->type_name("FORMULA");
-  stl->add_option("--trace", stl_options.trace_path,
+  stl->add_option("--trace", options->trace_path,
                   "CSV log: a header row naming the columns, one of them 'time' (seconds, "
                   "strictly increasing), then one row of numbers per sample")
       ->required()
       ->type_name("FILE.csv");
-  stl->add_flag("--signal", stl_options.signal,
+  stl->add_flag("--signal", options->signal,
                 "Print the robustness at every sample as CSV (time,robustness)");
   stl->footer(
       "Prints the robustness as a plain number (inf and -inf for infinities); for a violated "
       "formula, a note on stderr names the atom responsible and the time. Exit status: 0 "
       "satisfied (robustness >= 0), 1 violated (< 0), 2 a bad command line, or a formula or "
       "log that cannot be read or has errors.");
+  stl->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      return run_stl(*options, out, err);
+    };
+  });
+}
 
-  std::string convert_target;
-  std::string convert_file;
+void declare_convert(CLI::App& app, Action& action) {
+  auto file = std::make_shared<std::string>();
   CLI::App* convert = app.add_subcommand(
       "convert",
       "Print a WMG SDL file as level 2: a level-1 file converted (every qualitative word "
       "becomes its default range), a level-2 file printed canonically");
-  convert->add_option("--to", convert_target, "The language to write: sdl2 (WMG SDL level 2)")
+  // One target language so far: the option is there so that scripts name it.
+  convert->add_option("--to", "The language to write: sdl2 (WMG SDL level 2)")
       ->required()
       ->check(CLI::IsMember({"sdl2"}))
       ->type_name("sdl2");
-  convert->add_option("FILE", convert_file, "WMG SDL file (.sdl, level 1 or 2)")
+  convert->add_option("FILE", *file, "WMG SDL file (.sdl, level 1 or 2)")
       ->required()
       ->type_name("");
+  convert->callback([file, &action] {
+    action = [file](std::ostream& out, std::ostream& err) { return run_convert(*file, out, err); };
+  });
+}
 
-  BenchCommandOptions bench_options;
-  std::string bench_algorithm;
+// `bench`'s options, shared by its three subcommands.
+struct BenchLine {
+  BenchCommandOptions options;
+  std::string algorithm;  // cc, parallel: --algo
+};
+
+void declare_bench_falsification(CLI::App& bench, BenchLine& line) {
+  CLI::App* falsification = bench.add_subcommand(
+      "falsification",
+      "For each scenario and algorithm, search with seeds 1..N: median simulations to the first "
+      "finding, findings per 500 simulations, and random's median over ga's");
+  BenchCommandOptions& options = line.options;
+  falsification
+      ->add_option("SCENARIO", options.scenarios,
+                   "Logical scenarios, FILE or FILE:SPEC to target one spec (default: five "
+                   "bundled ones in corpora/, run from the repository's root)")
+      ->type_name("");
+  add_checked_option(falsification, "--seeds", options.seeds, "N", within(1, kMaxBudget),
+                     "Runs per algorithm", "20");
+  add_checked_option(falsification, "--budget", options.budget, "N", within(1, kMaxBudget),
+                     "Simulations per run", "500");
+  falsification->add_flag(
+      "--first-only", options.first_finding_only,
+      "Stop each run at its first finding: the same first-finding medians in a fraction of the "
+      "time, for many seeds (findings per 500 are then not measured)");
+  falsification
+      ->add_option("--algos", options.algorithms,
+                   "Comma-separated algorithms as for --algo (default "
+                   "ga,nlopt:LN_COBYLA,halton,random)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->type_name("LIST");
+  add_checked_option(falsification, "-j,--jobs", options.jobs, "N", within(0, kMaxJobs),
+                     "Searches run at once, one thread each; 0 means all cores", "all cores");
+  falsification->callback([&line] { line.options.kind = BenchKind::falsification; });
+}
+
+void declare_bench_cc(CLI::App& bench, BenchLine& line) {
+  CLI::App* cc = bench.add_subcommand(
+      "cc",
+      "ARCH-COMP chasing cars under the competition's protocol: per requirement, runs that stop "
+      "at the first falsifying simulation; FR and mean/median simulations beside the published "
+      "figures");
+  BenchCommandOptions& options = line.options;
+  add_checked_option(cc, "--runs", options.runs, "N", within(1, kMaxBudget),
+                     "Runs per requirement, seeds 1..N", "10");
+  add_checked_option(cc, "--budget", options.budget, "N", within(1, kMaxBudget),
+                     "Simulations per run at most", "1500");
+  cc->add_option("--algo", line.algorithm, "Search algorithm, as for --algo (default ga)")
+      ->type_name("NAME");
+  cc->add_option("--requirements", options.requirements,
+                 "Comma-separated requirements (default CC1,CC2,CC3,CC4,CC5,CCx)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember({"CC1", "CC2", "CC3", "CC4", "CC5", "CCx"}))
+      ->type_name("LIST");
+  add_checked_option(cc, "--segments", options.segments, "N", within(1, 20),
+                     "Piecewise-constant segments of u1 and u2 over the 100 s (jumps at least "
+                     "5 s apart; 20 segments are 40 dimensions)",
+                     "20");
+  add_checked_option(cc, "-j,--jobs", options.jobs, "N", within(0, kMaxJobs),
+                     "Runs at once; 0 means all cores", "all cores");
+  cc->callback([&line] { line.options.kind = BenchKind::chasing_cars; });
+}
+
+void declare_bench_parallel(CLI::App& bench, BenchLine& line) {
+  CLI::App* parallel = bench.add_subcommand(
+      "parallel",
+      "Run one search with -j 1 and with -j 2: wall time of each, the speed-up, and whether "
+      "both found the same findings");
+  parallel
+      ->add_option("SCENARIO", line.options.scenarios,
+                   "Logical scenario, FILE or FILE:SPEC to target one spec (default "
+                   "corpora/avunit/pedestrian_step_out.avu:spec1)")
+      ->expected(0, 1)
+      ->type_name("");
+  add_checked_option(parallel, "--budget", line.options.budget, "N", within(1, kMaxBudget),
+                     "Simulations per run", "200");
+  parallel->add_option("--algo", line.algorithm, "Search algorithm (default ga)")
+      ->type_name("NAME");
+  parallel->callback([&line] { line.options.kind = BenchKind::parallel; });
+}
+
+void declare_bench(CLI::App& app, Action& action) {
+  auto line = std::make_shared<BenchLine>();
   CLI::App* bench = app.add_subcommand(
       "bench",
       "Measure the search: strategies on bundled scenarios, the ARCH-COMP chasing-cars "
@@ -141,104 +271,49 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   bench->footer(
       "Results depend only on the seeds, never on -j; figures and how they were measured: "
       "docs/performance.md.");
-  CLI::App* bench_falsification = bench->add_subcommand(
-      "falsification",
-      "For each scenario and algorithm, search with seeds 1..N: median simulations to the first "
-      "finding, findings per 500 simulations, and random's median over ga's");
-  bench_falsification
-      ->add_option("SCENARIO", bench_options.scenarios,
-                   "Logical scenarios, FILE or FILE:SPEC to target one spec (default: five "
-                   "bundled ones in corpora/, run from the repository's root)")
-      ->type_name("");
-  bench_falsification->add_option("--seeds", bench_options.seeds, "Runs per algorithm (default 20)")
-      ->type_name("N");
-  add_checked_option(bench_falsification, "--budget", bench_options.budget, "N",
-                     within(1, kMaxBudget), "Simulations per run", "500");
-  bench_falsification->add_flag(
-      "--first-only", bench_options.first_finding_only,
-      "Stop each run at its first finding: the same first-finding medians in a fraction of the "
-      "time, for many seeds (findings per 500 are then not measured)");
-  bench_falsification
-      ->add_option("--algos", bench_options.algorithms,
-                   "Comma-separated algorithms as for --algo (default "
-                   "ga,nlopt:LN_COBYLA,halton,random)")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->type_name("LIST");
-  add_checked_option(bench_falsification, "-j,--jobs", bench_options.jobs, "N", within(0, kMaxJobs),
-                     "Searches run at once, one thread each; 0 means all cores", "all cores");
-  CLI::App* bench_cc = bench->add_subcommand(
-      "cc",
-      "ARCH-COMP chasing cars under the competition's protocol: per requirement, runs that stop "
-      "at the first falsifying simulation; FR and mean/median simulations beside the published "
-      "figures");
-  bench_cc
-      ->add_option("--runs", bench_options.runs, "Runs per requirement, seeds 1..N (default 10)")
-      ->type_name("N");
-  add_checked_option(bench_cc, "--budget", bench_options.budget, "N", within(1, kMaxBudget),
-                     "Simulations per run at most", "1500");
-  bench_cc->add_option("--algo", bench_algorithm, "Search algorithm, as for --algo (default ga)")
-      ->type_name("NAME");
-  bench_cc
-      ->add_option("--requirements", bench_options.requirements,
-                   "Comma-separated requirements (default CC1,CC2,CC3,CC4,CC5,CCx)")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(CLI::IsMember({"CC1", "CC2", "CC3", "CC4", "CC5", "CCx"}))
-      ->type_name("LIST");
-  bench_cc
-      ->add_option("--segments", bench_options.segments,
-                   "Piecewise-constant segments of u1 and u2 over the 100 s, 1 to 20 (jumps at "
-                   "least 5 s apart; default 20, 40 dimensions)")
-      ->check(CLI::Range(1, 20))
-      ->type_name("N");
-  add_checked_option(bench_cc, "-j,--jobs", bench_options.jobs, "N", within(0, kMaxJobs),
-                     "Runs at once; 0 means all cores", "all cores");
-  CLI::App* bench_parallel = bench->add_subcommand(
-      "parallel",
-      "Run one search with -j 1 and with -j 2: wall time of each, the speed-up, and whether "
-      "both found the same findings");
-  bench_parallel
-      ->add_option("SCENARIO", bench_options.scenarios,
-                   "Logical scenario, FILE or FILE:SPEC to target one spec (default "
-                   "corpora/avunit/pedestrian_step_out.avu:spec1)")
-      ->expected(0, 1)
-      ->type_name("");
-  add_checked_option(bench_parallel, "--budget", bench_options.budget, "N", within(1, kMaxBudget),
-                     "Simulations per run", "200");
-  bench_parallel->add_option("--algo", bench_algorithm, "Search algorithm (default ga)")
-      ->type_name("NAME");
+  declare_bench_falsification(*bench, *line);
+  declare_bench_cc(*bench, *line);
+  declare_bench_parallel(*bench, *line);
+  // The bench's own callback runs after its subcommand's.
+  bench->callback([line, &action] {
+    action = [line](std::ostream& out, std::ostream& err) {
+      BenchCommandOptions options = line->options;
+      if (!line->algorithm.empty()) options.algorithms = {line->algorithm};
+      return run_bench(options, out, err);
+    };
+  });
+}
 
+int run_search_command(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.path.empty()) {
+    err << "scenfuzz: error: name a scenario to search (scenfuzz --budget 500 base.avu) or a "
+           "subcommand\nRun with --help for more information.\n";
+    return kExitUsage;
+  }
+  if (!simulation_options_valid(options.simulation, err)) return kExitUsage;
+  return run_fuzz(options, out, err);
+}
+
+int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{
+      "scenfuzz searches the parameter space of a driving scenario for concrete scenarios in "
+      "which the automated driving system under test violates its specification.",
+      "scenfuzz"};
+  declare_app(app);
+  FuzzCommandOptions search;
+  declare_search(app, search);
+  Action action;
+  for (void (*declare)(CLI::App&, Action&) :
+       {declare_check, declare_space, declare_map, declare_run, declare_stl, declare_convert,
+        declare_bench})
+    declare(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // Help and --version exit 0; every other parse error is a usage error.
     return app.exit(e, out, err) == 0 ? kExitSuccess : kExitUsage;
   }
-
-  if (check->parsed()) return run_check(check_files, err);
-  if (space->parsed()) return run_space(space_file, space_json, out, err);
-  if (map->parsed()) return run_map(map_options, out, err);
-  if (run_command->parsed()) {
-    if (!simulation_options_valid(run_options.simulation, err)) return kExitUsage;
-    return run_run(run_options, out, err);
-  }
-  if (stl->parsed()) return run_stl(stl_options, out, err);
-  if (convert->parsed()) return run_convert(convert_file, out, err);
-  if (bench->parsed()) {
-    if (!bench_algorithm.empty()) bench_options.algorithms = {bench_algorithm};
-    bench_options.kind = bench_cc->parsed()         ? BenchKind::chasing_cars
-                         : bench_parallel->parsed() ? BenchKind::parallel
-                                                    : BenchKind::falsification;
-    return run_bench(bench_options, out, err);
-  }
-  if (fuzz_options.path.empty()) {
-    err << "scenfuzz: error: name a scenario to search (scenfuzz --budget 500 base.avu) or a "
-           "subcommand\nRun with --help for more information.\n";
-    return kExitUsage;
-  }
-  if (!simulation_options_valid(fuzz_options.simulation, err)) return kExitUsage;
-  return run_fuzz(fuzz_options, out, err);
+  return action ? action(out, err) : run_search_command(search, out, err);
 }
 
 }  // namespace

@@ -101,7 +101,14 @@ TEST_F(BenchCommandTest, ParallelFindsTheSameWithOneAndTwoThreads) {
 TEST_F(BenchCommandTest, BadArgumentsAreUsageErrors) {
   const Outcome no_seeds = scenfuzz({"bench", "falsification", "--seeds", "0", kPullOut});
   EXPECT_EQ(no_seeds.exit_code, 2);
-  EXPECT_NE(no_seeds.err.find("--seeds must be at least 1"), std::string::npos) << no_seeds.err;
+  EXPECT_NE(no_seeds.err.find("--seeds: expected a whole number from 1"), std::string::npos)
+      << no_seeds.err;
+  // Negative counts are refused, not wrapped to 2^64 - 1.
+  for (const char* option : {"--runs", "--segments", "--budget"}) {
+    const Outcome negative = scenfuzz({"bench", "cc", option, "-1"});
+    EXPECT_EQ(negative.exit_code, 2) << option;
+    EXPECT_NE(negative.err.find(option), std::string::npos) << negative.err;
+  }
   const Outcome unknown =
       scenfuzz({"bench", "falsification", "--algos", "ga,nlopt:LN_NOPE", "--seeds", "1", kPullOut});
   EXPECT_EQ(unknown.exit_code, 2);
