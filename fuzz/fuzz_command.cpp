@@ -196,18 +196,9 @@ class SearchSession {
       err_ << "scenfuzz: warning: " << failure << "\n";
     }
     if (!options_.json) return;
-    nlohmann::json event = {{"event", "finding"},
-                            {"number", finding.number},
-                            {"evaluation", finding.evaluation},
-                            {"file", path}};
-    if (finding.ego_failure()) {
-      event["kind"] = finding.objective_name;
-      event["reason"] = finding.failure;
-    } else {
-      event["kind"] = "violation";
-      event["spec"] = finding.objective_name;
-      event["robustness"] = robustness_json(finding.robustness);
-    }
+    nlohmann::json event = finding_json(finding);
+    event["event"] = "finding";
+    event["file"] = path;
     out_ << event.dump() << "\n" << std::flush;
   }
 

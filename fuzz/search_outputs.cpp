@@ -56,6 +56,19 @@ std::string seconds_text(double seconds) {
 
 }  // namespace
 
+nlohmann::json finding_json(const Finding& finding) {
+  nlohmann::json entry = {{"number", finding.number}, {"evaluation", finding.evaluation}};
+  if (finding.ego_failure()) {
+    entry["kind"] = finding.objective_name;
+    entry["reason"] = finding.failure;
+  } else {
+    entry["kind"] = "violation";
+    entry["spec"] = finding.objective_name;
+    entry["robustness"] = robustness_json(finding.robustness);
+  }
+  return entry;
+}
+
 std::string finding_number_text(std::size_t number) {
   std::ostringstream text;
   text << std::setw(3) << std::setfill('0') << number;
@@ -214,17 +227,10 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
   nlohmann::json findings = nlohmann::json::array();
   for (const Finding& finding : log.findings()) {
     if (lost(finding)) continue;
-    nlohmann::json entry = {
-        {"number", finding.number}, {"evaluation", finding.evaluation}, {"seed", finding.seed}};
-    if (finding.ego_failure()) {
-      entry["kind"] = finding.objective_name;
-      entry["reason"] = finding.failure;
-    } else {
-      entry["kind"] = "violation";
-      entry["spec"] = finding.objective_name;
-      entry["robustness"] = robustness_json(finding.robustness);
-      if (!finding.signature.empty()) entry["collision"] = finding.signature;
-    }
+    nlohmann::json entry = finding_json(finding);
+    entry["seed"] = finding.seed;
+    if (!finding.ego_failure() && !finding.signature.empty())
+      entry["collision"] = finding.signature;
     if (auto file = written_.find(finding.number); file != written_.end())
       entry["file"] = file->second;
     findings.push_back(entry);

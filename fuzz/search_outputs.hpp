@@ -90,6 +90,10 @@ class SearchOutputs {
   std::size_t findings_in_summary_ = 0;
 };
 
+// What summary.json and the --json finding events say of every finding: number, evaluation,
+// kind ("violation" with spec and robustness, or an ego failure's kind with its reason).
+nlohmann::json finding_json(const Finding& finding);
+
 // "001", "012", "1234": finding numbers in file names.
 std::string finding_number_text(std::size_t number);
 

@@ -16,10 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::Outcome;
-
-std::string source_file(const std::string& relative) {
-  return (fs::path(SCENFUZZ_SOURCE_DIR) / relative).string();
-}
+using test::source_file;
 
 const std::string kPullOut = source_file("corpora/benchmarks/falsification/side_road_pull_out.avu");
 

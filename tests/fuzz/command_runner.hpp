@@ -30,6 +30,11 @@ inline std::string shell_quote(const std::string& text) {
   return quoted + "'";
 }
 
+// A file of the repository ("corpora/avunit/cut_in_straight.avu"), by its absolute path.
+inline std::string source_file(const std::string& relative) {
+  return (std::filesystem::path(SCENFUZZ_SOURCE_DIR) / relative).string();
+}
+
 inline std::string slurp(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;

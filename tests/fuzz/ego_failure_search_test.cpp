@@ -19,8 +19,7 @@ namespace fs = std::filesystem;
 using test::Outcome;
 using test::slurp;
 
-const std::string kCutIn =
-    (fs::path(SCENFUZZ_SOURCE_DIR) / "corpora/avunit/cut_in_straight.avu").string();
+const std::string kCutIn = test::source_file("corpora/avunit/cut_in_straight.avu");
 
 std::string plugin(const std::string& name) {
   return std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/lib" + name + ".so";

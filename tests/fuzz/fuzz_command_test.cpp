@@ -25,9 +25,7 @@ namespace fs = std::filesystem;
 using test::Outcome;
 using test::slurp;
 
-std::string source_file(const std::string& relative) {
-  return (fs::path(SCENFUZZ_SOURCE_DIR) / relative).string();
-}
+using test::source_file;
 
 const std::string kCutIn = source_file("corpora/avunit/cut_in_straight.avu");
 const std::string kSafe = source_file("tests/fuzz/data/safe_by_construction.avu");

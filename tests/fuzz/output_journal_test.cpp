@@ -28,8 +28,7 @@ namespace fs = std::filesystem;
 using test::Outcome;
 using test::slurp;
 
-const std::string kCutIn =
-    (fs::path(SCENFUZZ_SOURCE_DIR) / "corpora/avunit/cut_in_straight.avu").string();
+const std::string kCutIn = test::source_file("corpora/avunit/cut_in_straight.avu");
 
 // A search's result, for comparing two runs: evaluations.csv without its wall times, the
 // findings of summary.json without their folder, and every finding file with the folder's name

@@ -217,6 +217,27 @@ class HashedLandscapeEvaluator : public Evaluator {
   }
 };
 
+// A corpus scenario read and parsed, for a ScenarioEvaluator (which refers to both).
+struct CorpusScenario {
+  SourceFile file;
+  ScenarioTemplate scenario;
+};
+
+std::optional<CorpusScenario> load_corpus_scenario(const std::string& relative) {
+  const std::string path = std::string(SCENFUZZ_SOURCE_DIR) + "/" + relative;
+  std::optional<SourceFile> file = read_source_file(path);
+  if (!file) {
+    ADD_FAILURE() << "cannot read " << path;
+    return std::nullopt;
+  }
+  avunit::ParseResult parsed = avunit::parse(*file);
+  if (!parsed.ok()) {
+    ADD_FAILURE() << format_diagnostics(*file, parsed.diagnostics);
+    return std::nullopt;
+  }
+  return CorpusScenario{std::move(*file), std::move(parsed.scenario)};
+}
+
 // Everything a run produced that must not depend on the thread count: each record's hash (to
 // report the first evaluation that differs), the hash of them all, of the findings, and the
 // summary. Wall times are left out: they are the one thing allowed to differ.
@@ -574,13 +595,10 @@ TEST(SearchDeterminismTest, AnotherSeedGivesAnotherHash) {
 }
 
 TEST(SearchDeterminismTest, ScenarioSearchIsTheSameForAnyThreadCount) {
-  const std::string path =
-      std::string(SCENFUZZ_SOURCE_DIR) + "/corpora/avunit/lead_vehicle_hard_brake.avu";
-  const std::optional<SourceFile> file = read_source_file(path);
-  ASSERT_TRUE(file) << "cannot read " << path;
-  const avunit::ParseResult parsed = avunit::parse(*file);
-  ASSERT_TRUE(parsed.ok()) << format_diagnostics(*file, parsed.diagnostics);
-  const ScenarioEvaluator evaluator(*file, parsed.scenario, map_search_path({}),
+  const std::optional<CorpusScenario> input =
+      load_corpus_scenario("corpora/avunit/lead_vehicle_hard_brake.avu");
+  ASSERT_TRUE(input);
+  const ScenarioEvaluator evaluator(input->file, input->scenario, map_search_path({}),
                                     SimulationOptions{});
   ASSERT_FALSE(evaluator.dimensions().empty());
 
@@ -598,12 +616,10 @@ TEST(SearchDeterminismTest, ScenarioSearchIsTheSameForAnyThreadCount) {
 TEST(SearchDeterminismTest, AReferenceSearchMatchesItsPinnedHash) {
   constexpr std::uint64_t kEvaluationsHash = 0xFF33780A93A031B7ull;
   constexpr std::uint64_t kFindingsHash = 0x2974CDD730BBBD85ull;
-  const std::string path = std::string(SCENFUZZ_SOURCE_DIR) + "/corpora/avunit/cut_in_straight.avu";
-  const std::optional<SourceFile> file = read_source_file(path);
-  ASSERT_TRUE(file) << "cannot read " << path;
-  const avunit::ParseResult parsed = avunit::parse(*file);
-  ASSERT_TRUE(parsed.ok()) << format_diagnostics(*file, parsed.diagnostics);
-  const ScenarioEvaluator evaluator(*file, parsed.scenario, map_search_path({}),
+  const std::optional<CorpusScenario> input =
+      load_corpus_scenario("corpora/avunit/cut_in_straight.avu");
+  ASSERT_TRUE(input);
+  const ScenarioEvaluator evaluator(input->file, input->scenario, map_search_path({}),
                                     SimulationOptions{});
   SearchOptions options;
   options.algorithm = "ga";
