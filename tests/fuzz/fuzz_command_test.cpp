@@ -202,6 +202,19 @@ TEST_F(FuzzCommandTest, BadInputIsAClearErrorWithExitTwo) {
   EXPECT_NE(run.err.find("missing.avu"), std::string::npos) << run.err;
 }
 
+TEST_F(FuzzCommandTest, AnEgoFarFromEveryLaneIsWarnedOnceBeforeTheSearch) {
+  const std::string far = write("far.avu",
+                                "ego = AV(((-4210000, -5), , range(4, 6)), (\"east_0\"->300));\n"
+                                "s = CreateScenario{load(\"straight\"); ego; {}; {}; {};};\n");
+  const Outcome run = fuzz(far, {"--budget", "4", "--duration", "1", "--quiet"});
+  EXPECT_NE(run.exit_code, 3) << run.err;
+  EXPECT_NE(run.err.find("far.avu:1:11: warning"), std::string::npos) << run.err;
+  const std::string warning = "km from the nearest lane";
+  const std::size_t first = run.err.find(warning);
+  ASSERT_NE(first, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find(warning, first + 1), std::string::npos) << "warned more than once";
+}
+
 TEST_F(FuzzCommandTest, InterruptStopsCleanlyWithEverythingWritten) {
   const fs::path out = dir_ / "out";
   const pid_t child = ::fork();

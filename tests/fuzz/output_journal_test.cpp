@@ -278,6 +278,17 @@ TEST_F(OutputJournalTest, ASearchThatJudgedNothingExitsTwoWithTheReason) {
   EXPECT_NE(run.err.find("lane.avu:1:"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("'no_such_lane'"), std::string::npos) << run.err;
 
+  // WMG map ranges that the generator cannot build: every point is infeasible.
+  std::string sdl = slurp(test::source_file("corpora/wmg/cut_in.sdl"));
+  const std::string radius = "curvature radius of [S1: 1000 to 4000]";
+  ASSERT_NE(sdl.find(radius), std::string::npos);
+  sdl.replace(sdl.find(radius), radius.size(), "curvature radius of [S1: 1 to 5]");
+  run = scenfuzz(
+      {"--budget", "5", "--quiet", "--out", (dir_ / "c").string(), write("tight.sdl", sdl)});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("no evaluation could be judged"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("is outside its range 20..10000 m"), std::string::npos) << run.err;
+
   run = scenfuzz({"--budget", "10", "--quiet", "--out", (dir_ / "b").string(), "--ego-plugin",
                   (dir_ / "no_such_plugin.so").string(), kCutIn});
   EXPECT_EQ(run.exit_code, 2);
