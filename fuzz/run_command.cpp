@@ -18,6 +18,7 @@
 #include "lang/number_format.hpp"
 #include "oracle/judge.hpp"
 #include "oracle/robustness.hpp"
+#include "oracle/trace_audit.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/simulation/simulation.hpp"
 #include "physics/trace/trace_export.hpp"
@@ -76,6 +77,69 @@ nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdi
     specs.push_back(spec);
   }
   return specs;
+}
+
+// Seconds to the millisecond, as the collisions print them.
+std::string seconds(double time) { return format_number(std::round(time * 1000) / 1000) + " s"; }
+
+// Four significant digits: enough to compare a value with its limit (--json has them all).
+std::string approx(double value) {
+  if (value == 0 || !std::isfinite(value)) return format_number(value);
+  const double scale = std::pow(10.0, 3 - std::floor(std::log10(std::abs(value))));
+  return format_number(std::round(value * scale) / scale);
+}
+
+// "first at 0.05 s, 23 samples": where a check first failed and how often.
+std::string extent(const AuditIssue& issue) {
+  return "first at " + seconds(issue.time) + ", " + std::to_string(issue.samples) + " samples";
+}
+
+// One line of the audit: what the actor did, its worst value against the limit, and when.
+std::string describe_audit_issue(const AuditIssue& issue) {
+  const std::string who = "audit: " + issue.actor_name + " ";
+  const std::string at = " at " + seconds(issue.worst_time);
+  switch (issue.kind) {
+    case AuditKind::off_road: {
+      std::string text = who + "off the road from " + seconds(issue.worst_time) + " for " +
+                         seconds(issue.worst) + " (grace " + seconds(issue.limit) + ")";
+      if (issue.time < issue.worst_time) text += ", first off from " + seconds(issue.time);
+      return text;
+    }
+    case AuditKind::speed_limit:
+      return who + "at " + approx(issue.worst) + " m/s" + at + ", above its class's " +
+             approx(issue.limit) + " m/s (" + extent(issue) + ")";
+    case AuditKind::lateral_acceleration:
+      return who + "cornering at " + approx(issue.worst) + " m/s^2" + at +
+             ", above its class's grip of " + approx(issue.limit) + " m/s^2 (" + extent(issue) +
+             ")";
+    case AuditKind::acceleration:
+      return who + "accelerating at " + approx(issue.worst) + " m/s^2" + at +
+             ", beyond its class's " + approx(issue.limit) + " m/s^2 (" + extent(issue) + ")";
+    case AuditKind::turning_radius:
+      return who + "turning at " + approx(issue.worst) + " rad/s" + at +
+             ", tighter than full lock allows at its speed (" + approx(issue.limit) + " rad/s; " +
+             extent(issue) + ")";
+    case AuditKind::yaw_rate_inconsistent:
+      return who + "yaw rate " + approx(issue.worst) + " rad/s off the heading's derivative" + at +
+             " (tolerance " + approx(issue.limit) + " rad/s; " + extent(issue) + ")";
+    case AuditKind::npc_overlap:
+      return who + "overlaps " + issue.other_name + " from " + seconds(issue.time);
+  }
+  return who + std::string(audit_kind_name(issue.kind));
+}
+
+nlohmann::json audit_json(const TraceAudit& audit) {
+  nlohmann::json issues = nlohmann::json::array();
+  for (const AuditIssue& issue : audit.issues) {
+    nlohmann::json entry = {
+        {"actor", issue.actor_name}, {"kind", std::string(audit_kind_name(issue.kind))},
+        {"time", issue.time},        {"worst_time", issue.worst_time},
+        {"worst", issue.worst},      {"limit", issue.limit},
+        {"samples", issue.samples}};
+    if (issue.kind == AuditKind::npc_overlap) entry["other"] = issue.other_name;
+    issues.push_back(entry);
+  }
+  return issues;
 }
 
 nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
@@ -183,6 +247,9 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   bool violated = ego_failure.has_value();
   for (const SpecVerdict& verdict : verdicts) violated = violated || verdict.violated();
   const int exit_code = violated ? kExitViolated : kExitSuccess;
+  // What the simulated world did that no real road user does: not a finding, but a reason to
+  // doubt one (docs/oracle.md, "Trace audit").
+  const TraceAudit audit = audit_trace(trace, *map);
 
   std::vector<std::string> written;
   if (!options.out_dir.empty()) {
@@ -217,6 +284,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   if (options.json) {
     nlohmann::json summary = summary_json(trace, space, values, written);
     summary["specs"] = verdicts_json(file, verdicts);
+    summary["audit"] = audit_json(audit);
     out << summary.dump(2) << "\n";
     return exit_code;
   }
@@ -230,6 +298,8 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   for (const Collision& collision : trace.collisions)
     out << describe_collision(trace, collision) << "\n";
   if (trace.collisions.empty()) out << "no collision\n";
+  for (const AuditIssue& issue : audit.issues) out << describe_audit_issue(issue) << "\n";
+  if (audit.clean()) out << "audit: every actor drove plausibly\n";
   out << "ego reached its target: " << (trace.end == EndReason::target_reached ? "yes" : "no")
       << "\n";
   if (ego_failure) out << describe_ego_failure(*ego_failure) << "\n";

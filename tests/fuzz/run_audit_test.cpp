@@ -1,0 +1,77 @@
+// `scenfuzz run` reports the trace audit: one `audit:` line per issue after the collisions (or a
+// line saying every actor drove plausibly), and an "audit" array in --json.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "command_runner.hpp"
+
+namespace scenfuzz {
+namespace {
+
+using test::Outcome;
+
+// Two scripted NPCs in one lane, the faster behind: it drives through the slower one.
+constexpr const char* kRamming =
+    "ego = AV((\"east_0\"->20, , 0), (\"east_0\"->480));\n"
+    "slow = Vehicle((\"east_1\"->100, , 2), Waypoint((\"east_1\"->150, , 2)), "
+    "(\"east_1\"->400));\n"
+    "fast = Vehicle((\"east_1\"->40, , 15), Waypoint((\"east_1\"->300, , 15)), "
+    "(\"east_1\"->400));\n"
+    "scenario = CreateScenario{load(\"straight\"); ego; {slow, fast}; {}; {};};\n"
+    "Trace trace = EXE(scenario);\n";
+
+class RunAuditTest : public test::CommandTest {
+ protected:
+  Outcome run(const std::string& path, bool json) {
+    std::vector<std::string> args = {"run", path, "--at", "mid", "--out", (dir_ / "out").string()};
+    if (json) args.push_back("--json");
+    return scenfuzz(args);
+  }
+};
+
+TEST_F(RunAuditTest, TextNamesEachIssueAfterTheCollisions) {
+  const Outcome outcome = run(write("ramming.avu", kRamming), false);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const std::size_t collision = outcome.out.find("collision at 4.3 s: slow rear / fast front");
+  const std::size_t overlap = outcome.out.find("audit: slow overlaps fast from 4.3 s\n");
+  ASSERT_NE(collision, std::string::npos) << outcome.out;
+  ASSERT_NE(overlap, std::string::npos) << outcome.out;
+  EXPECT_LT(collision, overlap);
+  EXPECT_LT(overlap, outcome.out.find("ego reached its target: "));
+  EXPECT_EQ(outcome.out.find("every actor drove plausibly"), std::string::npos);
+}
+
+TEST_F(RunAuditTest, JsonHasAnAuditArray) {
+  const Outcome outcome = run(write("ramming.avu", kRamming), true);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const nlohmann::json summary = nlohmann::json::parse(outcome.out);
+  ASSERT_TRUE(summary["audit"].is_array());
+  ASSERT_EQ(summary["audit"].size(), 1u) << outcome.out;
+  const nlohmann::json& issue = summary["audit"][0];
+  EXPECT_EQ(issue["actor"], "slow");
+  EXPECT_EQ(issue["kind"], "npc_overlap");
+  EXPECT_EQ(issue["other"], "fast");
+  EXPECT_NEAR(issue["time"].get<double>(), 4.3, 1e-9);
+  for (const char* key : {"worst_time", "worst", "limit", "samples"})
+    EXPECT_TRUE(issue.contains(key)) << key;
+}
+
+TEST_F(RunAuditTest, APlausibleRunSaysSo) {
+  const Outcome text =
+      run(test::source_file("corpora/avunit/stationary_obstacle_in_lane.avu"), false);
+  ASSERT_EQ(text.exit_code, 1) << text.err;
+  EXPECT_NE(text.out.find("no collision\naudit: every actor drove plausibly\n"), std::string::npos)
+      << text.out;
+  const Outcome json =
+      run(test::source_file("corpora/avunit/stationary_obstacle_in_lane.avu"), true);
+  ASSERT_EQ(json.exit_code, 1) << json.err;
+  const nlohmann::json summary = nlohmann::json::parse(json.out);
+  ASSERT_TRUE(summary["audit"].is_array());
+  EXPECT_TRUE(summary["audit"].empty());
+}
+
+}  // namespace
+}  // namespace scenfuzz
