@@ -46,6 +46,9 @@ struct Evaluation {
   // de-duplicating findings (the colliding pair and sides; for an ego failure its kind and
   // signal); empty when only the point does.
   std::string signature;
+  // What the simulated world did wrong (oracle/trace_audit.hpp): issues per AuditKind, counted
+  // per search; empty when the evaluator audits nothing or nothing was simulated.
+  std::vector<std::size_t> audit;
   double wall_seconds = 0;
 
   bool feasible() const { return infeasible.empty(); }

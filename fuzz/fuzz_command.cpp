@@ -28,6 +28,7 @@
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/robustness.hpp"
+#include "oracle/trace_audit.hpp"
 
 namespace scenfuzz {
 
@@ -230,6 +231,19 @@ std::string finding_line(const Finding& finding) {
   return line + (finding.signature.empty() ? "" : " (" + finding.signature + ")");
 }
 
+// "audit: 64 of 300 simulations had actors that no real road user would be (off_road 64, ...)".
+std::string audit_line(const SearchOutputs& outputs, const SearchSummary& summary) {
+  std::string kinds;
+  for (std::size_t k = 0; k < outputs.audit_totals().size(); ++k)
+    if (outputs.audit_totals()[k] > 0)
+      kinds += (kinds.empty() ? "" : ", ") +
+               std::string(audit_kind_name(static_cast<AuditKind>(k))) + " " +
+               std::to_string(outputs.audit_totals()[k]);
+  return "audit: " + std::to_string(outputs.audited_with_issues()) + " of " +
+         std::to_string(summary.judged + summary.failed) +
+         " simulations had actors that moved as no road user does (" + kinds + "; docs/oracle.md)";
+}
+
 void print_report(const FuzzCommandOptions& options, const SearchSummary& summary,
                   const SearchOutputs& outputs, const FindingLog& log,
                   const std::vector<std::string>& objectives, std::ostream& out) {
@@ -253,6 +267,7 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
   if (log.duplicates() > 0) out << " (" << log.duplicates() << " duplicates skipped)";
   out << (kept.empty() ? "\n" : ":\n");
   for (const Finding* finding : kept) out << finding_line(*finding) << "\n";
+  if (outputs.audited_with_issues() > 0) out << audit_line(outputs, summary) << "\n";
   out << "wrote " << (fs::path(options.out_dir) / "summary.json").string() << "\n";
 }
 

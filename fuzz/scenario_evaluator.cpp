@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "oracle/trace_audit.hpp"
 #include "physics/simulation/initial_overlap.hpp"
 #include "physics/simulation/scenario_setup.hpp"
 
@@ -166,6 +167,10 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
   Evaluation evaluation;
   evaluation.infeasible = run.infeasible;
   evaluation.failure = run.failure;
+  if (run.trace) {
+    const TraceAudit audit = audit_trace(*run.trace, *run.map);
+    evaluation.audit.assign(audit.counts.begin(), audit.counts.end());
+  }
   if (run.trace && run.trace->ego_failure && is_finding(*run.trace->ego_failure)) {
     const EgoFailure& failure = *run.trace->ego_failure;
     evaluation.failure_kind = ego_failure_kind_name(failure.kind);

@@ -13,6 +13,7 @@
 
 #include "fuzz/report_format.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/trace_audit.hpp"
 
 namespace scenfuzz {
 
@@ -22,7 +23,7 @@ namespace {
 
 // The fixed columns before the parameters and after the specs.
 constexpr std::size_t kLeading = 5;   // evaluation, seed, target, status, kind
-constexpr std::size_t kTrailing = 3;  // signature, wall_seconds, reason
+constexpr std::size_t kTrailing = 4;  // audit, signature, wall_seconds, reason
 
 std::string status_name(const Evaluation& evaluation) {
   return !evaluation.feasible() ? "infeasible" : !evaluation.judged() ? "failed" : "judged";
@@ -78,6 +79,36 @@ bool parse_integer(const std::string& text, Integer& value) {
   return ec == std::errc() && ptr == end && !text.empty();
 }
 
+// "off_road=1;yaw_rate_inconsistent=2": the audit's non-zero counts by kind; empty when clean.
+std::string audit_text(const std::vector<std::size_t>& counts) {
+  std::string text;
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    if (counts[k] > 0)
+      text += (text.empty() ? "" : ";") + std::string(audit_kind_name(static_cast<AuditKind>(k))) +
+              "=" + std::to_string(counts[k]);
+  return text;
+}
+
+bool parse_audit(const std::string& text, std::vector<std::size_t>& counts) {
+  counts.clear();
+  if (text.empty()) return true;
+  counts.assign(kAuditKindCount, 0);
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    const std::size_t equals = item.find('=');
+    if (equals == std::string::npos) return false;
+    const std::string name = item.substr(0, equals);
+    std::size_t kind = 0;
+    while (kind < kAuditKindCount && audit_kind_name(static_cast<AuditKind>(kind)) != name) ++kind;
+    if (kind == kAuditKindCount || !parse_integer(item.substr(equals + 1), counts[kind]))
+      return false;
+    start = end + 1;
+  }
+  return true;
+}
+
 }  // namespace
 
 SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives)
@@ -89,7 +120,7 @@ SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::strin
   for (const std::string& objective : objectives_)
     header_ += "," + csv_field("robustness." + objective);
   for (const std::string& objective : objectives_) header_ += "," + csv_field("guide." + objective);
-  header_ += ",signature,wall_seconds,reason\n";
+  header_ += ",audit,signature,wall_seconds,reason\n";
 }
 
 std::string SearchJournal::row(const EvaluationRecord& record) const {
@@ -113,7 +144,7 @@ std::string SearchJournal::row(const EvaluationRecord& record) const {
         judged && k < evaluation.guide.size() && evaluation.guide[k] != evaluation.robustness[k];
     row += "," + (differs ? format_number(evaluation.guide[k]) : std::string());
   }
-  row += "," + csv_field(evaluation.signature) + "," +
+  row += "," + audit_text(evaluation.audit) + "," + csv_field(evaluation.signature) + "," +
          format_number(std::round(evaluation.wall_seconds * 1e6) / 1e6) + "," +
          csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "\n";
   return row;
@@ -143,10 +174,15 @@ std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::
     }
   Evaluation& evaluation = record.evaluation;
   const std::string& status = fields[3];
-  const std::string& reason = fields[kLeading + 2 * d + 2 * n + 2];
+  const std::size_t trailing = kLeading + 2 * d + 2 * n;
+  const std::string& reason = fields[trailing + 3];
   evaluation.failure_kind = fields[4];
-  evaluation.signature = fields[kLeading + 2 * d + 2 * n];
-  parse_number(fields[kLeading + 2 * d + 2 * n + 1], evaluation.wall_seconds);
+  if (!parse_audit(fields[trailing], evaluation.audit)) {
+    error = "has a bad audit '" + fields[trailing] + "'";
+    return std::nullopt;
+  }
+  evaluation.signature = fields[trailing + 1];
+  parse_number(fields[trailing + 2], evaluation.wall_seconds);
   if (status == "infeasible") {
     evaluation.infeasible = reason.empty() ? "infeasible" : reason;
   } else if (status == "failed") {

@@ -1,5 +1,6 @@
 #include "fuzz/search_outputs.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "fuzz/scenario_language.hpp"
 #include "fuzz/search_identity.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/trace_audit.hpp"
 #include "physics/trace/trace_export.hpp"
 #include "physics/trace/trace_svg.hpp"
 
@@ -125,6 +127,11 @@ void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
   if (evaluation.feasible() && !evaluation.judged() && first_failure_.empty())
     first_failure_ = evaluation.failure;
   if (!evaluation.failure_kind.empty()) ++ego_failures_;
+  if (audit_totals_.size() < evaluation.audit.size()) audit_totals_.resize(evaluation.audit.size());
+  for (std::size_t k = 0; k < evaluation.audit.size(); ++k) audit_totals_[k] += evaluation.audit[k];
+  if (std::any_of(evaluation.audit.begin(), evaluation.audit.end(),
+                  [](std::size_t count) { return count > 0; }))
+    ++audited_with_issues_;
   for (std::size_t k = 0; k < objectives_.size() && evaluation.judged(); ++k) {
     if (best_.size() < objectives_.size()) best_.assign(objectives_.size(), INFINITY);
     best_[k] = std::min(best_[k], evaluation.robustness[k]);
@@ -254,6 +261,10 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
       {"wall_seconds", search.wall_seconds},
       {"stop", complete ? std::string(stop_reason_name(search.stop)) : "running"},
       {"complete", complete}};
+  nlohmann::json issues = nlohmann::json::object();
+  for (std::size_t k = 0; k < audit_totals_.size(); ++k)
+    issues[std::string(audit_kind_name(static_cast<AuditKind>(k)))] = audit_totals_[k];
+  document["audit"] = {{"simulations_with_issues", audited_with_issues_}, {"issues", issues}};
   if (!error.empty()) document["error"] = error;
   return document;
 }

@@ -58,6 +58,10 @@ class SearchOutputs {
 
   // The lowest robustness seen per objective (empty before the first judged evaluation).
   const std::vector<double>& best() const { return best_; }
+  // Simulations whose trace audit found something, and the issues by AuditKind over the search.
+  std::size_t audited_with_issues() const { return audited_with_issues_; }
+  const std::vector<std::size_t>& audit_totals() const { return audit_totals_; }
+
   // Whether `finding`'s files could not be written (the search then stops): it is left out of
   // the summary, and a resumed search writes it.
   bool lost(const Finding& finding) const { return lost_.count(finding.number) > 0; }
@@ -85,6 +89,8 @@ class SearchOutputs {
   std::string first_infeasible_;
   std::string first_failure_;
   std::size_t ego_failures_ = 0;
+  std::size_t audited_with_issues_ = 0;
+  std::vector<std::size_t> audit_totals_;
   using Clock = std::chrono::steady_clock;
   Clock::time_point last_summary_ = Clock::now();
   std::size_t findings_in_summary_ = 0;

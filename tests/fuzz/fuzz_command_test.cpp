@@ -215,6 +215,26 @@ TEST_F(FuzzCommandTest, AnEgoFarFromEveryLaneIsWarnedOnceBeforeTheSearch) {
   EXPECT_EQ(run.err.find(warning, first + 1), std::string::npos) << "warned more than once";
 }
 
+// The roundabout's NPCs cut across its island today (issue 17): every simulation's audit says so,
+// and the search counts it where a user sees it.
+TEST_F(FuzzCommandTest, TheTraceAuditIsCountedPerSearch) {
+  const Outcome run =
+      fuzz(source_file("corpora/avunit/roundabout_entry.avu"), {"--budget", "20", "--seed", "2"});
+  ASSERT_NE(run.exit_code, 2) << run.err;
+  const nlohmann::json audit = summary()["audit"];
+  EXPECT_EQ(audit["simulations_with_issues"], 20) << audit.dump();
+  EXPECT_GE(audit["issues"]["off_road"].get<int>(), 20) << audit.dump();
+  EXPECT_NE(run.out.find("audit: 20 of 20 simulations"), std::string::npos) << run.out;
+  EXPECT_NE(slurp(dir_ / "out" / "evaluations.csv").find("off_road="), std::string::npos);
+
+  // A scenario whose actors all behave has a clean audit and no audit line.
+  const Outcome safe = scenfuzz({"--budget", "8", "--out", (dir_ / "safe").string(), kSafe});
+  const nlohmann::json clean =
+      nlohmann::json::parse(slurp(dir_ / "safe" / "summary.json"))["audit"];
+  EXPECT_EQ(clean["simulations_with_issues"], 0) << clean.dump();
+  EXPECT_EQ(safe.out.find("audit:"), std::string::npos) << safe.out;
+}
+
 TEST_F(FuzzCommandTest, InterruptStopsCleanlyWithEverythingWritten) {
   const fs::path out = dir_ / "out";
   const pid_t child = ::fork();
