@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -196,7 +195,6 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
 
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
   reserve_samples(trace, last_step + 1);
-  std::set<std::pair<BodyId, BodyId>> collided;
   scenfuzz_observation observation{};
 
   for (std::size_t step = 0;; ++step) {
@@ -208,8 +206,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
 
     bool ego_hit = false;
+    // Each pair's first contact only: after it the world stops testing the pair.
     for (const Contact& contact : world.find_contacts()) {
-      if (!collided.insert({contact.first, contact.second}).second) continue;
+      world.ignore_pair(contact.first, contact.second);
       trace.collisions.push_back({t, contact.first, contact.second, contact.point,
                                   contact.first_side, contact.second_side});
       trace.events.push_back({TraceEventKind::collision,
