@@ -97,24 +97,30 @@ struct Bounds {
   double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
 };
 
-Bounds bounds_of(const Footprint& body) {
-  double reach_x = body.half_length, reach_y = body.half_length;
-  if (!body.round) {
-    const double c = std::abs(std::cos(body.heading)), s = std::abs(std::sin(body.heading));
-    reach_x = body.half_length * c + body.half_width * s;
-    reach_y = body.half_length * s + body.half_width * c;
-  }
-  return {body.centre.x - reach_x, body.centre.y - reach_y, body.centre.x + reach_x,
-          body.centre.y + reach_y};
+// How far a footprint reaches from its centre along x and along y.
+struct Reach {
+  double x = 0, y = 0;
+};
+
+Reach reach_of(const Footprint& body) {
+  if (body.round) return {body.half_length, body.half_length};
+  const double c = std::abs(std::cos(body.heading)), s = std::abs(std::sin(body.heading));
+  return {body.half_length * c + body.half_width * s, body.half_length * s + body.half_width * c};
 }
+
+Bounds bounds_around(MapPoint centre, Reach reach) {
+  return {centre.x - reach.x, centre.y - reach.y, centre.x + reach.x, centre.y + reach.y};
+}
+
+Bounds bounds_of(const Footprint& body) { return bounds_around(body.centre, reach_of(body)); }
 
 // FCL bounds a turned shape by the cube around its bounding sphere (CollisionObject::computeAABB),
 // 5.2 m wide for a car, which made cars in neighbouring lanes broadphase candidates at every
 // step. Bodies only turn about z and all stand on the ground, so their footprint's bounds bound
 // them exactly. A hair of margin keeps bodies that touch exactly candidates despite rounding.
-SweepBox sweep_box_of(const BodyGeometry& geometry, const MapPose& pose) {
+SweepBox sweep_box_around(MapPoint centre, Reach reach) {
   constexpr double margin = 1e-9;
-  const Bounds bounds = bounds_of(footprint_of(geometry, pose));
+  const Bounds bounds = bounds_around(centre, reach);
   return {bounds.min_x - margin, bounds.min_y - margin, bounds.max_x + margin,
           bounds.max_y + margin};
 }
@@ -227,6 +233,7 @@ struct CollisionWorld::Impl {
     MapPose pose;
     bool is_static = false;
     bool placed = true;  // object's transform is at pose
+    Reach reach;         // of the footprint at pose.heading (a car keeps its heading for long)
     std::shared_ptr<fcl::CollisionGeometryd> shape;
     std::unique_ptr<fcl::CollisionObjectd> object;
   };
@@ -274,8 +281,10 @@ BodyId CollisionWorld::add_body(const BodyGeometry& geometry, const MapPose& pos
     impl_->static_bodies.push_back(id);
     impl_->static_bounds.push_back(bounds_of(footprint_of(geometry, pose)));
   }
-  impl_->sweep.add(sweep_box_of(geometry, pose), is_static);
-  impl_->bodies.push_back({geometry, pose, is_static, true, std::move(shape), std::move(object)});
+  const Reach reach = reach_of(footprint_of(geometry, pose));
+  impl_->sweep.add(sweep_box_around(pose.position, reach), is_static);
+  impl_->bodies.push_back(
+      {geometry, pose, is_static, true, reach, std::move(shape), std::move(object)});
   return id;
 }
 
@@ -284,9 +293,11 @@ void CollisionWorld::set_pose(BodyId body, const MapPose& pose) {
   Impl::Body& moving = impl_->bodies[body];
   SCENFUZZ_DEMAND(!moving.is_static && "a static body keeps the pose it was added with");
   check_pose(pose);
+  if (pose.heading != moving.pose.heading)
+    moving.reach = reach_of(footprint_of(moving.geometry, pose));
   moving.pose = pose;
   moving.placed = false;
-  impl_->sweep.move(body, sweep_box_of(moving.geometry, pose));
+  impl_->sweep.move(body, sweep_box_around(pose.position, moving.reach));
 }
 
 void CollisionWorld::ignore_pair(BodyId a, BodyId b) {
