@@ -68,6 +68,29 @@ void append_perceived(PerceivedActor& column, const WorldObject* seen) {
   column.reversing.push_back(seen && seen->reversing ? 1 : 0);
 }
 
+// The lights' colours as runs of equal steps, written into the trace's columns when the run
+// ends: a colour per light per step reached into every one of a city map's hundreds of lights'
+// columns at every step, which cost more than the rest of recording.
+struct ColourRuns {
+  std::vector<std::vector<SignalColour>> colours;  // of every light, in each run
+  std::vector<std::size_t> steps;                  // in each run
+
+  void add(const std::vector<SignalColour>& now) {
+    if (!colours.empty() && colours.back() == now) {
+      ++steps.back();
+      return;
+    }
+    colours.push_back(now);
+    steps.push_back(1);
+  }
+
+  void write(std::vector<TraceLight>& lights) const {
+    for (std::size_t light = 0; light < lights.size(); ++light)
+      for (std::size_t run = 0; run < colours.size(); ++run)
+        lights[light].colour.insert(lights[light].colour.end(), steps[run], colours[run][light]);
+  }
+};
+
 // Room for every sample the run can take, so that recording never reallocates mid-run.
 void reserve_samples(Trace& trace, std::size_t samples) {
   trace.time.reserve(samples);
@@ -196,6 +219,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
   reserve_samples(trace, last_step + 1);
   scenfuzz_observation observation{};
+  ColourRuns colour_runs;
 
   for (std::size_t step = 0;; ++step) {
     const double t = static_cast<double>(step) * dt;
@@ -224,8 +248,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       append_sample(trace.actors[k], states[k], fixes[k]);
     }
     const std::vector<SignalColour>& colours = signals.colours_at(t);
-    for (std::size_t light = 0; light < colours.size(); ++light)
-      trace.lights[light].colour.push_back(colours[light]);
+    colour_runs.add(colours);
 
     for (std::size_t k = 1; k < actor_count; ++k) {
       WorldObject& object = truth[k - 1];
@@ -298,6 +321,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     }
     states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
   }
+  colour_runs.write(trace.lights);
   return trace;
 }
 
