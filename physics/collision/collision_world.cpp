@@ -1,7 +1,7 @@
-// The FCL facade: the only source file that includes FCL. Moving and static bodies live in two
-// broadphase managers of the same kind, so one self-query finds moving-moving candidates and one
-// cross-query moving-static candidates, and static-static pairs are never even generated. Every
-// candidate goes through FCL's narrowphase; the contact point and sides come from the footprints.
+// The FCL facade: the only source file that includes FCL. The broadphase is the project's own
+// sweep-and-prune over the bodies' footprint bounds (body_sweep.hpp); static-static pairs and
+// pairs the caller no longer needs are dropped before the narrowphase. Every remaining candidate
+// goes through FCL's narrowphase; the contact point and sides come from the footprints.
 #include "physics/collision/collision_world.hpp"
 
 #include <fcl/fcl.h>
@@ -14,18 +14,15 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <utility>
 
 #include "lang/demand.hpp"
+#include "physics/collision/body_sweep.hpp"
 
 namespace scenfuzz {
 
 namespace {
-
-// Measured by collision_benchmark: with tight bounding boxes, 10-30 moving cars step fastest with
-// the brute-force manager (an AABB test per pair); the dynamic AABB tree costs 1.5-2.5x as much
-// in flowing traffic. Sweep-and-prune got stuck for minutes in the benchmark.
-using BroadphaseManager = fcl::NaiveCollisionManagerd;
 
 // A disc's footprint is clipped as a regular polygon drawn around it, so that two overlapping
 // footprints always give a non-empty intersection. It only places the contact point.
@@ -100,38 +97,33 @@ struct Bounds {
   double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
 };
 
-Bounds bounds_of(const Footprint& body) {
-  double reach_x = body.half_length, reach_y = body.half_length;
-  if (!body.round) {
-    const double c = std::abs(std::cos(body.heading)), s = std::abs(std::sin(body.heading));
-    reach_x = body.half_length * c + body.half_width * s;
-    reach_y = body.half_length * s + body.half_width * c;
-  }
-  return {body.centre.x - reach_x, body.centre.y - reach_y, body.centre.x + reach_x,
-          body.centre.y + reach_y};
+// How far a footprint reaches from its centre along x and along y.
+struct Reach {
+  double x = 0, y = 0;
+};
+
+Reach reach_of(const Footprint& body) {
+  if (body.round) return {body.half_length, body.half_length};
+  const double c = std::abs(std::cos(body.heading)), s = std::abs(std::sin(body.heading));
+  return {body.half_length * c + body.half_width * s, body.half_length * s + body.half_width * c};
 }
+
+Bounds bounds_around(MapPoint centre, Reach reach) {
+  return {centre.x - reach.x, centre.y - reach.y, centre.x + reach.x, centre.y + reach.y};
+}
+
+Bounds bounds_of(const Footprint& body) { return bounds_around(body.centre, reach_of(body)); }
 
 // FCL bounds a turned shape by the cube around its bounding sphere (CollisionObject::computeAABB),
 // 5.2 m wide for a car, which made cars in neighbouring lanes broadphase candidates at every
-// step. Bodies only turn about z, so their footprint's bounds and their height bound them
-// exactly. A hair of margin keeps bodies that touch exactly candidates despite rounding.
-class BodyObject : public fcl::CollisionObjectd {
- public:
-  BodyObject(const BodyGeometry& geometry, const MapPose& pose)
-      : fcl::CollisionObjectd(make_shape(geometry)) {
-    place(geometry, pose);
-  }
-
-  // setTransform alone would leave the bounding box stale.
-  void place(const BodyGeometry& geometry, const MapPose& pose) {
-    constexpr double margin = 1e-9;
-    setTransform(transform_of(geometry, pose));
-    const Bounds bounds = bounds_of(footprint_of(geometry, pose));
-    const double top = geometry.shape == BodyShape::sphere ? geometry.length : geometry.height;
-    aabb.min_ = fcl::Vector3d(bounds.min_x - margin, bounds.min_y - margin, -margin);
-    aabb.max_ = fcl::Vector3d(bounds.max_x + margin, bounds.max_y + margin, top + margin);
-  }
-};
+// step. Bodies only turn about z and all stand on the ground, so their footprint's bounds bound
+// them exactly. A hair of margin keeps bodies that touch exactly candidates despite rounding.
+SweepBox sweep_box_around(MapPoint centre, Reach reach) {
+  constexpr double margin = 1e-9;
+  const Bounds bounds = bounds_around(centre, reach);
+  return {bounds.min_x - margin, bounds.min_y - margin, bounds.max_x + margin,
+          bounds.max_y + margin};
+}
 
 bool overlap(const Bounds& a, const Bounds& b) {
   return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
@@ -217,21 +209,12 @@ MapPoint contact_point(Footprint a, Footprint b) {
   return {origin.x + local.x, origin.y + local.y};
 }
 
-void* as_user_data(BodyId id) { return reinterpret_cast<void*>(static_cast<std::uintptr_t>(id)); }
-
-BodyId id_of(const fcl::CollisionObjectd* object) {
-  return static_cast<BodyId>(reinterpret_cast<std::uintptr_t>(object->getUserData()));
+std::uint64_t pair_key(BodyId a, BodyId b) {
+  const auto [low, high] = std::minmax(a, b);
+  return (static_cast<std::uint64_t>(low) << 32) | high;
 }
 
 using BodyPair = std::pair<BodyId, BodyId>;
-
-// Collects every candidate pair; returning false asks the manager for more (FCL's default
-// callback stops at the first collision).
-bool collect_candidate(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void* pairs) {
-  const BodyId first = id_of(a), second = id_of(b);
-  static_cast<std::vector<BodyPair>*>(pairs)->push_back(std::minmax(first, second));
-  return false;
-}
 
 bool fcl_collide(const fcl::CollisionObjectd& a, const fcl::CollisionObjectd& b) {
   const fcl::CollisionRequestd request;
@@ -243,18 +226,23 @@ bool fcl_collide(const fcl::CollisionObjectd& a, const fcl::CollisionObjectd& b)
 }  // namespace
 
 struct CollisionWorld::Impl {
+  // A moving body's FCL transform is brought up to date only when the narrowphase needs it: most
+  // steps most bodies are nowhere near another.
   struct Body {
     BodyGeometry geometry;
     MapPose pose;
     bool is_static = false;
-    std::unique_ptr<BodyObject> object;
+    bool placed = true;  // object's transform is at pose
+    Reach reach;         // of the footprint at pose.heading (a car keeps its heading for long)
+    std::shared_ptr<fcl::CollisionGeometryd> shape;
+    std::unique_ptr<fcl::CollisionObjectd> object;
   };
 
   std::vector<Body> bodies;
   std::vector<BodyId> static_bodies;
   std::vector<Bounds> static_bounds;  // parallel to static_bodies
-  BroadphaseManager moving_manager, static_manager;
-  bool managers_need_setup = true;
+  BodySweep sweep;
+  std::unordered_set<std::uint64_t> ignored;  // pair_key of pairs find_contacts skips
   std::vector<BodyPair> candidates;
   std::vector<Contact> contacts;
   mutable std::atomic<std::uint64_t> narrowphase_checks{0};
@@ -262,6 +250,14 @@ struct CollisionWorld::Impl {
   bool collide(const fcl::CollisionObjectd& a, const fcl::CollisionObjectd& b) const {
     narrowphase_checks.fetch_add(1, std::memory_order_relaxed);
     return fcl_collide(a, b);
+  }
+
+  const fcl::CollisionObjectd& placed_object(Body& body) {
+    if (!body.placed) {
+      body.object->setTransform(transform_of(body.geometry, body.pose));
+      body.placed = true;
+    }
+    return *body.object;
   }
 
   const Body& body(BodyId id) const {
@@ -279,17 +275,16 @@ BodyId CollisionWorld::add_body(const BodyGeometry& geometry, const MapPose& pos
   check_geometry(geometry);
   check_pose(pose);
   const auto id = static_cast<BodyId>(impl_->bodies.size());
-  auto object = std::make_unique<BodyObject>(geometry, pose);
-  object->setUserData(as_user_data(id));
+  std::shared_ptr<fcl::CollisionGeometryd> shape = make_shape(geometry);
+  auto object = std::make_unique<fcl::CollisionObjectd>(shape, transform_of(geometry, pose));
   if (is_static) {
-    impl_->static_manager.registerObject(object.get());
     impl_->static_bodies.push_back(id);
     impl_->static_bounds.push_back(bounds_of(footprint_of(geometry, pose)));
-  } else {
-    impl_->moving_manager.registerObject(object.get());
   }
-  impl_->managers_need_setup = true;
-  impl_->bodies.push_back({geometry, pose, is_static, std::move(object)});
+  const Reach reach = reach_of(footprint_of(geometry, pose));
+  impl_->sweep.add(sweep_box_around(pose.position, reach), is_static);
+  impl_->bodies.push_back(
+      {geometry, pose, is_static, true, reach, std::move(shape), std::move(object)});
   return id;
 }
 
@@ -298,8 +293,16 @@ void CollisionWorld::set_pose(BodyId body, const MapPose& pose) {
   Impl::Body& moving = impl_->bodies[body];
   SCENFUZZ_DEMAND(!moving.is_static && "a static body keeps the pose it was added with");
   check_pose(pose);
+  if (pose.heading != moving.pose.heading)
+    moving.reach = reach_of(footprint_of(moving.geometry, pose));
   moving.pose = pose;
-  moving.object->place(moving.geometry, pose);
+  moving.placed = false;
+  impl_->sweep.move(body, sweep_box_around(pose.position, moving.reach));
+}
+
+void CollisionWorld::ignore_pair(BodyId a, BodyId b) {
+  SCENFUZZ_DEMAND(a < impl_->bodies.size() && b < impl_->bodies.size() && "no such body");
+  impl_->ignored.insert(pair_key(a, b));
 }
 
 std::size_t CollisionWorld::body_count() const { return impl_->bodies.size(); }
@@ -311,23 +314,15 @@ Footprint CollisionWorld::footprint(BodyId body) const {
 
 const std::vector<Contact>& CollisionWorld::find_contacts() {
   Impl& world = *impl_;
-  if (world.managers_need_setup) {
-    world.moving_manager.setup();
-    world.static_manager.setup();
-    world.managers_need_setup = false;
-  }
-  world.moving_manager.update();
-
-  world.candidates.clear();
-  world.moving_manager.collide(&world.candidates, collect_candidate);
-  world.moving_manager.collide(&world.static_manager, &world.candidates, collect_candidate);
+  world.sweep.overlapping_pairs(world.candidates);
   std::sort(world.candidates.begin(), world.candidates.end());
 
   world.contacts.clear();
   for (const auto& [first, second] : world.candidates) {
-    const Impl::Body& a = world.bodies[first];
-    const Impl::Body& b = world.bodies[second];
-    if (!world.collide(*a.object, *b.object)) continue;
+    if (!world.ignored.empty() && world.ignored.contains(pair_key(first, second))) continue;
+    Impl::Body& a = world.bodies[first];
+    Impl::Body& b = world.bodies[second];
+    if (!world.collide(world.placed_object(a), world.placed_object(b))) continue;
     const Footprint footprint_a = footprint_of(a.geometry, a.pose);
     const Footprint footprint_b = footprint_of(b.geometry, b.pose);
     const MapPoint point = contact_point(footprint_a, footprint_b);
@@ -341,8 +336,10 @@ double CollisionWorld::distance(BodyId a, BodyId b) const {
   SCENFUZZ_DEMAND(a != b && "a body's distance to itself");
   const Impl::Body& body_a = impl_->body(a);
   const Impl::Body& body_b = impl_->body(b);
-  const fcl::CollisionObjectd& object_a = *body_a.object;
-  const fcl::CollisionObjectd& object_b = *body_b.object;
+  // Objects at the bodies' current poses, built here: set_pose leaves transforms to
+  // find_contacts, and a const query must not update them (it may run concurrently).
+  const fcl::CollisionObjectd object_a(body_a.shape, transform_of(body_a.geometry, body_a.pose));
+  const fcl::CollisionObjectd object_b(body_b.shape, transform_of(body_b.geometry, body_b.pose));
   const double footprint_distance = signed_distance(footprint_of(body_a.geometry, body_a.pose),
                                                     footprint_of(body_b.geometry, body_b.pose));
   // Footprints can overlap while the solids do not (a ball taller than a car, over its bonnet).
@@ -360,10 +357,10 @@ bool CollisionWorld::touches_static(const BodyGeometry& geometry, const MapPose&
   check_geometry(geometry);
   check_pose(pose);
   const Bounds query_bounds = bounds_of(footprint_of(geometry, pose));
-  std::optional<BodyObject> query;  // built only when some bounds overlap
+  std::optional<fcl::CollisionObjectd> query;  // built only when some bounds overlap
   for (std::size_t i = 0; i < impl_->static_bodies.size(); ++i) {
     if (!overlap(query_bounds, impl_->static_bounds[i])) continue;
-    if (!query) query.emplace(geometry, pose);
+    if (!query) query.emplace(make_shape(geometry), transform_of(geometry, pose));
     if (impl_->collide(*query, *impl_->bodies[impl_->static_bodies[i]].object)) return true;
   }
   return false;

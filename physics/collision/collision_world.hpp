@@ -1,6 +1,7 @@
 // The collision world: every body as an FCL shape (vehicles as boxes, pedestrians as cylinders,
-// obstacles as the scenario's sphere, box, cone or cylinder), an FCL broadphase manager updated
-// each step and narrowphase on its candidate pairs. FCL stays inside collision_world.cpp.
+// obstacles as the scenario's sphere, box, cone or cylinder), a sweep-and-prune broadphase over
+// their footprints updated each step and FCL's narrowphase on its candidate pairs. FCL stays inside
+// collision_world.cpp.
 #pragma once
 
 #include <cstdint>
@@ -47,8 +48,13 @@ class CollisionWorld {
   std::size_t body_count() const;
   Footprint footprint(BodyId body) const;
 
-  // Every pair of bodies in contact at the current poses, sorted by (first, second).
+  // Every pair of bodies in contact at the current poses, sorted by (first, second), except
+  // the ignored pairs.
   const std::vector<Contact>& find_contacts();
+
+  // find_contacts no longer tests or reports the pair (either order): a simulation records
+  // only a pair's first contact, and scripted actors can overlap for many steps after it.
+  void ignore_pair(BodyId a, BodyId b);
 
   // Footprint distance: FCL's distance when apart, 0 when touching, minus the penetration depth
   // (signed_distance of the footprints) when overlapping.

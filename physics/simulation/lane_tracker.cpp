@@ -32,17 +32,44 @@ struct LaneLook {
   bool past_end = false;       // the point lies beyond the lane's end
 };
 
+// Far more than project_to_segment's rounding (about 1e-14 m at a map's scale): a segment whose
+// bounding box is farther than a known distance plus this is surely not nearer.
+constexpr double kPruneMargin = 1e-9;
+
+// Whether segment k of `line` is surely farther from `point` than `distance`: the distance to its
+// bounding box bounds the distance to it from below, and costs no division and no square root.
+bool surely_farther(const Polyline& line, std::size_t k, MapPoint point, double distance) {
+  const MapPoint& a = line.points()[k];
+  const MapPoint& b = line.points()[k + 1];
+  const double dx = std::max({std::min(a.x, b.x) - point.x, 0.0, point.x - std::max(a.x, b.x)});
+  const double dy = std::max({std::min(a.y, b.y) - point.y, 0.0, point.y - std::max(a.y, b.y)});
+  const double bound = distance + kPruneMargin;
+  return dx * dx + dy * dy > bound * bound;
+}
+
+// The nearest segment among first..last, the first of them on a tie. Segments surely farther
+// than one already projected are skipped: they are not the nearest, so skipping them cannot change
+// which one is, and the segment the actor was on last step is usually still the nearest.
+PolylineProjection nearest_in_window(const Polyline& centre, std::size_t first, std::size_t last,
+                                     std::size_t hint, MapPoint point) {
+  const PolylineProjection at_hint = centre.project_to_segment(point, hint);
+  std::optional<PolylineProjection> best;
+  for (std::size_t k = first; k <= last; ++k) {
+    const double known = best ? std::min(best->distance, at_hint.distance) : at_hint.distance;
+    if (k != hint && surely_farther(centre, k, point, known)) continue;
+    const PolylineProjection candidate = k == hint ? at_hint : centre.project_to_segment(point, k);
+    if (!best || candidate.distance < best->distance) best = candidate;
+  }
+  return *best;
+}
+
 // Looks for `point` on `lane` among the segments around `segment` (the whole lane when the
 // nearest is at the edge of that window).
 LaneLook look_on(const RoadMap& map, LaneIndex lane, std::size_t segment, MapPoint point) {
   const Polyline& centre = map.lane(lane).centre_line;
   std::size_t first = segment > kSearchSegments ? segment - kSearchSegments : 0;
   std::size_t last = std::min(segment + kSearchSegments, centre.segment_count() - 1);
-  PolylineProjection best = centre.project_to_segment(point, first);
-  for (std::size_t k = first + 1; k <= last; ++k) {
-    PolylineProjection candidate = centre.project_to_segment(point, k);
-    if (candidate.distance < best.distance) best = candidate;
-  }
+  PolylineProjection best = nearest_in_window(centre, first, last, std::min(segment, last), point);
   bool at_window_edge = (best.segment == first && first > 0) ||
                         (best.segment == last && last + 1 < centre.segment_count());
   if (at_window_edge) best = centre.project(point);

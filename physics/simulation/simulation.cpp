@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -68,6 +67,29 @@ void append_perceived(PerceivedActor& column, const WorldObject* seen) {
   column.speed.push_back(seen ? seen->speed : nan);
   column.reversing.push_back(seen && seen->reversing ? 1 : 0);
 }
+
+// The lights' colours as runs of equal steps, written into the trace's columns when the run
+// ends: a colour per light per step reached into every one of a city map's hundreds of lights'
+// columns at every step, which cost more than the rest of recording.
+struct ColourRuns {
+  std::vector<std::vector<SignalColour>> colours;  // of every light, in each run
+  std::vector<std::size_t> steps;                  // in each run
+
+  void add(const std::vector<SignalColour>& now) {
+    if (!colours.empty() && colours.back() == now) {
+      ++steps.back();
+      return;
+    }
+    colours.push_back(now);
+    steps.push_back(1);
+  }
+
+  void write(std::vector<TraceLight>& lights) const {
+    for (std::size_t light = 0; light < lights.size(); ++light)
+      for (std::size_t run = 0; run < colours.size(); ++run)
+        lights[light].colour.insert(lights[light].colour.end(), steps[run], colours[run][light]);
+  }
+};
 
 // Room for every sample the run can take, so that recording never reallocates mid-run.
 void reserve_samples(Trace& trace, std::size_t samples) {
@@ -196,8 +218,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
 
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
   reserve_samples(trace, last_step + 1);
-  std::set<std::pair<BodyId, BodyId>> collided;
   scenfuzz_observation observation{};
+  ColourRuns colour_runs;
 
   for (std::size_t step = 0;; ++step) {
     const double t = static_cast<double>(step) * dt;
@@ -208,8 +230,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
 
     bool ego_hit = false;
+    // Each pair's first contact only: after it the world stops testing the pair.
     for (const Contact& contact : world.find_contacts()) {
-      if (!collided.insert({contact.first, contact.second}).second) continue;
+      world.ignore_pair(contact.first, contact.second);
       trace.collisions.push_back({t, contact.first, contact.second, contact.point,
                                   contact.first_side, contact.second_side});
       trace.events.push_back({TraceEventKind::collision,
@@ -225,8 +248,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       append_sample(trace.actors[k], states[k], fixes[k]);
     }
     const std::vector<SignalColour>& colours = signals.colours_at(t);
-    for (std::size_t light = 0; light < colours.size(); ++light)
-      trace.lights[light].colour.push_back(colours[light]);
+    colour_runs.add(colours);
 
     for (std::size_t k = 1; k < actor_count; ++k) {
       WorldObject& object = truth[k - 1];
@@ -299,6 +321,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     }
     states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
   }
+  colour_runs.write(trace.lights);
   return trace;
 }
 

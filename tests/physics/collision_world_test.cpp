@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -198,6 +200,71 @@ TEST(CollisionWorld, OnlyBroadphaseCandidatesReachTheNarrowphase) {
   world.set_pose(1, at(4.0, 0));
   world.find_contacts();
   EXPECT_EQ(world.narrowphase_checks(), 1u);
+}
+
+TEST(CollisionWorld, IgnoredPairsAreNeitherTestedNorReported) {
+  CollisionWorld world;
+  world.add_body(kCar, at(0, 0), false);
+  world.add_body(kCar, at(1, 0), false);
+  world.add_body(kCar, at(2, 0.5), false);
+  ASSERT_EQ(world.find_contacts().size(), 3u);
+  world.ignore_pair(1, 0);  // either order
+  const std::uint64_t checks = world.narrowphase_checks();
+  const std::vector<Contact>& contacts = world.find_contacts();
+  ASSERT_EQ(contacts.size(), 2u);
+  EXPECT_EQ(std::make_pair(contacts[0].first, contacts[0].second), std::make_pair(0u, 2u));
+  EXPECT_EQ(std::make_pair(contacts[1].first, contacts[1].second), std::make_pair(1u, 2u));
+  EXPECT_EQ(world.narrowphase_checks() - checks, 2u) << "the ignored pair costs no narrowphase";
+}
+
+// The broadphase keeps the footprint bounds of a body that turns in place up to date (a car
+// across the road reaches 2.3 m sideways, along it 0.95 m).
+TEST(CollisionWorld, TurningInPlaceUpdatesTheBroadphase) {
+  CollisionWorld world;
+  world.add_body(kCar, at(0, 0), false);
+  world.add_body(kCar, at(0, 3), false);
+  EXPECT_TRUE(world.find_contacts().empty());
+  world.set_pose(0, at(0, 0, pi / 2));
+  EXPECT_EQ(world.find_contacts().size(), 1u);
+  world.set_pose(0, at(0, 0, 0));
+  EXPECT_TRUE(world.find_contacts().empty());
+}
+
+// Cars strewn at random, moved at random for many steps: the contacts are exactly the pairs
+// whose solids overlap, as brute force over every pair says (FCL's distance is 0 for them).
+TEST(CollisionWorld, ContactsMatchBruteForceInRandomTraffic) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> coordinate(0, 40), angle(-pi, pi), nudge(-1.5, 1.5);
+  CollisionWorld world;
+  std::vector<MapPose> poses;
+  for (int i = 0; i < 40; ++i) {
+    poses.push_back(at(coordinate(random), coordinate(random), angle(random)));
+    world.add_body(kCar, poses.back(), i >= 35);  // the last five are static
+  }
+  for (int step = 0; step < 30; ++step) {
+    for (std::size_t i = 0; i < 35; ++i) {
+      poses[i] = at(poses[i].position.x + nudge(random), poses[i].position.y + nudge(random),
+                    poses[i].heading + 0.2 * nudge(random));
+      world.set_pose(static_cast<BodyId>(i), poses[i]);
+    }
+    std::vector<std::pair<BodyId, BodyId>> found;
+    for (const Contact& contact : world.find_contacts())
+      found.emplace_back(contact.first, contact.second);
+    std::vector<std::pair<BodyId, BodyId>> expected;
+    for (BodyId a = 0; a < 40; ++a)
+      for (BodyId b = a + 1; b < 40; ++b)
+        if (a < 35 && signed_distance(world.footprint(a), world.footprint(b)) < -1e-6)
+          expected.emplace_back(a, b);
+    // Pairs closer than the tolerance may go either way; every clear overlap must be found.
+    for (const auto& pair : expected)
+      EXPECT_NE(std::find(found.begin(), found.end(), pair), found.end())
+          << "step " << step << ": " << pair.first << "-" << pair.second;
+    for (const auto& [a, b] : found) {
+      EXPECT_FALSE(a >= 35 && b >= 35) << "static-static";
+      EXPECT_LT(signed_distance(world.footprint(a), world.footprint(b)), 1e-6);
+    }
+    EXPECT_TRUE(std::is_sorted(found.begin(), found.end()));
+  }
 }
 
 TEST(CollisionWorld, DistanceIsFootprintDistanceForCars) {

@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -60,6 +63,29 @@ TEST(AngleDifference, WrapsIntoHalfOpenRange) {
   EXPECT_NEAR(angle_difference(-std::numbers::pi, std::numbers::pi), 0, 1e-12);
   EXPECT_NEAR(angle_difference(std::numbers::pi, 0), std::numbers::pi, 1e-12);
   EXPECT_NEAR(angle_difference(-std::numbers::pi, 0), std::numbers::pi, 1e-12);
+}
+
+// The shortcut for differences already in range gives what remainder gives, bit for bit: at the
+// ends of the range, an ulp inside and outside them, and at random.
+TEST(AngleDifference, EqualsTheRemainderDefinitionExactly) {
+  const double pi = std::numbers::pi;
+  auto by_remainder = [&](double a, double b) {
+    double difference = std::remainder(a - b, 2 * pi);
+    if (difference <= -pi) difference += 2 * pi;
+    return difference;
+  };
+  std::vector<double> angles = {0.0, -0.0, pi, -pi, 2 * pi, -2 * pi, 3 * pi, 1e-300, 1e6};
+  for (double edge : {pi, -pi})
+    for (double direction : {-10.0, 10.0}) angles.push_back(std::nextafter(edge, direction));
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> wide(-20, 20);
+  for (int i = 0; i < 10000; ++i) angles.push_back(wide(random));
+  for (double a : angles)
+    for (double b : {0.0, 0.5, -3.0, pi}) {
+      const double expected = by_remainder(a, b), got = angle_difference(a, b);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(expected))
+          << a << " - " << b;
+    }
 }
 
 }  // namespace

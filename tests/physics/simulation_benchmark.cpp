@@ -1,7 +1,8 @@
 // Real-time factor of the simulation (simulated seconds per wall second, one core) on the three
 // bundled benchmark scenarios in corpora/benchmarks: 2 actors on a straight road, 10 at a
-// crossroads, 30 on san_francisco. Each run simulates the full 30 s (collisions do not end it).
-// docs/performance.md says how to run it and what it measured.
+// crossroads, 30 on san_francisco, and 101 on san_francisco (100 cars spread over its lanes). Each
+// run simulates the full 30 s (collisions do not end it). docs/performance.md says how to run it
+// and what it measured.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -76,9 +77,14 @@ void BM_SanFrancisco30Actors(benchmark::State& state) {
   simulate_scenario(state, "san_francisco_30_actors.avu");
 }
 
+void BM_SanFrancisco100Actors(benchmark::State& state) {
+  simulate_scenario(state, "san_francisco_100_actors.avu");
+}
+
 BENCHMARK(BM_Straight2Actors)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Crossroads10Actors)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SanFrancisco30Actors)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SanFrancisco100Actors)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace scenfuzz
