@@ -111,6 +111,9 @@ std::string SearchOutputs::resume(std::vector<EvaluationRecord>& journal) {
   std::error_code error;
   fs::create_directories(dir_ / "findings", error);
   if (error) return "cannot create '" + (dir_ / "findings").string() + "': " + error.message();
+  // Killed between search.json and the journal's header: nothing was evaluated yet.
+  if (!fs::exists(dir_ / "evaluations.csv", error))
+    return write_file_atomically(dir_ / "evaluations.csv", journal_.header());
   std::string failure;
   std::optional<std::vector<EvaluationRecord>> records =
       journal_.read(dir_ / "evaluations.csv", failure);

@@ -173,6 +173,11 @@ TEST_F(OutputJournalTest, AnEarlierSearchIsRefusedResumedOrReplaced) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("its seed was 2, now 3"), std::string::npos) << run.err;
 
+  // A search killed before its journal had a header resumes from nothing.
+  fs::remove(out / "evaluations.csv");
+  EXPECT_EQ(scenfuzz(args({"--resume"})).exit_code, 1);
+  EXPECT_EQ(search_result(out), first);
+
   // --force replaces it: no finding of the first search is left beside the new ones.
   run = scenfuzz(args({"--force"}, "3", "10"));
   EXPECT_NE(run.exit_code, 2) << run.err;
