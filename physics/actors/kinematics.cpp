@@ -51,6 +51,11 @@ void move_along_arc(KinematicState& state, double direction, double distance, do
 
 }  // namespace
 
+double step_yaw_rate(double heading_before, double heading_after, double dt) {
+  SCENFUZZ_DEMAND(dt > 0);
+  return angle_difference(heading_after, heading_before) / dt;
+}
+
 KinematicState step_bicycle(const KinematicState& state, const VehicleControl& control,
                             const ActorClass& vehicle, double dt) {
   SCENFUZZ_DEMAND(dt > 0);
@@ -86,6 +91,8 @@ KinematicState step_bicycle(const KinematicState& state, const VehicleControl& c
   next.speed = profile.end_speed;
   next.reversing = backwards && profile.end_speed > 0;
   next.acceleration = profile.acceleration;
+  // step_yaw_rate's value (a step turns far less than half a turn), without the rounding of
+  // wrapping the heading and taking the difference back.
   next.yaw_rate = turn / dt;
   return next;
 }
@@ -107,7 +114,7 @@ KinematicState step_pedestrian(const KinematicState& state, const PedestrianCont
   next.y += profile.distance * std::sin(next.heading);
   next.speed = profile.end_speed;
   next.acceleration = profile.acceleration;
-  next.yaw_rate = angle_difference(next.heading, state.heading) / dt;
+  next.yaw_rate = step_yaw_rate(state.heading, next.heading, dt);
   next.steering_angle = 0;
   next.reversing = false;  // a pedestrian turns to face where it walks
   return next;

@@ -13,12 +13,17 @@ struct KinematicState {
   double heading = 0;         // rad, counter-clockwise from east
   double speed = 0;           // m/s, a magnitude: never negative, whichever way the actor moves
   double acceleration = 0;    // m/s^2 over the last step: how fast `speed` grew (negative: braking)
-  double yaw_rate = 0;        // rad/s over the last step
+  double yaw_rate = 0;        // rad/s over the last step (step_yaw_rate)
   double steering_angle = 0;  // rad, front wheel, positive left; vehicles only
   // Moving backwards, against its heading (a vehicle in reverse): the body keeps facing the way
   // it did, so footprints and the sides a collision hits stay right. Never set at a standstill.
   bool reversing = false;
 };
+
+// The trace's yaw rate convention: the yaw rate recorded with a state is its heading's change
+// since the state one step of `dt` before (wrapped to (-pi, pi]) over `dt`, so that a trace's
+// yaw rate is its heading's derivative sample by sample. Every actor's motion records it so.
+double step_yaw_rate(double heading_before, double heading_after, double dt);
 
 // The velocity along the heading: the speed, negative while reversing.
 inline double longitudinal_velocity(const KinematicState& state) {

@@ -30,7 +30,9 @@ class Trajectory {
   // no path: path() is empty and duration() is 0).
   static Trajectory standing(MapPose pose);
 
-  // The state at time t >= 0 (since the start of the motion).
+  // The state at time t >= 0 (since the start of the motion). Its yaw rate is the path's turn
+  // rate at t (speed x curvature), not the heading's change over a step that a trace records
+  // (step_yaw_rate): a simulation step that samples the trajectory replaces it.
   KinematicState state_at(double t) const;
   const Polyline& path() const { return path_; }
   double duration() const;  // time to reach the end of the path (infinite if it never does)
@@ -38,7 +40,7 @@ class Trajectory {
  private:
   Polyline path_;
   std::vector<double> segment_headings_;  // of each path segment, for state_at
-  MapPose standing_pose_;  // where an actor without a path stays
+  MapPose standing_pose_;                 // where an actor without a path stays
   // Knots of the piecewise constant-acceleration profile: arc length, speed and time at each.
   std::vector<double> knot_s_, knot_speed_, knot_time_;
 };

@@ -376,14 +376,17 @@ void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
     lateral_rate_ = -lateral_from_ * smooth_progress_rate(x) / lateral_duration_;
   }
   auto pose = lane_pose_at(*map_, at.lane, at.s, at.lateral);
-  if (!pose) return;
+  if (!pose) {
+    state_.yaw_rate = 0;  // the actor stays where it was: its heading did not change
+    return;
+  }
   // The heading follows the path the sideways move draws (at walking pace or less, the body
   // would swing round; a vehicle there turns no further than a slow one would). Backing up
   // sideways, the body turns the other way: its rear leads.
   double sideways = std::atan2(lateral_rate_, std::max(std::abs(v1), 1.0));
   double heading = pose->heading + (v1 < 0 ? -sideways : sideways);
   state_.acceleration = (std::abs(v1) - std::abs(v0)) / dt;
-  state_.yaw_rate = angle_difference(heading, state_.heading) / dt;
+  state_.yaw_rate = step_yaw_rate(state_.heading, heading, dt);
   state_.x = pose->position.x;
   state_.y = pose->position.y;
   state_.heading = heading;

@@ -58,6 +58,18 @@ void append_sample(TraceActor& actor, const KinematicState& state, LaneFix lane)
   actor.reversing.push_back(state.reversing ? 1 : 0);
 }
 
+// A scripted actor's state at t, one step of dt after `before` (null at the first sample, which
+// has no step before it). Trajectory::state_at gives the path's instantaneous turn rate, speed x
+// curvature; the trace records the heading's change over the step instead (step_yaw_rate), as the
+// bicycle model does: they differ wherever the curvature changes within a step (a path's heading
+// blends at its vertices, a pedestrian's walk turns at its corners).
+KinematicState scripted_state(const Trajectory& trajectory, double t, const KinematicState* before,
+                              double dt) {
+  KinematicState state = trajectory.state_at(t);
+  if (before) state.yaw_rate = step_yaw_rate(before->heading, state.heading, dt);
+  return state;
+}
+
 void append_perceived(PerceivedActor& column, const WorldObject* seen) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   column.detected.push_back(seen ? 1 : 0);
@@ -224,8 +236,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   for (std::size_t step = 0;; ++step) {
     const double t = static_cast<double>(step) * dt;
     for (std::size_t k = 1; k <= setup.actors.size(); ++k)
-      states[k] =
-          drivers[k - 1] ? drivers[k - 1]->state() : setup.actors[k - 1].trajectory.state_at(t);
+      states[k] = drivers[k - 1] ? drivers[k - 1]->state()
+                                 : scripted_state(setup.actors[k - 1].trajectory, t,
+                                                  step > 0 ? &states[k] : nullptr, dt);
     for (std::size_t k = 0; k < first_obstacle; ++k)
       world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
 
