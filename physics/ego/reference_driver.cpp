@@ -109,7 +109,11 @@ double ReferenceDriver::steering(const KinematicState& ego) const {
   double target_s = route_.progress() + lookahead;
   MapPoint target;
   if (target_s <= route_.length()) {
+    // Overtaking moves the aim sideways, as the plan has it at the target point.
     target = route_.path().point_at(target_s);
+    double offset = planned_lateral(overtake_, target_s);
+    double heading = route_.path().heading_at(target_s);
+    target = {target.x - offset * std::sin(heading), target.y + offset * std::cos(heading)};
   } else {
     // Beyond the end, keep aiming along the path's last direction.
     MapPoint end = route_.path().point_at(route_.length());
@@ -124,6 +128,79 @@ double ReferenceDriver::steering(const KinematicState& ego) const {
   return std::atan(2 * vehicle_.wheelbase * std::sin(alpha) / reach);
 }
 
+std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) const {
+  // Every vehicle and obstacle across the route's own lane (as if the ego kept to it), from a
+  // little behind the ego on: what it might pass, and what it has been passing. Pedestrians
+  // standing in its way count too once its patience with them is over.
+  std::vector<Blocker> found;
+  const KinematicState& ego = input.ego;
+  double horizon = std::max(60.0, ego.speed * 6 + 30);
+  double half_width = vehicle_.width / 2 + kCorridorMargin;
+  for (const WorldObject& object : input.objects) {
+    bool pedestrian = object.kind == TraceActorKind::pedestrian;
+    if (pedestrian && !(patience_over_ && motion_.speed(object.id) < settings_.standing_speed))
+      continue;
+    double dx = object.x - ego.x, dy = object.y - ego.y;
+    if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
+    auto at = route_.locate({object.x, object.y}, 30, horizon, horizon);
+    if (!at || at->beyond_end) continue;
+    double relative = angle_difference(object.heading, route_.path().heading_at(at->s));
+    if (std::abs(at->lateral) - extent_across(object, relative) - half_width > 0) continue;
+    double along = extent_along(object, relative);
+    double velocity = object.reversing ? -object.speed : object.speed;
+    found.push_back({&object, at->s - along, at->s + along, velocity * std::cos(relative)});
+  }
+  std::sort(found.begin(), found.end(),
+            [](const Blocker& a, const Blocker& b) { return a.rear_s < b.rear_s; });
+  return found;
+}
+
+void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
+  waiting_to_pass_.reset();
+  if (route_.empty()) return;
+  OvertakeContext context{map_,
+                          route_,
+                          vehicle_,
+                          input.ego,
+                          input.objects,
+                          desired_speed(route_.progress()),
+                          settings_.comfortable_acceleration,
+                          dt};
+  std::vector<Blocker> in_lane = objects_in_lane(input);
+  if (overtake_.active) {
+    update_overtake(overtake_, context, in_lane, settings_.overtaking);
+    return;
+  }
+  double front_s = route_.progress() + vehicle_.length / 2;
+  std::erase_if(in_lane, [&](const Blocker& b) { return b.rear_s <= front_s; });
+  bool waiting = false;
+  if (auto plan = plan_overtake(context, in_lane, settings_.overtaking, waiting))
+    overtake_ = *plan;
+  else if (waiting && in_lane.front().speed < 0.5)
+    waiting_to_pass_ = in_lane.front().object->id;
+}
+
+void ReferenceDriver::watch_patience(const DriverInput& input) {
+  if (!held_by_standing_) {
+    held_since_ = -1;
+    patience_over_ = false;
+    return;
+  }
+  if (held_since_ < 0 && input.ego.speed < kStoppedSpeed) held_since_ = input.time;
+  if (held_since_ >= 0 && input.time - held_since_ >= settings_.pedestrian_patience)
+    patience_over_ = true;
+}
+
+bool ReferenceDriver::on_own_lane(MapPoint point) const {
+  auto at = route_.locate(point, 5, 200, 20);
+  if (!at || at->beyond_end) return false;
+  auto lane = route_.lane_at(at->s);
+  if (!lane) return false;
+  double lateral = at->lateral - planned_lateral(overtake_, at->s);
+  return lateral >= 0 ? lateral <= lane_left_width_at(map_, lane->lane, lane->lane_s)
+                      : -lateral <= lane_right_width_at(map_, lane->lane, lane->lane_s);
+}
+
 void ReferenceDriver::collect_object_constraints(const DriverInput& input, double front_s) {
   const KinematicState& ego = input.ego;
   double horizon = std::max(60.0, ego.speed * 6 + 30);
@@ -136,6 +213,10 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     if (!at || at->beyond_end || at->s <= route_.progress()) continue;
     double path_heading = route_.path().heading_at(at->s);
     double relative = angle_difference(object.heading, path_heading);
+    // Sideways from where the ego will be there (off the path while it overtakes).
+    double lateral = at->lateral - planned_lateral(overtake_, at->s);
+    bool pedestrian = object.kind == TraceActorKind::pedestrian;
+    bool standing = pedestrian && motion_.speed(object.id) < settings_.standing_speed;
     double across = extent_across(object, relative);
     double along = extent_along(object, relative);
     double gap = at->s - along - front_s;
@@ -143,23 +224,28 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     double velocity = object.reversing ? -object.speed : object.speed;
     double lead_speed = velocity * std::cos(relative);
     double lateral_speed = velocity * std::sin(relative);
-    double clearance = std::abs(at->lateral) - across - half_width;
+    double clearance = std::abs(lateral) - across - half_width;
 
     bool in_path = clearance <= 0;
-    if (!in_path && lateral_speed * at->lateral < 0) {
+    // A pedestrian standing beside the path is not about to enter it (what perception makes of
+    // its speed and heading is noise).
+    if (!in_path && !standing && lateral_speed * lateral < 0) {
       // Moving towards the path: will it be there by the time the ego is?
       double time_to_enter = clearance / std::abs(lateral_speed);
       double time_to_arrive = gap / std::max(ego.speed, 1.0);
-      bool pedestrian = object.kind == TraceActorKind::pedestrian;
       double window = pedestrian ? time_to_arrive + 2.0 : 1.0;
       in_path = time_to_enter < std::min(window, kPredictionTime + (pedestrian ? 2.0 : 0.0));
       if (in_path && pedestrian) lead_speed = 0;  // it will stand in the way, not drive ahead
     }
     if (!in_path) continue;
-    DriverReason reason =
-        object.kind == TraceActorKind::pedestrian ? DriverReason::pedestrian : DriverReason::lead;
-    constraints_.push_back(
-        {gap, settings_.standstill_gap, std::max(lead_speed, 0.0), true, reason});
+    if (standing) held_by_standing_ = true;
+    DriverReason reason = pedestrian ? DriverReason::pedestrian : DriverReason::lead;
+    // Behind something it means to pass, the ego keeps room to pull out.
+    double clearance_kept =
+        waiting_to_pass_ == object.id
+            ? std::max(settings_.standstill_gap, settings_.overtaking.waiting_gap)
+            : settings_.standstill_gap;
+    constraints_.push_back({gap, clearance_kept, std::max(lead_speed, 0.0), true, reason});
   }
 }
 
@@ -205,13 +291,22 @@ void ReferenceDriver::collect_feature_constraints(const DriverInput& input, doub
       case FeatureKind::yield_sign: break;
       case FeatureKind::crosswalk: {
         if (to_line < full_stop) break;  // too late to stop before it: clear it instead
+        // Pedestrians walking in or at the crosswalk stop the ego; ones standing there only
+        // when they stand on its lane, and then only until its patience is over.
         const Crosswalk& crosswalk = map_.crosswalks()[feature.index];
-        bool occupied =
-            std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
-              return o.kind == TraceActorKind::pedestrian &&
-                     near_polygon({o.x, o.y}, crosswalk.outline, settings_.crosswalk_clearance);
-            });
-        if (occupied)
+        bool walking = false, standing = false;
+        for (const WorldObject& o : input.objects) {
+          if (o.kind != TraceActorKind::pedestrian ||
+              !near_polygon({o.x, o.y}, crosswalk.outline, settings_.crosswalk_clearance))
+            continue;
+          if (motion_.speed(o.id) >= settings_.standing_speed)
+            walking = true;
+          else if (on_own_lane({o.x, o.y}))
+            standing = true;
+        }
+        if (standing) held_by_standing_ = true;
+        if (standing && patience_over_) creeping_ = true;
+        if (walking || (standing && !patience_over_))
           constraints_.push_back(
               {to_line, settings_.stop_line_gap, 0, false, DriverReason::pedestrian});
         break;
@@ -263,16 +358,24 @@ double ReferenceDriver::idm_acceleration(double speed, double desired,
 
 VehicleControl ReferenceDriver::step(const DriverInput& input) {
   const KinematicState& ego = input.ego;
+  double dt = last_time_ >= 0 ? input.time - last_time_ : 0.1;
+  last_time_ = input.time;
+  motion_.update(input.objects, dt);
+  plan_manoeuvre(input, dt);
   double front_s = route_.progress() + vehicle_.length / 2;
   constraints_.clear();
+  held_by_standing_ = false;
+  creeping_ = false;
   collect_object_constraints(input, front_s);
   collect_feature_constraints(input, front_s);
   collect_lane_change_constraints(input, front_s);
+  watch_patience(input);
 
   double desired = desired_speed(route_.progress());
+  if (creeping_) desired = std::min(desired, settings_.creeping_speed);
   double a = settings_.comfortable_acceleration;
   double acceleration = a * (1 - fourth_power(ego.speed / desired));
-  reason_ = DriverReason::cruise;
+  reason_ = creeping_ ? DriverReason::creeping : DriverReason::cruise;
   for (const Constraint& constraint : constraints_) {
     double candidate = idm_acceleration(ego.speed, desired, constraint);
     if (candidate < acceleration) {

@@ -2,14 +2,19 @@
 // interesting. It follows its route (pure pursuit on the route's path), keeps the speed limit and
 // slows for bends, follows the perceived lead with the Intelligent Driver Model, brakes hard on a
 // short time-to-collision, stops for red (and catchable yellow) lights, stops at stop signs and
-// then goes on, yields to pedestrians on or about to enter its path and in crosswalks ahead, and
-// stops at its target. It sees only what perception gives it.
+// then goes on, passes stopped or much slower vehicles, cyclists and obstacles when a lane beside
+// allows it (overtaking.hpp), yields to pedestrians on or walking into its path and in crosswalks
+// ahead but not to ones standing beside it, and stops at its target. It sees only what
+// perception gives it.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
+#include "physics/ego/motion_filter.hpp"
+#include "physics/ego/overtaking.hpp"
 #include "physics/ego/perception.hpp"
 #include "physics/ego/route_tracker.hpp"
 
@@ -31,6 +36,10 @@ struct DriverSettings {
   double lane_change_gap = 5.0;              // m kept free ahead of and behind the ego in the
   double lane_change_time_gap = 1.0;         // next lane, plus this many seconds of the speed of
                                              // whoever would be behind (or of the ego, ahead)
+  double standing_speed = 0.4;     // m/s: a pedestrian slower than this (smoothed) is standing
+  double pedestrian_patience = 5;  // s held by standing pedestrians before creeping on
+  double creeping_speed = 1.5;     // m/s past standing pedestrians after that
+  OvertakingSettings overtaking;
 };
 
 // What the driver knows at one step.
@@ -51,6 +60,7 @@ enum class DriverReason {
   pedestrian,
   target,
   lane_change,  // waiting for a gap in the next lane
+  creeping,     // past pedestrians that stood in its way longer than its patience
 };
 
 class ReferenceDriver {
@@ -60,6 +70,7 @@ class ReferenceDriver {
 
   VehicleControl step(const DriverInput& input);
   DriverReason last_reason() const { return reason_; }
+  const OvertakePlan& overtake() const { return overtake_; }
 
  private:
   struct Constraint {
@@ -72,6 +83,10 @@ class ReferenceDriver {
 
   double desired_speed(double s) const;
   double steering(const KinematicState& ego) const;
+  std::vector<Blocker> objects_in_lane(const DriverInput& input) const;
+  void plan_manoeuvre(const DriverInput& input, double dt);
+  void watch_patience(const DriverInput& input);
+  bool on_own_lane(MapPoint point) const;
   void collect_object_constraints(const DriverInput& input, double front_s);
   void collect_feature_constraints(const DriverInput& input, double front_s);
   void collect_lane_change_constraints(const DriverInput& input, double front_s);
@@ -87,6 +102,14 @@ class ReferenceDriver {
   std::vector<bool> stop_sign_served_;  // per route feature
   double stopped_since_ = -1;
   DriverReason reason_ = DriverReason::cruise;
+  MotionFilter motion_;
+  OvertakePlan overtake_;
+  std::optional<ActorId> waiting_to_pass_;  // the blocker stood behind with room to pull out
+  double last_time_ = -1;
+  bool held_by_standing_ = false;  // a standing pedestrian would stop the ego (this step)
+  double held_since_ = -1;         // since when, without a break
+  bool patience_over_ = false;
+  bool creeping_ = false;  // this step: creeping past standing pedestrians
 };
 
 }  // namespace scenfuzz

@@ -25,6 +25,7 @@ RouteTracker::RouteTracker(const RoadMap& map, const LaneRoute& route,
   if (route.segments.empty()) return;
   path_ = route_path(map, route);
   lane_changes_ = lane_change_stretches(map, route);
+  segments_ = route.segments;
 
   double route_s = 0;
   for (const RouteSegment& segment : route.segments) {
@@ -82,6 +83,17 @@ double RouteTracker::speed_limit_at(double s) const {
   std::size_t index =
       next == limit_s_.begin() ? 0 : static_cast<std::size_t>(next - limit_s_.begin()) - 1;
   return limit_speed_[index];
+}
+
+std::optional<RouteLanePosition> RouteTracker::lane_at(double s) const {
+  if (segments_.empty()) return std::nullopt;
+  auto next = std::upper_bound(limit_s_.begin(), limit_s_.end(), s);
+  std::size_t index =
+      next == limit_s_.begin() ? 0 : static_cast<std::size_t>(next - limit_s_.begin()) - 1;
+  const RouteSegment& segment = segments_[index];
+  double begin = limit_s_[index];
+  return RouteLanePosition{segment.lane, segment.s_begin + (s - begin),
+                           begin + segment.s_end - segment.s_begin};
 }
 
 double RouteTracker::curvature_at(double s) const {

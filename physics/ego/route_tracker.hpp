@@ -25,6 +25,13 @@ struct RouteFeature {
   double s_end = 0;
 };
 
+// Which lane of the route the path follows at some arc length, and where on that lane.
+struct RouteLanePosition {
+  LaneIndex lane = 0;
+  double lane_s = 0;    // arc length on the lane's centre line
+  double lane_end = 0;  // path arc length where the route leaves this lane
+};
+
 // Where a point lies along the path: arc length and signed lateral offset (left positive).
 struct PathCoordinate {
   double s = 0;
@@ -51,6 +58,9 @@ class RouteTracker {
   // Where the path moves from one lane to the next, in path arc length, in order.
   const std::vector<LaneChangeStretch>& lane_changes() const { return lane_changes_; }
   double speed_limit_at(double s) const;
+  // The route lane at path arc length s (nullopt for an empty route). Inside a lane change
+  // stretch the path lies between two lanes; this is the lane the route is on at s.
+  std::optional<RouteLanePosition> lane_at(double s) const;
   // The path's curvature (1/m, unsigned) around arc length s.
   double curvature_at(double s) const;
 
@@ -63,7 +73,8 @@ class RouteTracker {
   Polyline path_;
   std::vector<RouteFeature> features_;
   std::vector<LaneChangeStretch> lane_changes_;
-  std::vector<double> limit_s_, limit_speed_;  // speed limit from each s on
+  std::vector<double> limit_s_, limit_speed_;  // speed limit from each s on (one per segment)
+  std::vector<RouteSegment> segments_;         // the route's, in the order of limit_s_
   std::vector<double> curvature_;              // per path vertex
   std::size_t segment_ = 0;
   double progress_ = 0;

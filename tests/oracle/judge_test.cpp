@@ -109,7 +109,7 @@ TEST(JudgeTest, EverySpecOfEveryCorpusSeedIsJudgedOnItsTrace) {
 constexpr const char* kRearEnd = R"(
 ego = AV((("east_0" -> 20.0), , 20.0), (("east_0" -> 400.0), , ));
 npc = Vehicle(("east_0" -> 60.0, , 0.0));
-scenario = CreateScenario{load("straight"); ego; {npc}; {}; {};};
+scenario = CreateScenario{load("straight?two_way=0&lanes=1"); ego; {npc}; {}; {};};
 Trace trace = EXE(scenario);
 ego_state = trace[ego];
 npc_truth = trace[truth][npc];
@@ -124,7 +124,8 @@ TEST(JudgeTest, AViolatedSpecNamesItsAtomAndTime) {
   ASSERT_TRUE(run.trace) << run.errors;
   ASSERT_EQ(run.errors, "");
   ASSERT_EQ(run.verdicts.size(), 2u);
-  // The ego brakes behind a stopped car: it gets closer than 20 m, and it stops.
+  // The ego brakes behind a stopped car it cannot pass (one lane between kerbs): it gets closer
+  // than 20 m, and it stops.
   const SpecVerdict& gap = run.verdicts[0];
   EXPECT_EQ(gap.name, "gap");
   EXPECT_TRUE(gap.violated());

@@ -22,7 +22,8 @@ std::string scenario_text(const std::string& map, const std::string& ego, const 
 }
 
 TEST(SimulationTest, StopsBehindAStoppedCarFrom20MetresPerSecond) {
-  auto run = simulate_text(scenario_text("straight", "ego", "parked", "",
+  // One lane between kerbs: the ego cannot pass the car (reference_driver_test.cpp has it pass).
+  auto run = simulate_text(scenario_text("straight?two_way=0&lanes=1", "ego", "parked", "",
                                          "ego = AV((\"east_0\"->20, , 20), (\"east_0\"->480));\n"
                                          "parked = Vehicle((\"east_0\"->250, , 0));\n"));
   ASSERT_TRUE(run.trace) << run.errors;

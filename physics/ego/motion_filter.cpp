@@ -1,0 +1,36 @@
+// Exponential smoothing of each perceived object's velocity vector (not of its speed: the noise
+// of the heading then averages out too).
+#include "physics/ego/motion_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace scenfuzz {
+
+void MotionFilter::update(std::span<const WorldObject> objects, double dt) {
+  double weight = std::clamp(dt / time_constant_, 0.0, 1.0);
+  std::vector<Track> next;
+  next.reserve(objects.size());
+  auto old = tracks_.begin();
+  for (const WorldObject& object : objects) {
+    double velocity = object.reversing ? -object.speed : object.speed;
+    double vx = velocity * std::cos(object.heading), vy = velocity * std::sin(object.heading);
+    while (old != tracks_.end() && old->id < object.id) ++old;
+    if (old != tracks_.end() && old->id == object.id) {
+      vx = old->vx + weight * (vx - old->vx);
+      vy = old->vy + weight * (vy - old->vy);
+    }
+    next.push_back({object.id, vx, vy});
+  }
+  tracks_ = std::move(next);
+}
+
+double MotionFilter::speed(ActorId id) const {
+  auto found = std::lower_bound(tracks_.begin(), tracks_.end(), id,
+                                [](const Track& t, ActorId wanted) { return t.id < wanted; });
+  if (found == tracks_.end() || found->id != id) return 0;
+  return std::hypot(found->vx, found->vy);
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,33 @@
+// Smoothed velocities of perceived objects, by id: perception's speed and heading carry noise, so
+// that a pedestrian standing still seems to drift a few centimetres a second in any direction.
+// The reference driver tells standing from walking pedestrians by the smoothed speed.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "physics/ego/perception.hpp"
+
+namespace scenfuzz {
+
+class MotionFilter {
+ public:
+  explicit MotionFilter(double time_constant = 0.5) : time_constant_(time_constant) {}
+
+  // Folds in one step's objects (sorted by id, as perception gives them) `dt` seconds after the
+  // previous call; objects no longer seen are forgotten.
+  void update(std::span<const WorldObject> objects, double dt);
+
+  // The smoothed speed of an object seen at the last update (0 for an unknown id).
+  double speed(ActorId id) const;
+
+ private:
+  struct Track {
+    ActorId id = 0;
+    double vx = 0, vy = 0;
+  };
+  double time_constant_;
+  std::vector<Track> tracks_;  // sorted by id
+};
+
+}  // namespace scenfuzz

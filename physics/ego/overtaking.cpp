@@ -1,0 +1,343 @@
+// Overtaking: which lane to pass in (the lines that may be crossed, the lane's extent, no
+// junction, light, sign, crosswalk or lane change of the route during the manoeuvre), whether the
+// traffic there leaves room, how long the pass takes, and the sideways profile of the manoeuvre.
+#include "physics/ego/overtaking.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/map/lane_queries.hpp"
+
+namespace scenfuzz {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kStationary = 0.5;      // m/s: a blocker slower than this is standing
+constexpr double kTimingStep = 0.1;      // s, of the pass's time integration
+constexpr double kLongestPass = 40.0;    // s: a pass that would take longer is not started
+constexpr double kLaneTolerance = 0.75;  // m the passing lane may wander from its offset
+
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+// Whether a lane boundary may be crossed to pass an object moving at `speed`: broken lines and
+// unknown ones (maps that do not say) always; solid and double lines only to pass something
+// standing or as slow as a bicycle (as UK Highway Code rule 129 and many US states allow);
+// a kerb never.
+bool may_cross(BoundaryType type, double speed, const OvertakingSettings& settings) {
+  switch (type) {
+    case BoundaryType::unknown:
+    case BoundaryType::dotted_yellow:
+    case BoundaryType::dotted_white: return true;
+    case BoundaryType::solid_yellow:
+    case BoundaryType::solid_white:
+    case BoundaryType::double_yellow: return speed <= settings.slow_enough_for_solid_line;
+    case BoundaryType::curb: return false;
+  }
+  return false;
+}
+
+struct Candidate {
+  LaneIndex lane = 0;
+  bool oncoming = false;
+  BoundaryType boundary = BoundaryType::unknown;
+};
+
+// The row of slow objects to pass: the first blocker and those close enough behind each other
+// that the ego could not slot in between.
+struct Cluster {
+  double rear_s = 0, front_s = 0, speed = 0;
+  std::size_t count = 0;
+};
+
+double return_room(const ActorClass& vehicle, double speed, const OvertakingSettings& settings) {
+  return vehicle.length + settings.gap_ahead + settings.time_gap * speed;
+}
+
+Cluster cluster_of(std::span<const Blocker> blockers, const ActorClass& vehicle, double slow_below,
+                   const OvertakingSettings& settings) {
+  Cluster cluster{blockers[0].rear_s, blockers[0].front_s, blockers[0].speed, 1};
+  for (std::size_t i = 1; i < blockers.size(); ++i) {
+    const Blocker& next = blockers[i];
+    if (next.rear_s - cluster.front_s > return_room(vehicle, cluster.speed, settings) ||
+        next.speed >= slow_below)
+      break;
+    cluster.front_s = std::max(cluster.front_s, next.front_s);
+    cluster.speed = std::min(cluster.speed, next.speed);
+    ++cluster.count;
+  }
+  return cluster;
+}
+
+// How long the pass takes and how far the ego travels meanwhile: it accelerates comfortably to
+// its desired speed until it is a return room past the cluster's front, then moves back.
+struct PassTiming {
+  bool possible = false;
+  double time = 0;
+  double travel = 0;
+};
+
+PassTiming pass_timing(const OvertakeContext& context, double gap, const Cluster& cluster,
+                       double offset, const OvertakingSettings& settings) {
+  PassTiming timing;
+  double passing_speed = std::max(context.desired_speed, context.ego.speed);
+  if (passing_speed < cluster.speed + 1.0) return timing;
+  double needed = gap + (cluster.front_s - cluster.rear_s) + context.vehicle.length +
+                  settings.gap_ahead + settings.time_gap * cluster.speed;
+  double speed = context.ego.speed, relative = 0;
+  while (relative < needed) {
+    if (timing.time > kLongestPass) return timing;
+    speed = std::min(passing_speed, speed + context.comfortable_acceleration * kTimingStep);
+    relative += (speed - cluster.speed) * kTimingStep;
+    timing.travel += speed * kTimingStep;
+    timing.time += kTimingStep;
+  }
+  // The ego has left the passing lane about 70 % of the way through its move back.
+  double back = 0.7 * std::abs(offset) / settings.lateral_speed;
+  timing.time += back;
+  timing.travel += speed * back;
+  timing.possible = true;
+  return timing;
+}
+
+// The signed offset (left positive) of `lane`'s centre line from the path at arc length s, and
+// whether the lane runs beside the path there.
+std::optional<double> lane_offset(const OvertakeContext& context, LaneIndex lane, double s) {
+  const Polyline& path = context.route.path();
+  MapPoint p = path.point_at(s);
+  double heading = path.heading_at(s);
+  PolylineProjection on = context.map.lane(lane).centre_line.project(p);
+  if (on.distance > std::abs(on.lateral) + 1e-6) return std::nullopt;  // off its ends
+  MapPoint q = context.map.lane(lane).centre_line.point_at(on.s);
+  return std::cos(heading) * (q.y - p.y) - std::sin(heading) * (q.x - p.x);
+}
+
+// Whether nothing on the route keeps the ego from leaving its lane between path arc lengths
+// `from` and `to`: the route stays on the lane, without a junction, feature or lane change.
+bool route_allows(const OvertakeContext& context, LaneIndex lane, double from, double to) {
+  const RouteTracker& route = context.route;
+  if (to > route.length() - 1) return false;
+  auto here = route.lane_at(from);
+  if (!here || here->lane != lane || here->lane_end < to) return false;
+  if (context.map.lane(lane).junction) return false;
+  for (const RouteFeature& feature : route.features())
+    if (feature.s_end >= from && feature.s <= to) return false;
+  for (const LaneChangeStretch& change : route.lane_changes())
+    if (change.end >= from && change.begin <= to) return false;
+  return true;
+}
+
+// Whether the traffic in the passing lane leaves room for the whole pass.
+bool passing_lane_clear(const OvertakeContext& context, const Candidate& candidate,
+                        const Cluster& cluster, const PassTiming& timing,
+                        const OvertakingSettings& settings, std::span<const ActorId> ignored) {
+  const Lane& lane = context.map.lane(candidate.lane);
+  const KinematicState& ego = context.ego;
+  if (candidate.oncoming) {
+    double limit = lane.speed_limit > 0 ? lane.speed_limit : context.desired_speed;
+    // Traffic the ego cannot see yet may come at the limit from beyond what it can see; it
+    // gets the margin that traffic in sight gets.
+    double reach = context.vehicle.length + settings.gap_ahead;
+    if (timing.travel + reach + limit * (timing.time + settings.oncoming_margin) >
+        settings.sight_distance)
+      return false;
+  }
+  PolylineProjection ego_on = lane.centre_line.project({ego.x, ego.y});
+  for (const WorldObject& o : context.objects) {
+    if (std::find(ignored.begin(), ignored.end(), o.id) != ignored.end()) continue;
+    PolylineProjection on = lane.centre_line.project({o.x, o.y});
+    double half_width = on.lateral >= 0 ? lane_left_width_at(context.map, candidate.lane, on.s)
+                                        : lane_right_width_at(context.map, candidate.lane, on.s);
+    if (on.distance > half_width + o.width / 2) continue;
+    double reach = (context.vehicle.length + o.length) / 2 + settings.gap_ahead;
+    double velocity = o.reversing ? -o.speed : o.speed;
+    double along = velocity * std::cos(angle_difference(o.heading, ego.heading));
+    // Centre to centre, along the ego's direction of travel.
+    double ahead = candidate.oncoming ? ego_on.s - on.s : on.s - ego_on.s;
+    if (candidate.oncoming) {
+      if (ahead < -reach) continue;  // behind the ego
+      double closing = std::max(0.0, -along);
+      if (ahead < timing.travel + reach + closing * (timing.time + settings.oncoming_margin))
+        return false;
+      continue;
+    }
+    if (ahead < 0) {
+      double closing = std::max(0.0, along - ego.speed);
+      double behind_room = reach + settings.time_gap * along +
+                           closing * closing / (2 * context.comfortable_acceleration);
+      if (-ahead < behind_room) return false;
+    } else {
+      if (ahead < reach + settings.time_gap * ego.speed) return false;
+      // Something slow in the passing lane within the pass would only be caught up with there.
+      if (along < cluster.speed + settings.slower_by && ahead < timing.travel + reach) return false;
+    }
+  }
+  return true;
+}
+
+std::vector<Candidate> candidates(const Lane& lane, bool standing) {
+  std::vector<Candidate> found;
+  for (LaneIndex next : lane.left_forward_neighbours)
+    found.push_back({next, false, lane.left_boundary_type});
+  // Passing on the right only round something standing (a parked or broken-down car).
+  if (standing)
+    for (LaneIndex next : lane.right_forward_neighbours)
+      found.push_back({next, false, lane.right_boundary_type});
+  for (LaneIndex next : lane.left_reverse_neighbours)
+    found.push_back({next, true, lane.left_boundary_type});
+  return found;
+}
+
+std::vector<ActorId> passed_ids(std::span<const Blocker> blockers, std::size_t count) {
+  std::vector<ActorId> ids;
+  for (std::size_t i = 0; i < count; ++i) ids.push_back(blockers[i].object->id);
+  return ids;
+}
+
+void start_back(OvertakePlan& plan, double s, double speed, const OvertakingSettings& settings) {
+  plan.back_from = planned_lateral(plan, s);
+  plan.back_begin = s;
+  plan.back_end = s + std::max(settings.shortest_move,
+                               speed * std::abs(plan.back_from) / settings.lateral_speed);
+}
+
+}  // namespace
+
+double planned_lateral(const OvertakePlan& plan, double s) {
+  if (!plan.active) return 0;
+  if (s >= plan.back_begin) {
+    double span = std::max(plan.back_end - plan.back_begin, 1e-6);
+    return plan.back_from * (1 - smoothstep((s - plan.back_begin) / span));
+  }
+  double span = std::max(plan.out_end - plan.out_begin, 1e-6);
+  return plan.offset * smoothstep((s - plan.out_begin) / span);
+}
+
+std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
+                                          std::span<const Blocker> blockers,
+                                          const OvertakingSettings& settings, bool& waiting) {
+  waiting = false;
+  if (!settings.enabled || blockers.empty() || context.route.empty()) return std::nullopt;
+  const Blocker& first = blockers[0];
+  double desired = context.desired_speed;
+  double slow_below = std::min(desired - settings.slower_by, settings.slower_fraction * desired);
+  if (first.speed >= slow_below) return std::nullopt;
+  const KinematicState& ego = context.ego;
+  double progress = context.route.progress();
+  double front = progress + context.vehicle.length / 2;
+  double gap = first.rear_s - front;
+  if (gap > std::max(30.0, ego.speed * 4)) return std::nullopt;  // decide when closer
+  Cluster cluster = cluster_of(blockers, context.vehicle, slow_below, settings);
+  if (cluster.front_s - cluster.rear_s > settings.longest_cluster) return std::nullopt;
+  auto here = context.route.lane_at(progress);
+  if (!here) return std::nullopt;
+  bool standing = cluster.speed < kStationary;
+  std::vector<ActorId> ignored = passed_ids(blockers, cluster.count);
+
+  for (const Candidate& candidate : candidates(context.map.lane(here->lane), standing)) {
+    if (!may_cross(candidate.boundary, cluster.speed, settings)) continue;
+    auto offset = lane_offset(context, candidate.lane, progress);
+    if (!offset) continue;
+    PassTiming timing = pass_timing(context, gap, cluster, *offset, settings);
+    if (!timing.possible) continue;
+    double end = progress + timing.travel;
+    if (!route_allows(context, here->lane, progress, end)) continue;
+    auto offset_at_end = lane_offset(context, candidate.lane, end);
+    if (!offset_at_end || std::abs(*offset_at_end - *offset) > kLaneTolerance) continue;
+
+    // The move out: at the usual sideways speed, quicker when the room to the blocker (what
+    // the ego travels before it reaches the blocker's rear) asks for it.
+    double closing = ego.speed - cluster.speed;
+    double room = closing > 0.1 ? gap * ego.speed / closing : kInfinity;
+    if (ego.speed < 0.1) room = gap;
+    double usual =
+        std::max(settings.shortest_move, ego.speed * std::abs(*offset) / settings.lateral_speed);
+    double quickest = std::max(settings.shortest_move,
+                               ego.speed * std::abs(*offset) / settings.fastest_lateral_speed);
+    double length = std::min(usual, 0.9 * room);
+    if (length < quickest ||
+        !passing_lane_clear(context, candidate, cluster, timing, settings, ignored)) {
+      waiting = true;
+      continue;
+    }
+    OvertakePlan plan;
+    plan.active = true;
+    plan.oncoming = candidate.oncoming;
+    plan.lane = candidate.lane;
+    plan.offset = *offset;
+    plan.out_begin = progress;
+    plan.out_end = progress + length;
+    for (std::size_t i = 0; i < cluster.count; ++i)
+      plan.passing.push_back(
+          {blockers[i].object->id, blockers[i].rear_s, blockers[i].front_s, blockers[i].speed});
+    return plan;
+  }
+  return std::nullopt;
+}
+
+void update_overtake(OvertakePlan& plan, const OvertakeContext& context,
+                     std::span<const Blocker> slow_ahead, const OvertakingSettings& settings) {
+  if (!plan.active) return;
+  const RouteTracker& route = context.route;
+  double progress = route.progress();
+  if (progress >= plan.back_end) {
+    plan = OvertakePlan{};
+    return;
+  }
+  // What the ego knows of the objects it passes: refreshed when seen, else moved on.
+  for (OvertakePlan::Passed& passed : plan.passing) {
+    auto seen = std::find_if(slow_ahead.begin(), slow_ahead.end(),
+                             [&](const Blocker& b) { return b.object->id == passed.id; });
+    if (seen != slow_ahead.end()) {
+      passed.rear_s = seen->rear_s;
+      passed.front_s = seen->front_s;
+      passed.speed = seen->speed;
+    } else {
+      passed.rear_s += passed.speed * context.dt;
+      passed.front_s += passed.speed * context.dt;
+    }
+  }
+  if (plan.back_begin < kInfinity) return;  // on the way back
+
+  double front = progress + context.vehicle.length / 2;
+  double rear = progress - context.vehicle.length / 2;
+  double first_rear = kInfinity, last_front = -kInfinity, slowest = kInfinity;
+  for (const OvertakePlan::Passed& passed : plan.passing) {
+    first_rear = std::min(first_rear, passed.rear_s);
+    last_front = std::max(last_front, passed.front_s);
+    slowest = std::min(slowest, passed.speed);
+  }
+  if (plan.oncoming && front < first_rear) {
+    // Not yet level: if the oncoming lane no longer leaves room, give up and go back.
+    Cluster cluster{first_rear, last_front, slowest, plan.passing.size()};
+    PassTiming timing = pass_timing(context, first_rear - front, cluster, plan.offset, settings);
+    std::vector<ActorId> ignored;
+    for (const auto& passed : plan.passing) ignored.push_back(passed.id);
+    if (!timing.possible || !passing_lane_clear(context, {plan.lane, true, BoundaryType::unknown},
+                                                cluster, timing, settings, ignored)) {
+      start_back(plan, progress, context.ego.speed, settings);
+      return;
+    }
+  }
+  // Slow objects in the original lane just past the passed ones are passed too.
+  double back_length = std::max(settings.shortest_move,
+                                context.ego.speed * std::abs(plan.offset) / settings.lateral_speed);
+  for (const Blocker& b : slow_ahead) {
+    bool known = std::any_of(plan.passing.begin(), plan.passing.end(),
+                             [&](const auto& passed) { return passed.id == b.object->id; });
+    if (known || b.rear_s < front) continue;
+    bool in_the_way = b.rear_s - front < back_length + return_room(context.vehicle, 0, settings);
+    if (in_the_way && b.speed < context.ego.speed - 1.0)
+      plan.passing.push_back({b.object->id, b.rear_s, b.front_s, b.speed});
+    else if (in_the_way && b.rear_s - front < back_length)
+      return;  // too close to move back in front of yet
+  }
+  bool all_passed = std::all_of(plan.passing.begin(), plan.passing.end(), [&](const auto& p) {
+    return rear - p.front_s >= settings.gap_ahead + settings.time_gap * p.speed;
+  });
+  if (all_passed) start_back(plan, progress, context.ego.speed, settings);
+}
+
+}  // namespace scenfuzz

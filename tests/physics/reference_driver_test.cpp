@@ -1,0 +1,145 @@
+// The reference driver on small scenarios where a real driver would not get stuck: it passes a
+// stopped car when the lane beside is free, passes a cyclist through a clear oncoming lane but
+// follows it while an oncoming car makes that unsafe, does not wait for a pedestrian standing at
+// the kerb, and still stops for one walking into its lane.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "simulation_fixtures.hpp"
+
+namespace scenfuzz {
+namespace {
+
+using test::closest_approach;
+using test::simulate_text;
+
+std::string scenario(const std::string& map, const std::string& npcs,
+                     const std::string& pedestrians, const std::string& obstacles,
+                     const std::string& body) {
+  return body + "\nscenario = CreateScenario{load(\"" + map + "\");\nego;\n{" + npcs + "};\n{" +
+         pedestrians + "};\n{" + obstacles + "};\n};\n";
+}
+
+SimulationOptions lasting(double seconds) {
+  SimulationOptions options;
+  options.duration = seconds;
+  return options;
+}
+
+double largest(const std::vector<double>& values) {
+  return *std::max_element(values.begin(), values.end());
+}
+
+TEST(ReferenceDriverTest, PassesAStoppedCarOnATwoLaneOneWayRoad) {
+  // east_0 (y = -5.25) and east_1 (y = -1.75), a broken line between them.
+  auto run = simulate_text(scenario("straight?two_way=0", "parked", "", "",
+                                    "ego = AV((\"east_0\"->20, , 15), (\"east_0\"->400));\n"
+                                    "parked = Vehicle((\"east_0\"->150, , 0));\n"),
+                           lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  EXPECT_GT(largest(trace.actors[0].y), -2.5) << "the ego should have moved into east_1";
+  EXPECT_LT(trace.actors[0].y.back(), -4.5) << "and come back into east_0";
+}
+
+TEST(ReferenceDriverTest, PassesAStoppedCarWhenTheCarBesideHasGone) {
+  // A car in east_1 beside the ego at first: the ego waits behind the parked car, then passes.
+  auto run = simulate_text(scenario("straight?two_way=0", "parked, beside", "", "",
+                                    "ego = AV((\"east_0\"->20, , 10), (\"east_0\"->300));\n"
+                                    "parked = Vehicle((\"east_0\"->70, , 0));\n"
+                                    "beside = Vehicle((\"east_1\"->15, , 3), "
+                                    "uniform((\"east_1\"->15, , 3)), (\"east_1\"->499));\n"),
+                           lasting(90));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  EXPECT_GT(closest_approach(trace, 0, 2), 0.5);
+}
+
+// One lane each way, 40 km/h, the centre line a double yellow: a cyclist at 3 m/s may be passed
+// across it (as slow as a bicycle), when the oncoming lane is clear.
+std::string cyclist_on_two_way_road(const std::string& oncoming) {
+  std::string npcs = "bike";
+  std::string body =
+      "ego = AV((\"east_0\"->20, , 11), (\"east_0\"->420));\n"
+      "bike = Vehicle((\"east_0\"->70, , 3), uniform((\"east_0\"->70, , 3)), (\"east_0\"->499), "
+      "(\"Bicycle\", green));\n";
+  if (!oncoming.empty()) {
+    npcs += ", car";
+    body += "car = Vehicle((\"west_0\"->" + oncoming + ", , 11), uniform((\"west_0\"->" + oncoming +
+            ", , 11)), (\"west_0\"->499));\n";
+  }
+  return scenario("straight?lanes=1&speed_limit=11", npcs, "", "", body);
+}
+
+TEST(ReferenceDriverTest, PassesACyclistThroughAClearOncomingLane) {
+  auto run = simulate_text(cyclist_on_two_way_road(""), lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  EXPECT_GT(closest_approach(trace, 0, 1), 1.0) << "a wide berth for the cyclist";
+  EXPECT_GT(largest(trace.actors[0].y), 0.5) << "the ego should have used the oncoming lane";
+}
+
+TEST(ReferenceDriverTest, FollowsTheCyclistWhileAnOncomingCarMakesPassingUnsafe) {
+  // The oncoming car starts at x = 250 (west_0 runs from x = 500 to 0), in sight when the ego
+  // catches up with the cyclist; closing at 22 m/s it would meet the ego during the pass, so the
+  // ego stays behind the cyclist until the car has gone by, and passes then.
+  auto run = simulate_text(cyclist_on_two_way_road("250"), lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  EXPECT_GT(closest_approach(trace, 0, 2), 1.0) << "never nearer than side by side in its lane";
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  const TraceActor& ego = trace.actors[0];
+  const TraceActor& car = trace.actors[2];
+  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+    if (car.x[i] > ego.x[i]) {
+      ASSERT_LT(ego.y[i], -0.5) << "the ego pulled out at t = " << trace.time[i]
+                                << " with the oncoming car still ahead";
+    }
+  }
+}
+
+TEST(ReferenceDriverTest, DoesNotWaitForeverForAPedestrianStandingAtTheKerb) {
+  // On t_junction the west arm's crosswalk runs from x = -15 to -11; the pedestrian stands on
+  // the pavement beside it (the road's edge is y = -7) and never crosses.
+  auto run = simulate_text(scenario("t_junction", "", "ped", "",
+                                    "ego = AV((\"west_in_0\"->60, , 10), (\"east_out_0\"->60));\n"
+                                    "ped = Pedestrian(((-13, -8), 90 deg, 0));\n"),
+                           lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+}
+
+TEST(ReferenceDriverTest, StopsForAPedestrianWalkingIntoItsLane) {
+  // The pedestrian walks from the pavement into east_0 and stops in its middle.
+  auto run = simulate_text(
+      scenario("straight?two_way=0&lanes=1", "", "ped", "",
+               "ego = AV((\"east_0\"->20, , 12), (\"east_0\"->400));\n"
+               "ped = Pedestrian(((90, -5), 90 deg, 1.4), Waypoint(((90, -2.5), , 1.4)), "
+               "((90, -1.75), , 0));\n"),
+      lasting(30));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_GT(closest_approach(trace, 0, 1), 1.0);
+  const TraceActor& ego = trace.actors[0];
+  EXPECT_LT(ego.speed.back(), 0.2) << "the ego waits for the pedestrian in its lane";
+  EXPECT_LT(largest(ego.x), 90.0);
+}
+
+}  // namespace
+}  // namespace scenfuzz
