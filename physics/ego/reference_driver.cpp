@@ -240,11 +240,13 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     if (!in_path) continue;
     if (standing) held_by_standing_ = true;
     DriverReason reason = pedestrian ? DriverReason::pedestrian : DriverReason::lead;
-    // Behind something it means to pass, the ego keeps room to pull out.
-    double clearance_kept =
-        waiting_to_pass_ == object.id
-            ? std::max(settings_.standstill_gap, settings_.overtaking.waiting_gap)
-            : settings_.standstill_gap;
+    // Behind something it means to pass, the ego keeps room to pull out, as much as it still
+    // has: winning back a gap it is already inside would take a harsh brake at walking pace.
+    double clearance_kept = settings_.standstill_gap;
+    if (waiting_to_pass_ == object.id)
+      clearance_kept =
+          std::clamp(gap, settings_.standstill_gap,
+                     std::max(settings_.standstill_gap, settings_.overtaking.waiting_gap));
     constraints_.push_back({gap, clearance_kept, std::max(lead_speed, 0.0), true, reason});
   }
 }

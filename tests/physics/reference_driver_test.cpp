@@ -47,6 +47,34 @@ TEST(ReferenceDriverTest, PassesAStoppedCarOnATwoLaneOneWayRoad) {
   EXPECT_LT(trace.actors[0].y.back(), -4.5) << "and come back into east_0";
 }
 
+// From a finding of stop_and_go_harsh_braking (its scenario and seed as written): at 1.3 m/s and
+// 9 m behind a crawling car, the ego decided to wait to pass it, wanted 12 m of room and braked
+// at 8 m/s^2 to win it back.
+TEST(ReferenceDriverTest, WaitingToPassNeverBrakesHarshlyToMakeRoom) {
+  const std::string text =
+      "ego_vehicle = AV((\"east_0\"->15.346549152740469, , 6.849728892155392), "
+      "(\"east_0\"->420), (\"Lincoln2017MKZ\", white));\n"
+      "npc1 = Vehicle((\"east_0\"->47.17824642915126, , 7.352490784313085), "
+      "Waypoint(((\"east_0\"->90.67795236701227, , 0.6608137228058366), "
+      "(\"east_0\"->152.04196943805192, , 9.9662548895136), "
+      "(\"east_0\"->219.51342473965423, , 1.1181736732233432), "
+      "(\"east_0\"->271.63154994897343, , 10))), (\"east_0\"->495), (\"Sedan\", white));\n"
+      "npc2 = Vehicle((\"east_1\"->21.374808345035753, , 5.081956299993578), "
+      "W(((\"east_1\"->137.7115265822348, , 2.6237940154488486), "
+      "(\"east_1\"->206.16326523301964, , 9))), (\"east_1\"->495), (\"Van\", blue));\n"
+      "env = Environment(8:15, {cloudiness: 0.7});\n"
+      "scenario = CreateScenario{load(\"straight\"); ego_vehicle; {npc1, npc2}; {}; {}; env;};\n";
+  SimulationOptions options = lasting(30);
+  options.seed = 13233401231234309212ull;
+  auto run = simulate_text(text, options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  const TraceActor& ego = run.trace->actors[0];
+  EXPECT_TRUE(run.trace->collisions.empty());
+  for (std::size_t i = 0; i < ego.acceleration.size(); ++i)
+    EXPECT_GT(ego.acceleration[i], -5.5)
+        << "at " << run.trace->time[i] << " s, speed " << ego.speed[i];
+}
+
 TEST(ReferenceDriverTest, PassesAStoppedCarWhenTheCarBesideHasGone) {
   // A car in east_1 beside the ego at first: the ego waits behind the parked car, then passes.
   auto run = simulate_text(scenario("straight?two_way=0", "parked, beside", "", "",
