@@ -32,6 +32,13 @@ double largest(const std::vector<double>& values) {
   return *std::max_element(values.begin(), values.end());
 }
 
+// No collision, the target reached, and never closer than 0.5 m to actor 1.
+void expect_reached_target_safely(const Trace& trace) {
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+}
+
 TEST(ReferenceDriverTest, PassesAStoppedCarOnATwoLaneOneWayRoad) {
   // east_0 (y = -5.25) and east_1 (y = -1.75), a broken line between them.
   auto run = simulate_text(scenario("straight?two_way=0", "parked", "", "",
@@ -40,9 +47,7 @@ TEST(ReferenceDriverTest, PassesAStoppedCarOnATwoLaneOneWayRoad) {
                            lasting(60));
   ASSERT_TRUE(run.trace) << run.errors;
   const Trace& trace = *run.trace;
-  EXPECT_TRUE(trace.collisions.empty());
-  EXPECT_EQ(trace.end, EndReason::target_reached);
-  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  expect_reached_target_safely(trace);
   EXPECT_GT(largest(trace.actors[0].y), -2.5) << "the ego should have moved into east_1";
   EXPECT_LT(trace.actors[0].y.back(), -4.5) << "and come back into east_0";
 }
@@ -85,9 +90,7 @@ TEST(ReferenceDriverTest, PassesAStoppedCarWhenTheCarBesideHasGone) {
                            lasting(90));
   ASSERT_TRUE(run.trace) << run.errors;
   const Trace& trace = *run.trace;
-  EXPECT_TRUE(trace.collisions.empty());
-  EXPECT_EQ(trace.end, EndReason::target_reached);
-  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  expect_reached_target_safely(trace);
   EXPECT_GT(closest_approach(trace, 0, 2), 0.5);
 }
 
@@ -147,9 +150,7 @@ TEST(ReferenceDriverTest, DoesNotWaitForeverForAPedestrianStandingAtTheKerb) {
                            lasting(60));
   ASSERT_TRUE(run.trace) << run.errors;
   const Trace& trace = *run.trace;
-  EXPECT_TRUE(trace.collisions.empty());
-  EXPECT_EQ(trace.end, EndReason::target_reached);
-  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  expect_reached_target_safely(trace);
 }
 
 TEST(ReferenceDriverTest, StopsForAPedestrianWalkingIntoItsLane) {
