@@ -243,6 +243,10 @@ struct ScenarioEvent {
   bool operator==(const ScenarioEvent&) const = default;
 };
 
+// How lane-following NPCs drive: reacting to traffic (IDM car following, lights, signs, giving
+// way) as simulator NPCs do, or along their script without looking (docs/simulation.md).
+enum class NpcBehaviour { reactive, scripted };
+
 struct ScenarioTemplate {
   SourceLanguage language = SourceLanguage::avunit;
   std::vector<Parameter> parameters;
@@ -261,6 +265,8 @@ struct ScenarioTemplate {
   std::vector<NamedValue> timers;
   std::vector<Formula> end_conditions;
   std::optional<Value> duration;  // seconds
+  // As the file sets it; unset means reactive unless the command line says otherwise.
+  std::optional<NpcBehaviour> npc_behaviour;
   std::string trace_name;         // the trace variable the specs are asserted on
   std::string scenario_name;      // the variable the scenario was bound to
 

@@ -28,6 +28,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 3.5,
      .max_deceleration = 8.0,
      .comfortable_deceleration = 3.0,
+     .comfortable_lateral_acceleration = 3.0,
+     .max_jerk = 10.0,
      .max_steering_angle = degrees(35),
      .max_steering_rate = 0.7},
     // A large panel van (Mercedes Sprinter, Ford Transit class).
@@ -41,6 +43,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 2.5,
      .max_deceleration = 7.5,
      .comfortable_deceleration = 2.5,
+     .comfortable_lateral_acceleration = 2.5,
+     .max_jerk = 8.0,
      .max_steering_angle = degrees(35),
      .max_steering_rate = 0.6},
     // A 12 m city bus (Mercedes Citaro class); slow acceleration and braking for standing
@@ -55,6 +59,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 1.5,
      .max_deceleration = 6.0,
      .comfortable_deceleration = 1.5,
+     .comfortable_lateral_acceleration = 1.5,
+     .max_jerk = 5.0,
      .max_steering_angle = degrees(45),
      .max_steering_rate = 0.5},
     // A two-axle rigid delivery truck (box truck); EU trucks are limited to 90 km/h.
@@ -68,6 +74,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 1.5,
      .max_deceleration = 6.5,
      .comfortable_deceleration = 2.0,
+     .comfortable_lateral_acceleration = 2.0,
+     .max_jerk = 6.0,
      .max_steering_angle = degrees(40),
      .max_steering_rate = 0.5},
     // A bicycle with its rider.
@@ -81,6 +89,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 1.5,
      .max_deceleration = 4.0,
      .comfortable_deceleration = 2.0,
+     .comfortable_lateral_acceleration = 2.5,
+     .max_jerk = 5.0,
      .max_steering_angle = degrees(40),
      .max_steering_rate = 1.5},
     // A mid-size motorcycle with its rider.
@@ -94,6 +104,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 5.0,
      .max_deceleration = 7.0,
      .comfortable_deceleration = 3.0,
+     .comfortable_lateral_acceleration = 4.0,
+     .max_jerk = 10.0,
      .max_steering_angle = degrees(35),
      .max_steering_rate = 1.0},
     // A motorised three-wheeler (auto rickshaw, cargo tricycle), what Apollo calls a tricycle.
@@ -107,6 +119,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 2.0,
      .max_deceleration = 5.0,
      .comfortable_deceleration = 2.0,
+     .comfortable_lateral_acceleration = 2.0,
+     .max_jerk = 6.0,
      .max_steering_angle = degrees(40),
      .max_steering_rate = 0.8},
     // An adult; length and width are the body cylinder's diameter. 3 m/s is a run.
@@ -120,6 +134,8 @@ constexpr std::array<ActorClass, 8> kActorClasses{{
      .max_acceleration = 1.5,
      .max_deceleration = 2.5,
      .comfortable_deceleration = 1.0,
+     .comfortable_lateral_acceleration = 0.0,
+     .max_jerk = 10.0,
      .max_steering_angle = 0,
      .max_steering_rate = 0},
 }};

@@ -22,8 +22,11 @@ struct ActorClass {
   double max_acceleration = 0;  // m/s^2
   double max_deceleration = 0;  // m/s^2, positive: full braking
   double comfortable_deceleration = 0;  // m/s^2, positive: what a calm driver uses
-  double max_steering_angle = 0;        // rad, front wheel; 0 for pedestrians
-  double max_steering_rate = 0;         // rad/s, front wheel; 0 for pedestrians
+  // m/s^2 sideways that a calm driver takes a bend with (speed^2 x curvature); 0 for pedestrians.
+  double comfortable_lateral_acceleration = 0;
+  double max_jerk = 0;            // m/s^3: how fast NPC motion may change its acceleration
+  double max_steering_angle = 0;  // rad, front wheel; 0 for pedestrians
+  double max_steering_rate = 0;   // rad/s, front wheel; 0 for pedestrians
 
   // Radius of the circle the body centre drives at full lock (kinematic bicycle model with the
   // reference point midway between the axles); 0 for pedestrians, who turn on the spot.
