@@ -9,16 +9,13 @@
 #include <span>
 #include <stdexcept>
 
+#include "physics/actors/path_pose.hpp"
+
 namespace scenfuzz {
 
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// A polyline's heading jumps at every vertex; within this distance of a vertex (and at most half
-// of each adjoining segment) it turns linearly from one segment's heading to the next, so the
-// heading is continuous and the yaw rate finite.
-constexpr double kHeadingBlendDistance = 2;
 
 // Route path points closer than this to the previous point are dropped: a near-duplicate at a lane
 // joint would make a tiny segment with an arbitrary heading.
@@ -31,81 +28,6 @@ constexpr double kTurnLookahead = 5;
 
 // route_ahead stops after this many segments: a ring of tiny lanes must not loop for ever.
 constexpr std::size_t kMaximumRouteSegments = 100000;
-
-double wrap_angle(double angle) { return angle_difference(angle, 0); }
-
-double segment_heading(const Polyline& path, std::size_t segment) {
-  const MapPoint& a = path.points()[segment];
-  const MapPoint& b = path.points()[segment + 1];
-  return std::atan2(b.y - a.y, b.x - a.x);
-}
-
-double segment_length(const Polyline& path, std::size_t segment) {
-  return path.arc_lengths()[segment + 1] - path.arc_lengths()[segment];
-}
-
-// Half-width of the heading blend around interior vertex `vertex`.
-double blend_distance(const Polyline& path, std::size_t vertex) {
-  return std::min({kHeadingBlendDistance, 0.5 * segment_length(path, vertex - 1),
-                   0.5 * segment_length(path, vertex)});
-}
-
-struct PathDirection {
-  double heading = 0;
-  double curvature = 0;  // rad/m, positive turning left
-};
-
-// The heading at s on `segment`, continuous along the path (see kHeadingBlendDistance), and its
-// derivative. `heading_of(k)` is segment k's heading.
-template <typename HeadingOf>
-PathDirection direction_on(const Polyline& path, std::size_t segment, double s,
-                           const HeadingOf& heading_of) {
-  double heading = heading_of(segment);
-  double from_start = s - path.arc_lengths()[segment];
-  double to_end = path.arc_lengths()[segment + 1] - s;
-  if (segment > 0) {
-    double blend = blend_distance(path, segment);
-    if (from_start < blend) {
-      double turn = angle_difference(heading, heading_of(segment - 1));
-      return {wrap_angle(heading - 0.5 * turn * (1 - from_start / blend)), turn / (2 * blend)};
-    }
-  }
-  if (segment + 1 < path.segment_count()) {
-    double blend = blend_distance(path, segment + 1);
-    if (to_end < blend) {
-      double turn = angle_difference(heading_of(segment + 1), heading);
-      return {wrap_angle(heading + 0.5 * turn * (1 - to_end / blend)), turn / (2 * blend)};
-    }
-  }
-  return {heading, 0};
-}
-
-PathDirection direction_at(const Polyline& path, double s) {
-  s = std::clamp(s, 0.0, path.length());
-  return direction_on(path, path.segment_at(s), s,
-                      [&](std::size_t segment) { return segment_heading(path, segment); });
-}
-
-// The state at arc length s, with the path's segment headings computed once beforehand (this is
-// every scripted actor's every step).
-KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
-                             double speed, double acceleration) {
-  s = std::clamp(s, 0.0, path.length());
-  std::size_t segment = path.segment_at(s);
-  const MapPoint& a = path.points()[segment];
-  const MapPoint& b = path.points()[segment + 1];
-  double t = (s - path.arc_lengths()[segment]) / segment_length(path, segment);
-  PathDirection direction =
-      direction_on(path, segment, s, [&](std::size_t k) { return headings[k]; });
-  KinematicState state;
-  state.x = a.x + t * (b.x - a.x);
-  state.y = a.y + t * (b.y - a.y);
-  state.heading = direction.heading;
-  state.speed = speed;
-  state.acceleration = acceleration;
-  state.yaw_rate = speed * direction.curvature;
-  return state;
-}
 
 // Speed points checked, sorted, clamped to the path and with repeated arc lengths merged (the
 // later speed wins), so that every interval between knots has a positive length.
@@ -153,8 +75,7 @@ Trajectory::Trajectory(Polyline path, std::vector<SpeedPoint> speeds, double sto
   }
 
   standing_pose_ = {path_.points().front(), direction_at(path_, 0).heading};
-  for (std::size_t segment = 0; segment < path_.segment_count(); ++segment)
-    segment_headings_.push_back(segment_heading(path_, segment));
+  segment_headings_ = segment_headings(path_);
   double time = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i > 0) {

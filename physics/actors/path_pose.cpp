@@ -1,0 +1,99 @@
+// Poses along a path with its heading blended through the vertices (see path_pose.hpp).
+#include "physics/actors/path_pose.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace scenfuzz {
+namespace {
+
+// Within this distance of a vertex (and at most half of each adjoining segment) the heading turns
+// linearly from one segment's heading to the next.
+constexpr double kHeadingBlendDistance = 2;
+
+double wrap_angle(double angle) { return angle_difference(angle, 0); }
+
+double segment_length(const Polyline& path, std::size_t segment) {
+  return path.arc_lengths()[segment + 1] - path.arc_lengths()[segment];
+}
+
+double segment_heading(const Polyline& path, std::size_t segment) {
+  const MapPoint& a = path.points()[segment];
+  const MapPoint& b = path.points()[segment + 1];
+  return std::atan2(b.y - a.y, b.x - a.x);
+}
+
+// Half-width of the heading blend around interior vertex `vertex`.
+double blend_distance(const Polyline& path, std::size_t vertex) {
+  return std::min({kHeadingBlendDistance, 0.5 * segment_length(path, vertex - 1),
+                   0.5 * segment_length(path, vertex)});
+}
+
+// The heading at s on `segment`, continuous along the path, and its derivative.
+PathDirection direction_on(const Polyline& path, std::span<const double> headings,
+                           std::size_t segment, double s) {
+  double heading = headings[segment];
+  double from_start = s - path.arc_lengths()[segment];
+  double to_end = path.arc_lengths()[segment + 1] - s;
+  if (segment > 0) {
+    double blend = blend_distance(path, segment);
+    if (from_start < blend) {
+      double turn = angle_difference(heading, headings[segment - 1]);
+      return {wrap_angle(heading - 0.5 * turn * (1 - from_start / blend)), turn / (2 * blend)};
+    }
+  }
+  if (segment + 1 < path.segment_count()) {
+    double blend = blend_distance(path, segment + 1);
+    if (to_end < blend) {
+      double turn = angle_difference(headings[segment + 1], heading);
+      return {wrap_angle(heading + 0.5 * turn * (1 - to_end / blend)), turn / (2 * blend)};
+    }
+  }
+  return {heading, 0};
+}
+
+}  // namespace
+
+std::vector<double> segment_headings(const Polyline& path) {
+  std::vector<double> headings;
+  headings.reserve(path.segment_count());
+  for (std::size_t segment = 0; segment < path.segment_count(); ++segment)
+    headings.push_back(segment_heading(path, segment));
+  return headings;
+}
+
+PathDirection direction_at(const Polyline& path, double s) {
+  return direction_at(path, segment_headings(path), s);
+}
+
+PathDirection direction_at(const Polyline& path, std::span<const double> headings, double s) {
+  s = std::clamp(s, 0.0, path.length());
+  return direction_on(path, headings, path.segment_at(s), s);
+}
+
+double vertex_curvature(const Polyline& path, std::span<const double> headings,
+                        std::size_t vertex) {
+  if (vertex == 0 || vertex + 1 >= path.points().size()) return 0;
+  double turn = angle_difference(headings[vertex], headings[vertex - 1]);
+  return std::abs(turn) / (2 * blend_distance(path, vertex));
+}
+
+KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
+                             double speed, double acceleration) {
+  s = std::clamp(s, 0.0, path.length());
+  std::size_t segment = path.segment_at(s);
+  const MapPoint& a = path.points()[segment];
+  const MapPoint& b = path.points()[segment + 1];
+  double t = (s - path.arc_lengths()[segment]) / segment_length(path, segment);
+  PathDirection direction = direction_on(path, headings, segment, s);
+  KinematicState state;
+  state.x = a.x + t * (b.x - a.x);
+  state.y = a.y + t * (b.y - a.y);
+  state.heading = direction.heading;
+  state.speed = speed;
+  state.acceleration = acceleration;
+  state.yaw_rate = speed * direction.curvature;
+  return state;
+}
+
+}  // namespace scenfuzz

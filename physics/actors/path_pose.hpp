@@ -1,0 +1,37 @@
+// Poses along a polyline path whose heading turns smoothly through each vertex: what scripted
+// and lane-following actors drive along. A polyline's heading jumps at its vertices; here it
+// turns linearly within a short blend around each one, so the heading is continuous and the yaw
+// rate (speed x curvature) finite.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "physics/actors/kinematics.hpp"
+#include "physics/map/polyline.hpp"
+
+namespace scenfuzz {
+
+struct PathDirection {
+  double heading = 0;
+  double curvature = 0;  // rad/m, positive turning left
+};
+
+// The direction of each segment of `path`, computed once for paths sampled at every step.
+std::vector<double> segment_headings(const Polyline& path);
+
+// The heading at arc length s (clamped to the path) and its derivative along the path.
+PathDirection direction_at(const Polyline& path, double s);
+// As direction_at, with the segment headings computed beforehand.
+PathDirection direction_at(const Polyline& path, std::span<const double> headings, double s);
+
+// The largest |curvature| the blended heading has around interior vertex `vertex` (0 at the ends).
+double vertex_curvature(const Polyline& path, std::span<const double> headings, std::size_t vertex);
+
+// The state at arc length s (clamped to the path), moving at `speed` with `acceleration`; its
+// yaw rate is speed x curvature.
+KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
+                             double speed, double acceleration);
+
+}  // namespace scenfuzz
