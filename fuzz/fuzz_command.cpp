@@ -39,13 +39,7 @@ namespace fs = std::filesystem;
 std::optional<ScenarioEvaluator> make_evaluator(const FuzzCommandOptions& options,
                                                 const ScenarioFile& input, std::ostream& err) {
   const SimulationCommandOptions& flags = options.simulation;
-  SimulationOptions simulation;
-  simulation.dt = flags.dt;
-  simulation.duration = flags.duration;
-  simulation.stop_at_collision = !flags.continue_after_collision;
-  simulation.ego_plugin = flags.ego_plugin;
-  simulation.plugin_step_timeout = flags.ego_step_timeout;
-  simulation.plugin_start_timeout = flags.ego_start_timeout;
+  SimulationOptions simulation = simulation_options(flags);
   std::optional<ScenarioEvaluator> evaluator;
   try {
     std::vector<fs::path> map_paths(flags.map_paths.begin(), flags.map_paths.end());

@@ -228,6 +228,19 @@ std::optional<std::string> check_step_count(double duration, double dt,
          "--duration";
 }
 
+SimulationOptions simulation_options(const SimulationCommandOptions& options) {
+  SimulationOptions simulation;
+  simulation.dt = options.dt;
+  simulation.duration = options.duration;
+  simulation.stop_at_collision = !options.continue_after_collision;
+  simulation.ego_plugin = options.ego_plugin;
+  simulation.plugin_step_timeout = options.ego_step_timeout;
+  simulation.plugin_start_timeout = options.ego_start_timeout;
+  if (options.npc_behaviour == "reactive") simulation.npc_behaviour = NpcBehaviour::reactive;
+  if (options.npc_behaviour == "scripted") simulation.npc_behaviour = NpcBehaviour::scripted;
+  return simulation;
+}
+
 std::optional<std::string> check_simulation_options(const SimulationCommandOptions& options) {
   if (!options.duration) return std::nullopt;
   return check_step_count(*options.duration, options.dt,

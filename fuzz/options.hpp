@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fuzz/commands.hpp"
+#include "physics/simulation/simulation.hpp"
 #include "physics/simulation/simulation_limits.hpp"
 
 namespace CLI {
@@ -88,6 +89,9 @@ void add_search_options(CLI::App* app, FuzzCommandOptions& options);
 // scenario's duration 100 s").
 std::optional<std::string> check_step_count(double duration, double dt,
                                             const std::string& duration_source);
+
+// What the simulation is asked for by the command line's options (the seed apart).
+SimulationOptions simulation_options(const SimulationCommandOptions& options);
 
 // The checks of the simulation options together, once each has passed its own: nullopt, or the
 // reason for an error message.

@@ -214,14 +214,8 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     }
   }
 
-  SimulationOptions simulation;
+  SimulationOptions simulation = simulation_options(options.simulation);
   simulation.seed = options.seed;
-  simulation.dt = options.simulation.dt;
-  simulation.duration = options.simulation.duration;
-  simulation.stop_at_collision = !options.simulation.continue_after_collision;
-  simulation.ego_plugin = options.simulation.ego_plugin;
-  simulation.plugin_step_timeout = options.simulation.ego_step_timeout;
-  simulation.plugin_start_timeout = options.simulation.ego_start_timeout;
   const Trace trace = simulate(*map, *setup, simulation);
   const std::optional<EgoFailureReport> ego_failure = ego_failure_report(trace);
   if (ego_failure && ego_failed_to_start(trace, *ego_failure)) {

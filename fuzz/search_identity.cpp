@@ -35,6 +35,7 @@ nlohmann::json search_identity(const FuzzCommandOptions& options, const SourceFi
           {"duration", simulation.duration ? nlohmann::json(*simulation.duration) : nullptr},
           {"dt", simulation.dt},
           {"continue_after_collision", simulation.continue_after_collision},
+          {"npc_behaviour", simulation.npc_behaviour},
           {"ego_step_timeout", simulation.ego_step_timeout},
           {"ego_start_timeout", simulation.ego_start_timeout}};
 }

@@ -190,8 +190,10 @@ std::uint64_t actor_seed(std::uint64_t seed, std::size_t actor) {
 }
 
 // A vehicle that follows lanes: to its target over the lane graph, or along the lanes ahead.
+// Scripted, it keeps `speed` along the path; reactive (`drive`), it aims for it.
 std::optional<Trajectory> lane_following(Context& context, const Actor& actor, const MapPose& start,
-                                         double speed, const ActorClass& body) {
+                                         double initial_speed, double speed, const ActorClass& body,
+                                         std::optional<LaneDrive>& drive) {
   // The lane the actor starts in, and how far off its centre line (kept along the way).
   auto start_lane = project_to_lane(context.map, start.position, start.heading);
   if (!start_lane) return Trajectory::standing(start);
@@ -214,6 +216,7 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
   if (route->segments.empty() || route->length < 0.5) return Trajectory::standing(start);
   double lateral = start_lane->lateral;
   Polyline path = route_path(context.map, *route, lateral);
+  drive = LaneDrive{*route, path, speed, initial_speed};
   return Trajectory(std::move(path), {{0, speed}}, body.comfortable_deceleration);
 }
 
@@ -454,7 +457,9 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
       if (pedestrian && speed == 0 && actor.motion.kind == MotionKind::uniform)
         speed = kDefaultPedestrianSpeed;
       trajectory = pedestrian ? straight_walk(context, actor, *start, speed)
-                              : lane_following(context, actor, *start, speed, scripted.body);
+                              : lane_following(context, actor, *start,
+                                               actor.initial.speed ? *initial_speed : speed, speed,
+                                               scripted.body, scripted.lane_drive);
       break;
     }
     case MotionKind::waypoints:
@@ -669,6 +674,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     setup.speed_limits.emplace_back(*lane, evaluate(limit.upper, values));
   }
   setup.conditions = conditions_of(context);
+  setup.npc_behaviour = scenario.npc_behaviour.value_or(NpcBehaviour::reactive);
   if (diagnostics.error_count() > errors_before) return std::nullopt;
   return setup;
 }

@@ -22,15 +22,26 @@
 
 namespace scenfuzz {
 
+// A lane-following NPC's plan for driving reactively (LaneFollower): its lane route, the path
+// drawn along it, and the speed it aims for.
+struct LaneDrive {
+  LaneRoute route;
+  Polyline path;
+  double desired_speed = 0;  // m/s
+  double initial_speed = 0;  // m/s
+};
+
 // An NPC vehicle or pedestrian: it follows its trajectory and does not react; or, with
 // `manoeuvres` (WMG SDL phases), it is driven online by a ManoeuvreDriver and its trajectory
-// only stands at its initial pose.
+// only stands at its initial pose; or, with `lane_drive` and reactive NPC behaviour, it is driven
+// by a LaneFollower (its trajectory is what it would do scripted).
 struct ScriptedActor {
   std::string name;
   TraceActorKind kind = TraceActorKind::vehicle;
   ActorClass body;  // dimensions (a pedestrian's height from the scenario)
   Trajectory trajectory;
   std::optional<ManoeuvreScript> manoeuvres;
+  std::optional<LaneDrive> lane_drive;
 };
 
 struct StaticObstacle {
@@ -64,6 +75,7 @@ struct SimulationSetup {
   std::vector<double> timer_initial_values;
   // The run ends at the first step where one holds.
   std::vector<TriggerCondition> end_conditions;
+  NpcBehaviour npc_behaviour = NpcBehaviour::reactive;  // as the scenario says
 };
 
 // Evaluates `scenario` at `values` on `map`. Problems (an unknown lane, an unreachable target, a

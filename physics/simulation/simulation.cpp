@@ -14,6 +14,7 @@
 #include "physics/collision/collision_world.hpp"
 #include "physics/ego/observation_json.hpp"
 #include "physics/ego/plugin_driver.hpp"
+#include "physics/simulation/lane_follower.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/manoeuvre_driver.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
@@ -139,6 +140,22 @@ void end_with_ego_failure(Trace& trace, const EgoPluginError& error, double time
       error.step(), time,         last_observation ? observation_json(*last_observation) : ""};
 }
 
+std::vector<std::optional<LaneFollower>> lane_followers(const RoadMap& map,
+                                                        const SimulationSetup& setup,
+                                                        const SimulationOptions& options) {
+  std::vector<std::optional<LaneFollower>> followers(setup.actors.size());
+  if (options.npc_behaviour.value_or(setup.npc_behaviour) != NpcBehaviour::reactive)
+    return followers;
+  for (std::size_t i = 0; i < setup.actors.size(); ++i) {
+    const ScriptedActor& actor = setup.actors[i];
+    if (!actor.lane_drive || actor.manoeuvres) continue;
+    const LaneDrive& drive = *actor.lane_drive;
+    followers[i].emplace(map, drive.route, drive.path, actor.body, drive.desired_speed,
+                         drive.initial_speed, false);
+  }
+  return followers;
+}
+
 }  // namespace
 
 Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options) {
@@ -169,14 +186,20 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     if (setup.actors[i].manoeuvres)
       drivers[i].emplace(map, *setup.actors[i].manoeuvres, setup.actors[i].body,
                          setup.actors[i].kind == TraceActorKind::pedestrian);
+  // Lane-following NPCs drive reactively unless the scenario or the options say scripted;
+  // followers[k - 1] belongs to actor k.
+  std::vector<std::optional<LaneFollower>> followers = lane_followers(map, setup, options);
   const bool watches_world =
       !setup.end_conditions.empty() ||
-      std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d.has_value(); });
+      std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d.has_value(); }) ||
+      std::any_of(followers.begin(), followers.end(), [](const auto& f) { return f.has_value(); });
   for (std::size_t i = 0; i < setup.actors.size(); ++i) {
     const ScriptedActor& actor = setup.actors[i];
     BodyGeometry geometry = body_geometry(actor.body);
     trace.actors.push_back(describe(actor.name, actor.kind, actor.body.category, geometry));
-    KinematicState start = drivers[i] ? drivers[i]->state() : actor.trajectory.state_at(0);
+    KinematicState start = drivers[i]     ? drivers[i]->state()
+                           : followers[i] ? followers[i]->state()
+                                          : actor.trajectory.state_at(0);
     world.add_body(geometry, {{start.x, start.y}, start.heading}, false);
     states.push_back(start);
   }
@@ -212,9 +235,14 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   std::vector<LaneTracker> lanes(actor_count, LaneTracker(widest_half_lane(map)));
   std::vector<LaneFix> fixes(actor_count);
   std::vector<ObservedManoeuvre> manoeuvres(actor_count, ObservedManoeuvre::going_ahead);
-  std::vector<double> lengths(actor_count);
+  std::vector<double> lengths(actor_count), widths(actor_count);
+  std::vector<TraceActorKind> kinds(actor_count);
   std::vector<double> sequence_starts(actor_count, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t k = 0; k < actor_count; ++k) lengths[k] = trace.actors[k].length;
+  for (std::size_t k = 0; k < actor_count; ++k) {
+    lengths[k] = trace.actors[k].length;
+    widths[k] = trace.actors[k].width;
+    kinds[k] = trace.actors[k].kind;
+  }
 
   std::optional<PluginDriver> plugin;
   if (!options.ego_plugin.empty()) {
@@ -236,9 +264,10 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   for (std::size_t step = 0;; ++step) {
     const double t = static_cast<double>(step) * dt;
     for (std::size_t k = 1; k <= setup.actors.size(); ++k)
-      states[k] = drivers[k - 1] ? drivers[k - 1]->state()
-                                 : scripted_state(setup.actors[k - 1].trajectory, t,
-                                                  step > 0 ? &states[k] : nullptr, dt);
+      states[k] = drivers[k - 1]     ? drivers[k - 1]->state()
+                  : followers[k - 1] ? followers[k - 1]->state()
+                                     : scripted_state(setup.actors[k - 1].trajectory, t,
+                                                      step > 0 ? &states[k] : nullptr, dt);
     for (std::size_t k = 0; k < first_obstacle; ++k)
       world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
 
@@ -292,7 +321,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                   lengths,
                   colours,
                   sequence_starts,
-                  !trace.collisions.empty()};
+                  !trace.collisions.empty(),
+                  widths,
+                  kinds};
     }
 
     route.update({states[kEgo].x, states[kEgo].y});
@@ -317,6 +348,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     // Manoeuvre phases react to the world as it is now; they move on to t + dt with the ego.
     for (std::size_t k = 1; k <= drivers.size(); ++k)
       if (drivers[k - 1]) drivers[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt);
+    for (std::size_t k = 1; k <= followers.size(); ++k)
+      if (followers[k - 1]) followers[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt);
 
     VehicleControl control;
     if (plugin) {

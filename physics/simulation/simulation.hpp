@@ -26,6 +26,8 @@ struct SimulationOptions {
   double plugin_step_timeout = 2;  // s of wall time a plugin may take for one step
   double plugin_start_timeout = 10;  // s of wall time for loading a plugin and its create
   double target_reach = 2;           // m: the ego has reached its target within this distance
+  // How lane-following NPCs drive, over what the scenario says (unset: as it says).
+  std::optional<NpcBehaviour> npc_behaviour;
 };
 
 // Throws std::invalid_argument when the duration and dt take more samples than a trace may hold

@@ -10,6 +10,7 @@
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
+#include "physics/trace/trace.hpp"
 
 namespace scenfuzz {
 
@@ -23,7 +24,9 @@ struct WorldSnapshot {
   std::span<const SignalColour> lights;           // by index into RoadMap::traffic_lights()
   // When each actor's first manoeuvre phase began (s), NaN while it has not (or it has none).
   std::span<const double> sequence_starts;
-  bool collided = false;  // some collision happened at or before `time`
+  bool collided = false;                  // some collision happened at or before `time`
+  std::span<const double> widths;         // body width by actor id
+  std::span<const TraceActorKind> kinds;  // by actor id
 };
 
 }  // namespace scenfuzz

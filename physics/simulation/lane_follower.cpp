@@ -1,0 +1,339 @@
+// The reactive lane follower: each step, every reason to slow down (a bend, whatever is in the
+// path ahead, a stop line, a crosswalk, the path's end) is an IDM constraint, the most cautious
+// wins, and the result is held to the class's acceleration and jerk limits before it moves the
+// actor along its path.
+#include "physics/simulation/lane_follower.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lang/demand.hpp"
+#include "physics/actors/path_pose.hpp"
+#include "physics/map/polygon.hpp"
+
+namespace scenfuzz {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kStandingSpeed = 0.2;        // m/s: standing, for a stop sign
+constexpr double kStandingDesire = 0.05;     // m/s: a desired speed below this parks the actor
+constexpr double kStopSignReach = 3;         // m before the line that count as at it
+constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower than this waits too
+constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term finite
+constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
+
+double fourth_power(double x) {
+  double squared = x * x;
+  return squared * squared;
+}
+
+double cross(MapPoint o, MapPoint a, MapPoint b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+bool segments_cross(MapPoint a, MapPoint b, MapPoint c, MapPoint d) {
+  double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+bool lines_cross(const Polyline& first, const Polyline& second) {
+  const auto& p = first.points();
+  const auto& q = second.points();
+  for (std::size_t i = 0; i + 1 < p.size(); ++i)
+    for (std::size_t j = 0; j + 1 < q.size(); ++j)
+      if (segments_cross(p[i], p[i + 1], q[j], q[j + 1])) return true;
+  return false;
+}
+
+bool shares_successor(const Lane& first, const Lane& second) {
+  return std::any_of(first.successors.begin(), first.successors.end(), [&](LaneIndex next) {
+    return std::find(second.successors.begin(), second.successors.end(), next) !=
+           second.successors.end();
+  });
+}
+
+// At each vertex, the most speed from which every bend ahead can still be taken within the lateral
+// limit, braking at `deceleration` (a backward pass over the vertices).
+std::vector<double> bend_envelope(const Polyline& path, const std::vector<double>& headings,
+                                  double lateral_acceleration, double deceleration) {
+  const std::size_t count = path.points().size();
+  std::vector<double> envelope(count, kInfinity);
+  for (std::size_t i = count; i-- > 0;) {
+    double curvature = vertex_curvature(path, headings, i);
+    double cap = curvature > 1e-9 ? std::sqrt(lateral_acceleration / curvature) : kInfinity;
+    if (i + 1 < count) {
+      double ds = path.arc_lengths()[i + 1] - path.arc_lengths()[i];
+      cap = std::min(cap, std::sqrt(envelope[i + 1] * envelope[i + 1] + 2 * deceleration * ds));
+    }
+    envelope[i] = cap;
+  }
+  return envelope;
+}
+
+}  // namespace
+
+LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
+                           const ActorClass& body, double desired_speed, double initial_speed,
+                           bool leaves_at_end, const FollowerSettings& settings)
+    : map_(&map),
+      route_(std::move(route)),
+      path_(std::move(path)),
+      body_(body),
+      desired_speed_(std::min(desired_speed, body.max_speed)),
+      leaves_at_end_(leaves_at_end),
+      settings_(settings) {
+  SCENFUZZ_DEMAND(path_.segment_count() > 0);
+  headings_ = segment_headings(path_);
+  double lateral = body_.comfortable_lateral_acceleration > 0
+                       ? body_.comfortable_lateral_acceleration
+                       : body_.max_deceleration;
+  envelope_ = bend_envelope(path_, headings_, lateral, body_.comfortable_deceleration);
+  for (double from = 0; features_.size() < kFeatureLimit;) {
+    auto next = next_feature_ahead(map, route_, from);
+    if (!next) break;
+    features_.push_back({*next, from + next->distance, false});
+    from += next->distance + 0.01;
+  }
+  double speed = std::min(initial_speed, body_.max_speed);
+  state_ = state_on_path(path_, headings_, 0, speed, 0);
+  state_.yaw_rate = 0;
+}
+
+void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
+  if (finished_) return;
+  advance(choose_acceleration(world, self, dt), dt);
+}
+
+double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32_t self,
+                                         double dt) {
+  const double v = state_.speed;
+  if (desired_speed_ < kStandingDesire) {
+    reason_ = FollowerReason::cruise;
+    return v > 0 ? -body_.comfortable_deceleration : 0;
+  }
+  const double a = std::min(settings_.acceleration, body_.max_acceleration);
+  double best = a * (1 - fourth_power(v / desired_speed_));
+  reason_ = FollowerReason::cruise;
+  double bend = bend_acceleration();
+  if (bend < best) {
+    best = bend;
+    reason_ = FollowerReason::bend;
+  }
+  std::vector<Stop> stops;
+  find_leader(world, self, stops);
+  find_stop_lines(world, self, dt, stops);
+  if (!leaves_at_end_) stops.push_back({path_.length() - s_, 0, 0, FollowerReason::path_end});
+  for (const Stop& stop : stops) {
+    double wanted = idm(stop);
+    if (wanted < best) {
+      best = wanted;
+      reason_ = stop.reason;
+    }
+  }
+  return best;
+}
+
+double LaneFollower::bend_acceleration() const {
+  std::size_t next = std::min(path_.segment_at(s_) + 1, envelope_.size() - 1);
+  double limit = envelope_[next];
+  double v = state_.speed;
+  if (!(v > limit)) return kInfinity;
+  double to_vertex = std::max(path_.arc_lengths()[next] - s_, 0.5);
+  return (limit * limit - v * v) / (2 * to_vertex);
+}
+
+double LaneFollower::idm(const Stop& stop) const {
+  const double v = state_.speed;
+  const double a = std::min(settings_.acceleration, body_.max_acceleration);
+  const double b = body_.comfortable_deceleration;
+  double desired_gap =
+      stop.clearance + v * settings_.time_gap + v * (v - stop.speed) / (2 * std::sqrt(a * b));
+  double gap = std::max(stop.gap, kMinimumGap);
+  double ratio = std::max(desired_gap, 0.0) / gap;
+  return a * (1 - fourth_power(v / std::max(desired_speed_, kStandingDesire)) - ratio * ratio);
+}
+
+// Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
+// leader. A vehicle coming the other way counts as standing.
+void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
+                               std::vector<Stop>& stops) const {
+  const double v = state_.speed;
+  const double lookahead = std::max(settings_.min_lookahead, v * settings_.lookahead_time);
+  const double half_length = body_.length / 2;
+  const double half_width = body_.width / 2;
+  const std::size_t first = path_.segment_at(s_);
+  double best_gap = kInfinity;
+  Stop best;
+  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+    if (k == self) continue;
+    const KinematicState& other = world.states[k];
+    const MapPoint now{other.x, other.y};
+    if (distance(now, {state_.x, state_.y}) > lookahead + world.lengths[k]) continue;
+    double along_heading = angle_difference(other.heading, state_.heading);
+    double velocity = longitudinal_velocity(other);
+    double tau = other.speed > 0.1 ? settings_.prediction_time : 0;
+    for (MapPoint at : {now, MapPoint{other.x + std::cos(other.heading) * velocity * tau,
+                                      other.y + std::sin(other.heading) * velocity * tau}}) {
+      // The nearest point of the path ahead, segment by segment from this actor's own.
+      PolylineProjection nearest;
+      nearest.distance = kInfinity;
+      for (std::size_t seg = first; seg < path_.segment_count(); ++seg) {
+        if (path_.arc_lengths()[seg] > s_ + lookahead) break;
+        PolylineProjection p = path_.project_to_segment(at, seg);
+        if (p.distance < nearest.distance) nearest = p;
+      }
+      if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
+      double relative = angle_difference(other.heading, headings_[nearest.segment]);
+      double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
+                      std::abs(std::cos(relative)) * world.widths[k] / 2;
+      double along = std::abs(std::cos(relative)) * world.lengths[k] / 2 +
+                     std::abs(std::sin(relative)) * world.widths[k] / 2;
+      if (std::abs(nearest.lateral) > half_width + across + settings_.path_margin) continue;
+      double gap = nearest.s - s_ - half_length - along;
+      if (gap < -along) continue;  // beside it, not ahead
+      if (gap >= best_gap) continue;
+      best_gap = gap;
+      bool predicted = at.x != now.x || at.y != now.y;
+      double speed_along = predicted ? 0 : std::max(0.0, velocity * std::cos(along_heading));
+      best = {gap, settings_.standstill_gap, speed_along,
+              world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
+                                                           : FollowerReason::leader};
+    }
+  }
+  if (std::isfinite(best_gap)) stops.push_back(best);
+}
+
+void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
+                                   std::vector<Stop>& stops) {
+  const double v = state_.speed;
+  const double front = s_ + body_.length / 2;
+  const double comfortable_stop = v * v / (2 * body_.comfortable_deceleration);
+  const double full_stop = v * v / (2 * body_.max_deceleration);
+  for (Feature& feature : features_) {
+    double gap = feature.at - front;
+    if (gap < -0.5) continue;  // passed
+    if (gap > std::max(settings_.min_lookahead, v * settings_.lookahead_time)) break;
+    Stop line{gap, settings_.stop_line_gap, 0, FollowerReason::red_light};
+    switch (feature.feature.kind) {
+      case FeatureKind::traffic_light: {
+        SignalColour colour = feature.feature.index < world.lights.size()
+                                  ? world.lights[feature.feature.index]
+                                  : SignalColour::green;
+        bool stop = colour == SignalColour::red ||
+                    (colour == SignalColour::yellow && gap >= comfortable_stop);
+        if (stop && gap >= full_stop) stops.push_back(line);
+        break;
+      }
+      case FeatureKind::stop_sign: {
+        if (feature.served) break;
+        line.reason = FollowerReason::stop_sign;
+        if (gap < settings_.stop_line_gap + kStopSignReach && v < kStandingSpeed) {
+          if (stopped_since_ < 0) stopped_since_ = world.time;
+          if (world.time + dt - stopped_since_ >= settings_.stop_sign_wait &&
+              !crossing_traffic(world, self, feature)) {
+            feature.served = true;
+            stopped_since_ = -1;
+            break;
+          }
+        }
+        stops.push_back(line);
+        break;
+      }
+      case FeatureKind::yield_sign:
+        if (gap >= full_stop && crossing_traffic(world, self, feature)) {
+          line.reason = FollowerReason::give_way;
+          stops.push_back(line);
+        }
+        break;
+      case FeatureKind::crosswalk:
+        if (gap >= full_stop && pedestrians_at(world, map_->crosswalks()[feature.feature.index])) {
+          line.reason = FollowerReason::pedestrian;
+          stops.push_back(line);
+        }
+        break;
+    }
+  }
+}
+
+std::optional<LaneIndex> LaneFollower::junction_lane_after(const FeatureAhead& feature) const {
+  if (map_->lane(feature.lane).junction) return feature.lane;
+  for (std::size_t k = 0; k + 1 < route_.segments.size(); ++k)
+    if (route_.segments[k].lane == feature.lane) {
+      LaneIndex next = route_.segments[k + 1].lane;
+      if (map_->lane(next).junction) return next;
+    }
+  return std::nullopt;
+}
+
+const std::vector<LaneIndex>& LaneFollower::conflicts_of(LaneIndex junction_lane) {
+  for (const auto& [lane, conflicts] : conflicts_)
+    if (lane == junction_lane) return conflicts;
+  const Lane& mine = map_->lane(junction_lane);
+  std::vector<LaneIndex> conflicts;
+  for (LaneIndex other = 0; other < map_->lanes().size(); ++other) {
+    const Lane& lane = map_->lane(other);
+    if (other == junction_lane || lane.junction != mine.junction) continue;
+    if (lines_cross(mine.centre_line, lane.centre_line) || shares_successor(mine, lane))
+      conflicts.push_back(other);
+  }
+  conflicts_.emplace_back(junction_lane, std::move(conflicts));
+  return conflicts_.back().second;
+}
+
+// Whether a vehicle is on a lane that crosses or merges with the junction lane behind the stop
+// line, or will be there within the give-way time.
+bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t self,
+                                    const Feature& feature) {
+  auto junction_lane = junction_lane_after(feature.feature);
+  if (!junction_lane) return false;
+  const std::vector<LaneIndex>& conflicts = conflicts_of(*junction_lane);
+  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+    if (k == self || world.lanes[k].lane < 0) continue;
+    if (world.kinds[k] == TraceActorKind::pedestrian || world.kinds[k] == TraceActorKind::obstacle)
+      continue;
+    const auto lane = static_cast<LaneIndex>(world.lanes[k].lane);
+    const double speed = world.states[k].speed;
+    if (std::find(conflicts.begin(), conflicts.end(), lane) != conflicts.end()) return true;
+    if (speed < kMovingSpeed) continue;  // waiting at its own line: first come, first served
+    double to_end = map_->lane(lane).length() - world.lanes[k].s;
+    if (to_end / speed > settings_.give_way_time) continue;
+    for (LaneIndex next : map_->lane(lane).successors)
+      if (std::find(conflicts.begin(), conflicts.end(), next) != conflicts.end()) return true;
+  }
+  return false;
+}
+
+bool LaneFollower::pedestrians_at(const WorldSnapshot& world, const Crosswalk& crosswalk) const {
+  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+    if (world.kinds[k] != TraceActorKind::pedestrian) continue;
+    const KinematicState& walker = world.states[k];
+    if (walker.speed >= settings_.walking_speed &&
+        near_polygon({walker.x, walker.y}, crosswalk.outline, settings_.crosswalk_clearance))
+      return true;
+  }
+  return false;
+}
+
+void LaneFollower::advance(double acceleration, double dt) {
+  const double jerk = body_.max_jerk * dt;
+  acceleration = std::clamp(acceleration, applied_ - jerk, applied_ + jerk);
+  acceleration = std::clamp(acceleration, -body_.max_deceleration, body_.max_acceleration);
+  const double v = state_.speed;
+  double next = std::clamp(v + acceleration * dt, 0.0, body_.max_speed);
+  double moved = 0.5 * (v + next) * dt;
+  if (acceleration < 0 && next == 0) moved = v * v / (2 * -acceleration);
+  const double heading = state_.heading;
+  s_ += moved;
+  if (s_ >= path_.length()) {
+    s_ = path_.length();
+    if (leaves_at_end_) finished_ = true;
+    if (!leaves_at_end_) next = 0;
+  }
+  state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt);
+  state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
+  // At a standstill the brakes hold without effort: no braking is carried into setting off.
+  applied_ = next == 0 && acceleration < 0 ? 0 : acceleration;
+}
+
+}  // namespace scenfuzz

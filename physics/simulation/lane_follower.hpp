@@ -1,0 +1,114 @@
+// A reactive NPC on the lanes, as simulator NPCs drive (LGSVL's and CARLA's): it follows its lane
+// route at its desired speed, slows for bends, follows whatever is ahead in its path (the ego
+// included) with the Intelligent Driver Model, stops for red lights and at stop signs, gives way
+// at stop and yield signs to crossing traffic, and stops for pedestrians on or walking into a
+// crosswalk ahead. It knows the true state of the world (no perception), and its motion is
+// kinematically feasible: bounded acceleration and jerk, yaw rate the heading's derivative.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "physics/actors/actor_class.hpp"
+#include "physics/map/lane_route.hpp"
+#include "physics/map/polyline.hpp"
+#include "physics/simulation/world_snapshot.hpp"
+
+namespace scenfuzz {
+
+struct FollowerSettings {
+  double time_gap = 1.5;             // s, IDM's desired time headway
+  double standstill_gap = 2.0;       // m bumper to bumper behind a stopped leader
+  double acceleration = 1.5;         // m/s^2, IDM's a (at most the class's maximum)
+  double stop_line_gap = 1.0;        // m between the front bumper and a stop line
+  double stop_sign_wait = 1.0;       // s standing at a stop sign before going on
+  double give_way_time = 4.0;        // s: crossing traffic arriving sooner is given way to
+  double crosswalk_clearance = 1.5;  // m around a crosswalk where a pedestrian counts
+  double walking_speed = 0.3;        // m/s: a pedestrian at least this fast is walking
+  double prediction_time = 1.5;      // s an actor's motion is projected into the path
+  double path_margin = 0.3;          // m beside the body that must stay clear
+  double min_lookahead = 40;         // m ahead that is watched, at least
+  double lookahead_time = 6;         // s of travel ahead that is watched
+};
+
+// Why the follower chose its acceleration: tests and the trace's reading.
+enum class FollowerReason {
+  cruise,
+  bend,
+  leader,
+  red_light,
+  stop_sign,
+  give_way,
+  pedestrian,
+  path_end
+};
+
+class LaneFollower {
+ public:
+  // Drives `path` (drawn from `route` by route_path, so that its arc length is the route's
+  // distance) from its start at `initial_speed`, aiming for `desired_speed`. At the path's end it
+  // stops there, or, when `leaves_at_end`, drives on out of the world (finished()).
+  LaneFollower(const RoadMap& map, LaneRoute route, Polyline path, const ActorClass& body,
+               double desired_speed, double initial_speed, bool leaves_at_end,
+               const FollowerSettings& settings = {});
+
+  const KinematicState& state() const { return state_; }
+  double progress() const { return s_; }  // m along the path
+  bool finished() const { return finished_; }
+  FollowerReason reason() const { return reason_; }
+
+  // Chooses the acceleration from the world as it is now (this actor is actor `self` in it) and
+  // moves on by dt.
+  void step(const WorldSnapshot& world, std::uint32_t self, double dt);
+
+ private:
+  struct Stop {            // something on the path to stop behind, for now
+    double gap = 0;        // m from the front bumper to it
+    double clearance = 0;  // m to keep when standing behind it (IDM's s0)
+    double speed = 0;      // m/s it moves along the path
+    FollowerReason reason = FollowerReason::leader;
+  };
+  struct Feature {  // a stop line on the route, at path distance `at`
+    FeatureAhead feature;
+    double at = 0;
+    bool served = false;  // stop sign: stood there long enough and the way was clear
+  };
+
+  double choose_acceleration(const WorldSnapshot& world, std::uint32_t self, double dt);
+  double bend_acceleration() const;
+  void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops) const;
+  void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
+                       std::vector<Stop>& stops);
+  bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
+  const std::vector<LaneIndex>& conflicts_of(LaneIndex junction_lane);
+  bool pedestrians_at(const WorldSnapshot& world, const Crosswalk& crosswalk) const;
+  // The junction lane a stop line at `feature` leads into (the feature's own lane if it is one).
+  std::optional<LaneIndex> junction_lane_after(const FeatureAhead& feature) const;
+  double idm(const Stop& stop) const;
+  void advance(double acceleration, double dt);
+
+  const RoadMap* map_;
+  LaneRoute route_;
+  Polyline path_;
+  std::vector<double> headings_;  // of each path segment
+  std::vector<double> envelope_;  // at each vertex: the most speed from which the bends ahead
+                                  // can be taken at comfortable deceleration
+  std::vector<Feature> features_;
+  ActorClass body_;
+  double desired_speed_ = 0;
+  bool leaves_at_end_ = false;
+  FollowerSettings settings_;
+
+  KinematicState state_;
+  double s_ = 0;
+  double applied_ = 0;  // m/s^2 asked of the vehicle at the last step, for the jerk limit
+  bool finished_ = false;
+  FollowerReason reason_ = FollowerReason::cruise;
+  double stopped_since_ = -1;  // s: when it came to stand at the stop sign it waits at
+  // Junction lanes of its route and the lanes that cross or merge with each, found when needed.
+  std::vector<std::pair<LaneIndex, std::vector<LaneIndex>>> conflicts_;
+};
+
+}  // namespace scenfuzz

@@ -1,0 +1,134 @@
+// Reactive lane-following NPCs in whole simulations: they stop behind a stopped car, queue at a
+// red light and leave on green, and cross a signalised junction for two minutes without touching
+// each other; scripted, the same NPCs drive into what is in their way.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "simulation_fixtures.hpp"
+
+namespace scenfuzz {
+namespace {
+
+using test::closest_approach;
+using test::simulate_text;
+
+std::string scenario_text(const std::string& map, const std::string& definitions,
+                          const std::string& npcs) {
+  return definitions + "\nscenario = CreateScenario{load(\"" + map + "\");\nego;\n{" + npcs +
+         "};\n{};\n{};\n};\n";
+}
+
+// An ego out of the way: it drives 20 m on the east arm's inbound lane and stands at its target.
+const std::string kQuietEgo = "ego = AV((\"east_in_0\"->10, , 0), (\"east_in_0\"->30));\n";
+
+// Runs for the whole duration: the ego standing at its target does not end the run.
+SimulationOptions lasting(double duration) {
+  SimulationOptions options;
+  options.duration = duration;
+  options.target_reach = -1;
+  return options;
+}
+
+int npc_collisions(const Trace& trace) {
+  int count = 0;
+  for (const Collision& collision : trace.collisions)
+    if (collision.first != kEgo && collision.second != kEgo) ++count;
+  return count;
+}
+
+TEST(LaneFollowerTest, StopsBehindAStoppedCarWithoutContact) {
+  std::string text = scenario_text("straight?two_way=0&lanes=2",
+                                   "ego = AV((\"east_1\"->10, , 0), (\"east_1\"->30));\n"
+                                   "parked = Vehicle((\"east_0\"->200, , 0));\n"
+                                   "follower = Vehicle((\"east_0\"->40, , 15));\n",
+                                   "parked, follower");
+  SimulationOptions options = lasting(30);
+  auto run = simulate_text(text, options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_EQ(npc_collisions(trace), 0);
+  double gap = closest_approach(trace, 1, 2);
+  EXPECT_GT(gap, 0.5);
+  EXPECT_LT(gap, 6.0) << "it should close up behind the car, not stop far away";
+  EXPECT_LT(trace.actors[2].speed.back(), 0.1);
+  for (double a : trace.actors[2].acceleration) EXPECT_GE(a, -8.0 - 1e-9);
+
+  options.npc_behaviour = NpcBehaviour::scripted;
+  auto scripted = simulate_text(text, options);
+  ASSERT_TRUE(scripted.trace) << scripted.errors;
+  EXPECT_EQ(npc_collisions(*scripted.trace), 1) << "scripted, it drives on into the car";
+}
+
+TEST(LaneFollowerTest, FiveQueueAtARedLightAndLeaveOnGreen) {
+  // On `crossroads` east-west traffic has red for the first 30 s; the stop line of west_in_0 is at
+  // x = -16.
+  std::string definitions = kQuietEgo;
+  std::string names;
+  for (int k = 0; k < 5; ++k) {
+    std::string name = "car" + std::to_string(k);
+    definitions += name + " = Vehicle((\"west_in_0\"->" + std::to_string(100 - 18 * k) +
+                   ", , 10), , (\"east_out_0\"->" + std::to_string(150 - 18 * k) + "));\n";
+    names += (k ? ", " : "") + name;
+  }
+  SimulationOptions options = lasting(28);
+  auto red = simulate_text(scenario_text("crossroads", definitions, names), options);
+  ASSERT_TRUE(red.trace) << red.errors;
+  EXPECT_EQ(npc_collisions(*red.trace), 0);
+  for (ActorId k = 1; k <= 5; ++k) {
+    const TraceActor& car = red.trace->actors[k];
+    EXPECT_LT(car.speed.back(), 0.1) << car.name << " should wait in the queue";
+    for (std::size_t i = 0; i < car.x.size(); ++i)
+      ASSERT_LT(car.x[i] + car.length / 2, -16.0) << car.name << " crossed the line on red";
+    if (k > 1) {
+      EXPECT_GT(closest_approach(*red.trace, k - 1, k), 0.5);
+    }
+  }
+  EXPECT_LT(red.trace->actors[1].x.back() + red.trace->actors[1].length / 2, -16.0);
+  EXPECT_GT(red.trace->actors[1].x.back() + red.trace->actors[1].length / 2, -20.0)
+      << "the first should stop at the line";
+
+  options.duration = 75;
+  auto green = simulate_text(scenario_text("crossroads", definitions, names), options);
+  ASSERT_TRUE(green.trace) << green.errors;
+  EXPECT_EQ(npc_collisions(*green.trace), 0);
+  for (ActorId k = 1; k <= 5; ++k)
+    EXPECT_GT(green.trace->actors[k].x.back(), 16.0)
+        << green.trace->actors[k].name << " should have crossed on green";
+}
+
+TEST(LaneFollowerTest, CrossingTrafficAtASignalisedJunctionNeverCollidesOverTwoMinutes) {
+  // Three cars on each inbound arm, going straight on, turning left and turning right.
+  const std::string arms[] = {"north", "east", "south", "west"};
+  const std::string left_of[] = {"east", "north", "west", "south"};
+  const std::string right_of[] = {"west", "south", "east", "north"};
+  const std::string straight[] = {"south", "west", "north", "east"};
+  std::string definitions = "ego = AV((\"east_in_0\"->5, , 0), (\"east_in_0\"->25));\n";
+  std::string names;
+  for (int arm = 0; arm < 4; ++arm) {
+    const std::string exits[] = {straight[arm], left_of[arm], right_of[arm]};
+    for (int k = 0; k < 3; ++k) {
+      std::string name = arms[arm] + std::to_string(k);
+      double s = 40 + 30 * k + (arm == 1 ? 30 : 0);  // the ego waits at the east arm's start
+      definitions += name + " = Vehicle((\"" + arms[arm] + "_in_0\"->" + std::to_string(s) +
+                     ", , 11), , (\"" + exits[k] + "_out_0\"->100));\n";
+      names += (names.empty() ? "" : ", ") + name;
+    }
+  }
+  SimulationOptions options = lasting(120);
+  auto run = simulate_text(scenario_text("crossroads", definitions, names), options);
+  ASSERT_TRUE(run.trace) << run.errors;
+  EXPECT_EQ(npc_collisions(*run.trace), 0);
+  int crossed = 0;
+  for (ActorId k = 1; k < run.trace->actors.size(); ++k) {
+    const TraceActor& car = run.trace->actors[k];
+    // Through: out on an outbound lane, heading away from the junction's centre at (0, 0).
+    double x = car.x.back(), y = car.y.back(), heading = car.heading.back();
+    if (std::hypot(x, y) > 60 && x * std::cos(heading) + y * std::sin(heading) > 0) ++crossed;
+  }
+  EXPECT_EQ(crossed, 12) << "every car should have got through the junction in two minutes";
+}
+
+}  // namespace
+}  // namespace scenfuzz
