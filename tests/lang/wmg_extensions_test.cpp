@@ -1,5 +1,5 @@
-// scenfuzz's additions to WMG SDL level 2 (docs/wmg-sdl.md, "scenfuzz's extensions"): the header
-// line `NPC BEHAVIOUR: Reactive | Scripted` (read anywhere after VERSION, printed back, into
+// scenfuzz's addition to WMG SDL level 2, the header line `NPC BEHAVIOUR: Reactive | Scripted`
+// (docs/wmg-sdl.md: read anywhere after VERSION, printed back, into
 // ScenarioTemplate::npc_behaviour), and traffic flows as background traffic: their ranges are
 // search parameters, no "not simulated" warning, and the checks on their rate and speed. The
 // header line's syntax errors are cases of wmg_malformed_test.cpp.
