@@ -123,9 +123,10 @@ void walk_scenario(ScenarioTemplate& scenario, const Visit& visit) {
   for (Position& position : traffic.stop_signs) walk_position(position, "traffic.stop_sign", visit);
   for (Position& position : traffic.level_crossings)
     walk_position(position, "traffic.level_crossing", visit);
+  // Flows are named like actors (`flow1.rate`); the WMG front end names its own parameters.
   for (TrafficFlow& flow : traffic.flows) {
-    walk(flow.rate, "traffic." + flow.name + ".rate", "1/h", visit);
-    walk_optional(flow.speed, "traffic." + flow.name + ".speed", "m/s", visit);
+    walk(flow.rate, flow.name + ".rate", "veh/h", visit);
+    walk_optional(flow.speed, flow.name + ".speed", "m/s", visit);
   }
   for (Spec& spec : scenario.specs) walk_formula(spec.formula, spec.name, visit);
   for (ExpectedCollision& collision : scenario.expected_collisions)

@@ -8,6 +8,7 @@
 
 #include "lang/avunit/builtins.hpp"
 #include "lang/avunit/item.hpp"
+#include "lang/avunit/traffic_extensions.hpp"
 #include "lang/edit_distance.hpp"
 #include "lang/number_format.hpp"
 #include "lang/walk_values.hpp"
@@ -51,6 +52,11 @@ std::string describe(const Item& item) {
     case ItemKind::formula: return "a formula";
     case ItemKind::intersection: return "an intersection";
     case ItemKind::speed_limit: return "a speed limit";
+    case ItemKind::flow: {
+      const TrafficFlow& flow = payload_of<TrafficFlow>(item);
+      return flow.name.empty() ? "a traffic flow" : "traffic flow '" + flow.name + "'";
+    }
+    case ItemKind::npc_behaviour: return "NPCBehaviour(" + item.word + ")";
   }
   return "a value";
 }
@@ -212,6 +218,9 @@ class Elaborator {
     } else if (item.kind == ItemKind::obstacle) {
       Obstacle& obstacle = payload_of<Obstacle>(item);
       if (obstacle.name.empty()) obstacle.name = statement.name;
+    } else if (item.kind == ItemKind::flow) {
+      TrafficFlow& flow = payload_of<TrafficFlow>(item);
+      if (flow.name.empty()) flow.name = statement.name;
     }
     item.location = statement.value.location;
     bind(statement.name, std::move(item));
@@ -816,6 +825,7 @@ class Elaborator {
 
   Item call(const Syntax& syntax) {
     const std::string& name = syntax.text;
+    if (name == "NPCBehaviour") return npc_behaviour(syntax);  // its argument is a bare word
     std::vector<Item> arguments;
     for (const Syntax& child : syntax.children) arguments.push_back(evaluate(child));
     for (const Item& argument : arguments)
@@ -831,6 +841,7 @@ class Elaborator {
     if (name == "IMU" || name == "ENU" || name == "WGS84") return framed(syntax, arguments);
     if (name == "Intersection") return intersection(syntax, arguments);
     if (name == "SpeedLimit") return speed_limit(syntax, arguments);
+    if (name == "Flow") return flow(syntax, arguments);
     if (name == "EXE")
       return fail(syntax.location, "EXE(...) can only be used as 'Trace name = EXE(scenario);'");
     switch (signal_class(name)) {
@@ -1124,6 +1135,20 @@ class Elaborator {
     return make_item(ItemKind::speed_limit, syntax.location, std::move(limit));
   }
 
+  Item npc_behaviour(const Syntax& syntax) {
+    std::optional<NpcBehaviour> behaviour = elaborate_npc_behaviour(syntax, diagnostics_);
+    if (!behaviour) return make_item(ItemKind::error, syntax.location);
+    Item item = make_item(ItemKind::npc_behaviour, syntax.location);
+    item.word = npc_behaviour_word(*behaviour);
+    return item;
+  }
+
+  Item flow(const Syntax& syntax, const std::vector<Item>& arguments) {
+    std::optional<TrafficFlow> flow = elaborate_flow(syntax, arguments, parameters_, diagnostics_);
+    if (!flow) return make_item(ItemKind::error, syntax.location);
+    return make_item(ItemKind::flow, syntax.location, std::move(*flow));
+  }
+
   // dis(a, b), vel(a, b), spd(a, b), acc(a, b), diff(perceived, truth)
   Item signal_function(const Syntax& syntax, const std::vector<Item>& arguments) {
     const std::string& name = syntax.text;
@@ -1222,7 +1247,7 @@ class Elaborator {
       }
       parts->environment = payload_of<Environment>(items[5]);
     }
-    if (slots == 7 && !traffic(items[6], parts->traffic))
+    if (slots == 7 && !traffic(items[6], *parts, names))
       return make_item(ItemKind::error, syntax.location);
     Item item =
         make_item(ItemKind::scenario, syntax.location, std::shared_ptr<const ScenarioParts>(parts));
@@ -1292,16 +1317,34 @@ class Elaborator {
     return true;
   }
 
-  bool traffic(const Item& slot, Traffic& traffic) {
+  // Flows are named like actors (`flow1`, or their variable), in one namespace with them.
+  bool traffic(const Item& slot, ScenarioParts& parts, std::set<std::string>& names) {
     std::vector<const Item*> elements;
     flatten(slot, elements);
     for (const Item* element : elements) {
       if (element->kind == ItemKind::intersection) {
-        traffic.intersections.push_back(payload_of<IntersectionControl>(*element));
+        parts.traffic.intersections.push_back(payload_of<IntersectionControl>(*element));
       } else if (element->kind == ItemKind::speed_limit) {
-        traffic.speed_limits.push_back(payload_of<SpeedLimit>(*element));
+        parts.traffic.speed_limits.push_back(payload_of<SpeedLimit>(*element));
+      } else if (element->kind == ItemKind::flow) {
+        TrafficFlow flow = payload_of<TrafficFlow>(*element);
+        if (flow.name.empty())
+          flow.name = fresh_name("flow", names);
+        else if (!claim_name(flow.name, element->location, names))
+          return false;
+        parts.traffic.flows.push_back(std::move(flow));
+      } else if (element->kind == ItemKind::npc_behaviour) {
+        if (parts.npc_behaviour) {
+          diagnostics_.error(element->location,
+                             "NPCBehaviour(...) is given twice in the traffic slot; keep one");
+          return false;
+        }
+        parts.npc_behaviour =
+            element->word == "scripted" ? NpcBehaviour::scripted : NpcBehaviour::reactive;
       } else {
-        mismatch(*element, "an Intersection(...) or SpeedLimit(...) in the traffic slot");
+        mismatch(*element,
+                 "an Intersection(...), SpeedLimit(...), Flow(...) or NPCBehaviour(...) in the "
+                 "traffic slot");
         return false;
       }
     }
@@ -1582,6 +1625,7 @@ class Elaborator {
       result.obstacles = parts->obstacles;
       result.environment = parts->environment;
       result.traffic = parts->traffic;
+      result.npc_behaviour = parts->npc_behaviour;
       result.trace_name = trace_name_;
       for (const auto& [name, item] : variables_)
         if (item.kind == ItemKind::scenario &&

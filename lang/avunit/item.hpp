@@ -41,6 +41,8 @@ enum class ItemKind {
   formula,
   intersection,
   speed_limit,
+  flow,           // Flow(...): background traffic (docs/avunit.md, "Extensions")
+  npc_behaviour,  // NPCBehaviour(...): `word` is "reactive" or "scripted"
 };
 
 // The parts of one CreateScenario{...}, shared by every variable that holds it.
@@ -52,6 +54,7 @@ struct ScenarioParts {
   std::vector<Obstacle> obstacles;
   std::optional<Environment> environment;
   Traffic traffic;
+  std::optional<NpcBehaviour> npc_behaviour;
   SourceLocation location;
 };
 
@@ -70,7 +73,7 @@ using ItemPayload =
                  Boxed<ActorType>, Boxed<Shape>, Boxed<Actor>, Boxed<Obstacle>, Boxed<Environment>,
                  Boxed<MapReference>, Boxed<std::shared_ptr<const ScenarioParts>>,
                  Boxed<Projection>, Boxed<SpecTerm>, Boxed<Formula>, Boxed<IntersectionControl>,
-                 Boxed<SpeedLimit>>;
+                 Boxed<SpeedLimit>, Boxed<TrafficFlow>>;
 
 struct Item {
   ItemKind kind = ItemKind::error;

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "lang/avunit/avunit.hpp"
+#include "lang/avunit/traffic_extensions.hpp"
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/walk_values.hpp"
@@ -42,6 +43,9 @@ class Printer {
     out_ += actor_statements();
     for (const Obstacle& obstacle : scenario_.obstacles)
       out_ += obstacle.name + " = " + obstacle_text(obstacle) + ";\n";
+    // Assigned, so that a flow keeps its name (and its parameters theirs) when read back.
+    for (const TrafficFlow& flow : scenario_.traffic.flows)
+      out_ += flow.name + " = " + flow_text(flow) + ";\n";
     out_ += scenario_name + " = CreateScenario{load(" + quoted(scenario_.map.name) + ");\n";
     out_ += "    " + scenario_.ego.name + ";\n";
     out_ += "    " + name_set(scenario_.vehicles) + ";\n";
@@ -49,8 +53,9 @@ class Printer {
     std::vector<std::string> obstacle_names;
     for (const Obstacle& obstacle : scenario_.obstacles) obstacle_names.push_back(obstacle.name);
     out_ += "    " + set_text(obstacle_names) + ";\n";
-    bool has_traffic =
-        !scenario_.traffic.intersections.empty() || !scenario_.traffic.speed_limits.empty();
+    bool has_traffic = !scenario_.traffic.intersections.empty() ||
+                       !scenario_.traffic.speed_limits.empty() ||
+                       !scenario_.traffic.flows.empty() || scenario_.npc_behaviour;
     if (scenario_.environment || has_traffic)
       out_ += "    " + (scenario_.environment ? environment_text(*scenario_.environment) : "{}") +
               ";\n";
@@ -93,6 +98,7 @@ class Printer {
     for (const Actor& actor : scenario_.vehicles) taken.insert(actor.name);
     for (const Actor& actor : scenario_.pedestrians) taken.insert(actor.name);
     for (const Obstacle& obstacle : scenario_.obstacles) taken.insert(obstacle.name);
+    for (const TrafficFlow& flow : scenario_.traffic.flows) taken.insert(flow.name);
     for (const Spec& spec : scenario_.specs) taken.insert({spec.name, spec.trace});
     taken.insert(scenario_.scenario_name.empty() ? "scenario" : scenario_.scenario_name);
     taken.insert(scenario_.trace_name);
@@ -317,7 +323,19 @@ class Printer {
     for (const SpeedLimit& limit : traffic.speed_limits)
       items.push_back("SpeedLimit(" + quoted(limit.lane) + ", (" + value_text(limit.lower) + ", " +
                       value_text(limit.upper) + "))");
+    for (const TrafficFlow& flow : traffic.flows) items.push_back(flow.name);
+    if (scenario_.npc_behaviour)
+      items.push_back("NPCBehaviour(" + npc_behaviour_word(*scenario_.npc_behaviour) + ")");
     return set_text(items);
+  }
+
+  std::string flow_text(const TrafficFlow& flow) const {
+    // Every AVUnit flow has a speed; other languages' flows are printed by their own printers.
+    SCENFUZZ_DEMAND(flow.speed.has_value());
+    std::string text = "Flow(" + quoted(flow.source_lane) + ", " + value_text(flow.rate) + ", " +
+                       value_text(*flow.speed);
+    if (!flow.destination_lane.empty()) text += ", " + quoted(flow.destination_lane);
+    return text + ")";
   }
 
   // ---- specifications --------------------------------------------------------------------

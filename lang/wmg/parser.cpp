@@ -39,16 +39,31 @@ Label parse_extension(Cursor& cursor) {
   return cursor.label(vocabulary::extension());
 }
 
-// HEADER: VERSION, then the authors with the extension line before or after them.
+// scenfuzz's `NPC BEHAVIOUR: Reactive | Scripted` lines, at most one, anywhere after VERSION.
+void parse_npc_behaviour(Cursor& cursor, Header& header) {
+  while (cursor.at_phrase("NPC BEHAVIOUR")) {
+    if (header.npc_behaviour)
+      cursor.fail(cursor.peek().location, "the header has two NPC BEHAVIOUR lines; keep one");
+    cursor.expect_phrase("NPC BEHAVIOUR", "in the header");
+    cursor.expect(TokenKind::colon, "after 'NPC BEHAVIOUR'");
+    header.npc_behaviour = cursor.enumerated<NpcBehaviourWord>(vocabulary::npc_behaviour());
+  }
+}
+
+// HEADER: VERSION, then the authors with the extension line before or after them; scenfuzz's
+// NPC BEHAVIOUR line anywhere among them.
 Header parse_header(Cursor& cursor) {
   Header header;
   SourceLocation first = cursor.peek().location;
   header.version = parse_version(cursor);
+  parse_npc_behaviour(cursor, header);
   if (cursor.at_phrase("EXTENSION")) header.extension = parse_extension(cursor);
+  parse_npc_behaviour(cursor, header);
   while (cursor.at_phrase("AUTHOR")) {
     cursor.take();
     cursor.expect(TokenKind::colon, "after 'AUTHOR'");
     header.authors.push_back(cursor.string("the author"));
+    parse_npc_behaviour(cursor, header);
   }
   if (header.authors.empty())
     cursor.fail(cursor.peek().location,
@@ -58,6 +73,7 @@ Header parse_header(Cursor& cursor) {
       cursor.fail(cursor.peek().location, "the header has two EXTENSION lines; keep one");
     header.extension = parse_extension(cursor);
   }
+  parse_npc_behaviour(cursor, header);
   header.location = cursor.span_from(first);
   return header;
 }

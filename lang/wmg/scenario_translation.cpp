@@ -87,6 +87,10 @@ ScenarioTemplate translate_level2(const Level2File& file, Diagnostics& diagnosti
   translation.scenario.language = SourceLanguage::wmg_sdl;
   translation.scenario.has_scenario = true;
   translation.scenario.scenario_name = file.scenery.id.name;
+  if (file.header.npc_behaviour)
+    translation.scenario.npc_behaviour =
+        file.header.npc_behaviour->value == NpcBehaviourWord::scripted ? NpcBehaviour::scripted
+                                                                       : NpcBehaviour::reactive;
   translate_scenery(file.scenery, translation);
   // Lanes and actors the dynamics name are checked against the scenery; with no usable map, the
   // same lane would be reported at every use.

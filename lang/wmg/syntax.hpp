@@ -21,10 +21,15 @@ struct Version {
   bool operator==(const Version&) const = default;
 };
 
+// scenfuzz's header extension `NPC BEHAVIOUR: Reactive | Scripted` (docs/wmg-sdl.md): how the
+// NPCs drive. In the order of vocabulary::npc_behaviour().
+enum class NpcBehaviourWord { reactive, scripted };
+
 struct Header {
   Version version;
   std::vector<Text> authors;
   std::optional<Label> extension;  // "None" or a STRING
+  std::optional<Located<NpcBehaviourWord>> npc_behaviour;
   SourceLocation location;
   bool operator==(const Header&) const = default;
 };

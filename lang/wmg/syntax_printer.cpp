@@ -52,6 +52,9 @@ std::string print_header(const Header& header) {
                     std::to_string(header.version.minor_part.value) + "\n";
   for (const Text& author : header.authors) out += "AUTHOR: '" + author.text + "'\n";
   if (header.extension) out += "EXTENSION: " + label_text(*header.extension) + "\n";
+  if (header.npc_behaviour)
+    out += "NPC BEHAVIOUR: " + phrase_of(vocabulary::npc_behaviour(), header.npc_behaviour->value) +
+           "\n";
   return out;
 }
 

@@ -1,5 +1,5 @@
 // ENVIRONMENT_ELEMENTS to weather components in [0, 1] and the time of day (docs/wmg-semantics.md,
-// "Environment"), and the traffic model's flows to background traffic.
+// "Environment"), and the traffic model's flows to background traffic that the simulator drives.
 #include <string>
 
 #include "lang/wmg/scenario_translation.hpp"
@@ -50,6 +50,25 @@ double snow_intensity(WeatherLevel level) {
     case WeatherLevel::heavy: return 0.9;
   }
   return 0.3;
+}
+
+// The simulator spawns a flow's vehicles at its rate and speed: neither may be negative, the
+// vehicles must move, and more than one vehicle a second per lane is not traffic.
+void check_flow(const TrafficFlow& flow, Translation& translation) {
+  constexpr double kMostVehiclesPerHour = 3600.0;
+  const std::string name = "traffic flow '" + flow.id.name + "'";
+  if (flow.first.low < 0.0)
+    translation.diagnostics.error(flow.first.location,
+                                  "the rate of " + name + " cannot be negative");
+  else if (flow.first.high > kMostVehiclesPerHour)
+    translation.diagnostics.error(flow.first.location,
+                                  "the rate of " + name +
+                                      " cannot be above 3600 vehicles per hour (one vehicle per "
+                                      "second per lane)");
+  if (flow.second.low <= 0.0)
+    translation.diagnostics.error(flow.second.location, "the speed of " + name +
+                                                            " must be above 0 km/h (its "
+                                                            "vehicles must move)");
 }
 
 }  // namespace
@@ -121,12 +140,8 @@ void translate_traffic(const TrafficModel& traffic, Translation& translation) {
                                     "unknown road '" + centroid.road.name + "'");
     translation.number(centroid.distance, "traffic." + centroid.id.name + ".distance", "m");
   }
-  if (!traffic.flows.empty())
-    translation.diagnostics.warning(traffic.flows.front().location,
-                                    "traffic flows are not simulated yet: their ranges are "
-                                    "search dimensions that change nothing "
-                                    "(docs/wmg-semantics.md)");
   for (const TrafficFlow& flow : traffic.flows) {
+    check_flow(flow, translation);
     scenfuzz::TrafficFlow result;
     result.name = flow.id.name;
     result.location = flow.location;

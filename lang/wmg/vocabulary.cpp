@@ -14,6 +14,11 @@ const Vocabulary& extension() {
   return v;
 }
 
+const Vocabulary& npc_behaviour() {
+  static const Vocabulary v{"NPC behaviour", {"Reactive", "Scripted"}, false, {}};
+  return v;
+}
+
 const Vocabulary& junction_type() {
   static const Vocabulary v{"junction type",
                             {"T-Junction", "Y-Junction", "Staggered", "Crossroads",

@@ -21,6 +21,7 @@ struct Vocabulary {
 
 namespace vocabulary {
 const Vocabulary& extension();
+const Vocabulary& npc_behaviour();  // scenfuzz's header extension: Reactive, Scripted
 const Vocabulary& junction_type();
 const Vocabulary& connection_control();
 const Vocabulary& junction_road_sign();

@@ -36,6 +36,11 @@ const std::string kScenario =
 // An ego and nothing else, for the CreateScenario cases (line 1).
 const std::string kEgo = "ego = AV((\"lane_1\"->0), (\"lane_1\"->50));\n";
 
+// A scenario on line 2 whose traffic slot holds `items`, which start at column 53.
+std::string with_traffic(const std::string& items) {
+  return kEgo + "s = CreateScenario{load(\"m\"); ego; {}; {}; {}; {}; {" + items + "}};\n";
+}
+
 // Parses `text` in a forked child: see malformed_harness.hpp.
 bool parse_survives(const std::string& text, const std::string& label) {
   return test::parse_survives({text}, label,
@@ -189,6 +194,72 @@ std::vector<MalformedCase> malformed_cases() {
        kEgo + "npc = Vehicle((\"lane_1\"->10, , 5));\n" +
            "s = CreateScenario{load(\"m\"); ego; {npc, npc}; {}; {};};\n",
        3, 42, "'npc' appears twice in the scenario"},
+
+      // ---- elaborator: scenfuzz's traffic-slot extensions (docs/avunit.md, "Extensions") ----
+      {"npc_behaviour_unknown_word", with_traffic("NPCBehaviour(fast)"), 2, 66,
+       "expected scripted or reactive in NPCBehaviour(...), found 'fast': write "
+       "NPCBehaviour(scripted) or NPCBehaviour(reactive)"},
+      {"npc_behaviour_unknown_quoted_word", with_traffic("NPCBehaviour(\"Scripted\")"), 2, 66,
+       "expected scripted or reactive in NPCBehaviour(...), found string \"Scripted\""},
+      {"npc_behaviour_number", with_traffic("NPCBehaviour(1)"), 2, 66,
+       "expected scripted or reactive in NPCBehaviour(...), found number '1'"},
+      {"npc_behaviour_without_argument", with_traffic("NPCBehaviour()"), 2, 53,
+       "NPCBehaviour(...) takes one word: NPCBehaviour(scripted) or NPCBehaviour(reactive), "
+       "found 0 arguments"},
+      {"npc_behaviour_with_two_arguments", with_traffic("NPCBehaviour(scripted, reactive)"), 2, 53,
+       "NPCBehaviour(...) takes one word: NPCBehaviour(scripted) or "
+       "NPCBehaviour(reactive), found 2 arguments"},
+      {"npc_behaviour_given_twice", with_traffic("NPCBehaviour(scripted), NPCBehaviour(reactive)"),
+       2, 77, "NPCBehaviour(...) is given twice in the traffic slot; keep one"},
+      {"npc_behaviour_in_the_vehicle_slot",
+       kEgo + "b = NPCBehaviour(scripted);\n" +
+           "s = CreateScenario{load(\"m\"); ego; {b}; {}; {};};\n",
+       3, 37,
+       "expected a Vehicle(...) in the vehicle slot of CreateScenario, found "
+       "NPCBehaviour(scripted)"},
+      {"number_in_the_traffic_slot", with_traffic("1"), 2, 53,
+       "expected an Intersection(...), SpeedLimit(...), Flow(...) or NPCBehaviour(...) in the "
+       "traffic slot, found a number"},
+      {"flow_negative_rate", with_traffic("Flow(\"east_0\", -100, 10)"), 2, 68,
+       "a flow's rate cannot be negative, found -100"},
+      {"flow_negative_speed", with_traffic("Flow(\"east_0\", 100, -3)"), 2, 73,
+       "a flow's speed cannot be negative, found -3"},
+      {"flow_zero_speed", with_traffic("Flow(\"east_0\", 100, 0)"), 2, 73,
+       "a flow's speed must be above 0 m/s (its vehicles must move), found 0"},
+      {"flow_rate_above_a_vehicle_a_second", with_traffic("Flow(\"east_0\", 5000, 10)"), 2, 68,
+       "a flow's rate cannot be above 3600 vehicles per hour (one vehicle per second per lane), "
+       "found 5000"},
+      {"flow_rate_range_reaching_above_a_vehicle_a_second",
+       with_traffic("Flow(\"east_0\", range(1000, 4000), 10)"), 2, 68,
+       "a flow's rate cannot be above 3600 vehicles per hour (one vehicle per second per lane), "
+       "but it can reach 4000"},
+      {"flow_speed_range_reaching_zero", with_traffic("Flow(\"east_0\", 100, range(0, 10))"), 2, 73,
+       "a flow's speed must be above 0 m/s (its vehicles must move), but it can reach 0"},
+      {"flow_inverted_rate_range", with_traffic("Flow(\"east_0\", range(900, 300), 10)"), 2, 68,
+       "inverted range: the lower bound 900 is above the upper bound 300"},
+      {"flow_inverted_speed_range", with_traffic("Flow(\"east_0\", 100, range(14, 8))"), 2, 73,
+       "inverted range: the lower bound 14 is above the upper bound 8"},
+      {"flow_unbounded_rate", with_traffic("Flow(\"east_0\", 100 / range(-1, 1), 10)"), 2, 68,
+       "a flow's rate must be finite, but it is unbounded"},
+      {"flow_with_two_arguments", with_traffic("Flow(\"east_0\", 100)"), 2, 53,
+       "Flow(...) expects Flow(\"source_lane\", rate, speed) or Flow(\"source_lane\", rate, "
+       "speed, \"destination_lane\"), found 2 arguments"},
+      {"flow_with_five_arguments", with_traffic("Flow(\"east_0\", 100, 10, \"west_0\", 1)"), 2, 53,
+       "Flow(...) expects Flow(\"source_lane\", rate, speed) or"},
+      {"flow_rate_not_a_number", with_traffic("Flow(\"east_0\", \"fast\", 10)"), 2, 68,
+       "expected a rate in vehicles per hour in Flow(...), found string \"fast\""},
+      {"flow_speed_a_time_of_day", with_traffic("Flow(\"east_0\", 100, 12:00)"), 2, 73,
+       "expected a speed in m/s in Flow(...), found a time of day"},
+      {"flow_source_lane_not_a_string", with_traffic("Flow(3, 100, 10)"), 2, 58,
+       "expected the source lane id in quotes in Flow(...), found a number"},
+      {"flow_destination_lane_not_a_string", with_traffic("Flow(\"east_0\", 100, 10, 2)"), 2, 77,
+       "expected the destination lane id in quotes in Flow(...), found a number"},
+      {"flow_empty_source_lane", with_traffic("Flow(\"\", 100, 10)"), 2, 58,
+       "a lane id cannot be empty"},
+      {"flow_used_twice",
+       kEgo + "f = Flow(\"east_0\", 100, 10);\n" +
+           "s = CreateScenario{load(\"m\"); ego; {}; {}; {}; {}; {f, f}};\n",
+       3, 56, "'f' appears twice in the scenario"},
 
       // ---- elaborator: traces and specifications ----
       {"trace_not_exe",
