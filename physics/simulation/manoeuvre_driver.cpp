@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "physics/map/lane_route.hpp"
+#include "physics/simulation/lane_cruise.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -39,7 +40,12 @@ ManoeuvreDriver::ManoeuvreDriver(const RoadMap& map, const ManoeuvreScript& scri
   walk_heading_ = state_.heading;
   if (pedestrian_) return;
   auto lane = project_to_lane(map, {state_.x, state_.y}, state_.heading);
-  if (lane && lane->inside) on_lane_ = LanePosition{lane->lane, lane->s, lane->lateral};
+  if (lane && lane->inside) {
+    on_lane_ = LanePosition{lane->lane, lane->s, lane->lateral};
+    // On a lane it faces along it from the start, as it will at every step after.
+    state_.heading = lane_heading_at(map, lane->lane, lane->s);
+  }
+  cruise_speed_ = state_.speed;
 }
 
 const PhaseMotion* ManoeuvreDriver::current() const {
@@ -50,7 +56,12 @@ int ManoeuvreDriver::phase() const { return running_ ? static_cast<int>(next_) :
 
 void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   update_phases(world, self);
-  double acceleration = longitudinal_acceleration(dt);
+  double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self);
+  if (on_lane_ && !state_.reversing && state_.speed > 0) {
+    NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
+    acceleration =
+        std::min(acceleration, dead_end_braking(*map_, *on_lane_, next, body_, state_.speed, dt));
+  }
   if (on_lane_)
     move_on_lane(acceleration, dt);
   else
@@ -75,7 +86,9 @@ void ManoeuvreDriver::update_phases(const WorldSnapshot& world, std::uint32_t se
         while_held_ = while_held_ || holds;
       }
       if (!ends) return;
-      // Between phases and after the last, the actor holds its lane offset, speed and heading.
+      // Between phases and after the last, the actor keeps its lane offset and drives on at its
+      // speed, reacting to what is ahead (between_phases).
+      cruise_speed_ = state_.reversing ? 0 : state_.speed;
       running_ = false;
       ++next_;
       lateral_duration_ = 0;
@@ -311,6 +324,12 @@ double ManoeuvreDriver::longitudinal_acceleration(double dt) const {
   const bool backwards = velocity < 0 || (velocity == 0 && acceleration < 0);
   if (backwards) return std::clamp(acceleration, -body_.max_acceleration, body_.max_deceleration);
   return std::clamp(acceleration, -body_.max_deceleration, body_.max_acceleration);
+}
+
+double ManoeuvreDriver::between_phases(const WorldSnapshot& world, std::uint32_t self) const {
+  if (pedestrian_ || !on_lane_ || state_.reversing) return 0;
+  NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
+  return cruise_acceleration(world, self, *on_lane_, next, body_, cruise_speed_);
 }
 
 LaneIndex ManoeuvreDriver::previous_lane(LaneIndex to) const {

@@ -1,9 +1,11 @@
 // Drives one WMG SDL actor through its manoeuvre phases, online: its phases start and end on
 // conditions over the current world (the ego's speed, offsets, lights, timers), so its motion
-// cannot be planned before the run as scripted NPCs' is. Vehicles move along the lane graph
-// (arc length, lateral offset and velocity along the heading, negative when reversing, integrated
-// each step; lane changes are smooth sideways curves in the target lane's frame); pedestrians and
-// vehicles off every lane move freely with the point-mass and bicycle models.
+// cannot be planned before the run as scripted NPCs' is. Outside its phases a vehicle on a lane
+// drives on reactively (lane_cruise.hpp), and it stops before the end of a lane leading nowhere.
+// Vehicles move along the lane graph (arc length, lateral offset and velocity along the heading,
+// negative when reversing, integrated each step; lane changes are smooth sideways curves in the
+// target lane's frame); pedestrians and vehicles off every lane move freely with the point-mass and
+// bicycle models.
 #pragma once
 
 #include <array>
@@ -50,6 +52,8 @@ class ManoeuvreDriver {
   bool gap_reached(const WorldSnapshot& world, const PhaseMotion& phase) const;
   // Along the heading, negative backwards.
   double longitudinal_acceleration(double dt) const;
+  // Outside its phases: a vehicle on a lane drives on reactively at its cruising speed.
+  double between_phases(const WorldSnapshot& world, std::uint32_t self) const;
   void move_on_lane(double acceleration, double dt);
   void move_free(const WorldSnapshot& world, double acceleration, double dt);
   LaneIndex next_lane(LaneIndex from) const;
@@ -61,6 +65,7 @@ class ManoeuvreDriver {
   ActorClass body_;
   bool pedestrian_;
   KinematicState state_;
+  double cruise_speed_ = 0;  // m/s outside its phases: its initial speed, then where one ended
 
   std::size_t next_ = 0;  // the phase running, or the next to start
   bool running_ = false;

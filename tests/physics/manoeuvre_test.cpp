@@ -598,3 +598,52 @@ TEST(ManoeuvreTest, RelativeLocationAndHeadingConditionsReadTheActorsPlaces) {
 
 }  // namespace
 }  // namespace scenfuzz
+
+namespace scenfuzz {
+namespace {
+
+// A phase that never starts (its timer never reaches 1000 s): the actor drives outside its phases
+// throughout.
+ManoeuvrePhase never_starting(const std::string& manoeuvre) {
+  ManoeuvrePhase later = phase(manoeuvre, {}, 2);
+  later.start_when =
+      compare(signal_term("timer", {"T"}), CompareOp::greater_equal, number_term(1000));
+  return later;
+}
+
+TEST(ManoeuvreTest, OutsideItsPhasesACarStopsBehindAStandingOne) {
+  ScenarioTemplate scenario = three_lane_road(10, 0, 25);
+  scenario.timers.push_back({"T", constant_value(0), {}});
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Standing",
+                                          lane_state("east_1", 150, 0), {never_starting("Stop")}));
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Follower",
+                                          lane_state("east_1", 40, 12), {never_starting("Stop")}));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  EXPECT_TRUE(run.trace->collisions.empty());
+  const TraceActor& standing = actor_named(*run.trace, "Standing");
+  const TraceActor& follower = actor_named(*run.trace, "Follower");
+  EXPECT_EQ(standing.x.back(), standing.x.front()) << "standing, it stays";
+  double gap = standing.x.back() - follower.x.back() - (standing.length + follower.length) / 2;
+  EXPECT_GT(gap, 0.5);
+  EXPECT_LT(gap, 6.0);
+  EXPECT_LT(follower.speed.back(), 0.01);
+}
+
+TEST(ManoeuvreTest, ACarComesToRestBeforeTheEndOfARoadThatLeadsNowhere) {
+  ScenarioTemplate scenario = three_lane_road(10, 0, 20);
+  scenario.timers.push_back({"T", constant_value(0), {}});
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Runner",
+                                          lane_state("east_1", 380, 15), {never_starting("Stop")}));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  const TraceActor& runner = actor_named(*run.trace, "Runner");
+  const ActorClass& car = actor_class(ActorCategory::car);
+  EXPECT_LT(runner.speed.back(), 0.01);
+  EXPECT_LE(runner.x.back(), 500 + 1e-9);
+  EXPECT_GT(runner.x.back(), 490) << "it stops at the end, not far before it";
+  for (double a : runner.acceleration) EXPECT_GE(a, -car.comfortable_deceleration - 0.5);
+}
+
+}  // namespace
+}  // namespace scenfuzz

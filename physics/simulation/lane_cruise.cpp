@@ -1,0 +1,124 @@
+// Reactive cruising along the lanes (see lane_cruise.hpp): the lanes ahead are walked once per
+// step up to the distance that matters at the present speed.
+#include "physics/simulation/lane_cruise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "physics/map/lane_route.hpp"
+
+namespace scenfuzz {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kTimeGap = 1.5;              // s, IDM's T (as the lane follower's)
+constexpr double kStandstillGap = 2.0;        // m, IDM's s0
+constexpr double kStopLineGap = 1.0;          // m before a stop line
+constexpr double kComfortAcceleration = 1.5;  // m/s^2, IDM's a (at most the class's)
+constexpr double kMinimumLookahead = 40;      // m
+constexpr double kLookaheadTime = 6;          // s of travel
+constexpr std::size_t kMaximumLanes = 64;
+constexpr double kStandingCruise = 0.5;
+constexpr double kDeadEndMargin =
+    0.5;  // m short of a dead end where an actor aims to stop  // m/s: cruising slower than this is
+          // standing     // lanes walked ahead, for rings of tiny lanes
+
+struct LaneAhead {
+  LaneIndex lane = 0;
+  double offset = 0;  // route distance from the actor to the lane's s = 0 (negative for its own)
+};
+
+std::vector<LaneAhead> lanes_ahead(const RoadMap& map, LanePosition at, const NextLane& next_lane,
+                                   double reach, bool& dead_end) {
+  std::vector<LaneAhead> lanes{{at.lane, -at.s}};
+  dead_end = false;
+  while (lanes.size() < kMaximumLanes) {
+    const LaneAhead& last = lanes.back();
+    double end = last.offset + map.lane(last.lane).length();
+    if (end > reach) break;
+    LaneIndex next = next_lane(last.lane);
+    if (next == last.lane) {
+      dead_end = true;
+      break;
+    }
+    LinkPoints link = link_points(map, last.lane, next);
+    lanes.push_back({next, last.offset + link.exit_s - link.entry_s});
+  }
+  return lanes;
+}
+
+double fourth_power(double x) {
+  double squared = x * x;
+  return squared * squared;
+}
+
+}  // namespace
+
+double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                           const NextLane& next_lane, const ActorClass& body, double cruise_speed) {
+  const RoadMap& map = *world.map;
+  const KinematicState& me = world.states[self];
+  const double v = me.speed;
+  const double a = std::min(kComfortAcceleration, body.max_acceleration);
+  const double b = body.comfortable_deceleration;
+  const double reach = std::max(kMinimumLookahead, v * kLookaheadTime);
+  bool dead_end = false;
+  std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, reach, dead_end);
+  // A phase that ended at a standstill (or nearly: a stop reaches 0 within a step) leaves it
+  // standing.
+  if (cruise_speed < kStandingCruise) return v > 0 ? -body.comfortable_deceleration : 0;
+  const double desired = cruise_speed;
+  double best = a * (1 - fourth_power(v / desired));
+  auto follow = [&](double gap, double lead_speed, double clearance) {
+    double wanted = clearance + v * kTimeGap + v * (v - lead_speed) / (2 * std::sqrt(a * b));
+    double ratio = std::max(wanted, 0.0) / std::max(gap, 0.1);
+    best = std::min(best, a * (1 - fourth_power(v / desired) - ratio * ratio));
+  };
+  const double half = body.length / 2;
+  // The nearest actor ahead on these lanes.
+  double nearest = kInfinity, lead_speed = 0;
+  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+    if (k == self || world.lanes[k].lane < 0) continue;
+    for (const LaneAhead& lane : lanes) {
+      if (static_cast<LaneIndex>(world.lanes[k].lane) != lane.lane) continue;
+      double along = lane.offset + world.lanes[k].s;
+      double gap = along - half - world.lengths[k] / 2;
+      if (along > 0 && gap < nearest) {
+        nearest = gap;
+        double relative = angle_difference(world.states[k].heading, me.heading);
+        lead_speed = std::max(0.0, longitudinal_velocity(world.states[k]) * std::cos(relative));
+      }
+    }
+  }
+  if (std::isfinite(nearest)) follow(nearest, lead_speed, kStandstillGap);
+  // Red lights (and yellow ones it can stop for) on these lanes.
+  for (const LaneAhead& lane : lanes)
+    for (const LaneFeature& feature : map.lane(lane.lane).features) {
+      if (feature.kind != FeatureKind::traffic_light) continue;
+      double gap = lane.offset + feature.s_begin - half;
+      if (gap < 0 || feature.index >= world.lights.size()) continue;
+      SignalColour colour = world.lights[feature.index];
+      bool stop =
+          colour == SignalColour::red || (colour == SignalColour::yellow && gap >= v * v / (2 * b));
+      if (stop && gap >= v * v / (2 * body.max_deceleration)) follow(gap, 0, kStopLineGap);
+    }
+  return std::clamp(best, -body.max_deceleration, body.max_acceleration);
+}
+
+double dead_end_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,
+                        const ActorClass& body, double speed, double dt) {
+  const double stopping = speed * speed / (2 * body.comfortable_deceleration);
+  bool dead_end = false;
+  std::vector<LaneAhead> lanes =
+      lanes_ahead(map, at, next_lane, stopping + speed * dt + 1, dead_end);
+  if (!dead_end) return kInfinity;
+  const LaneAhead& last = lanes.back();
+  // Aiming short of the very end: the lane's end would stop the actor in one step.
+  double to_end = last.offset + map.lane(last.lane).length() - kDeadEndMargin;
+  if (to_end > stopping + speed * dt) return kInfinity;
+  return -std::min(speed * speed / (2 * std::max(to_end, 0.05)), body.max_deceleration);
+}
+
+}  // namespace scenfuzz

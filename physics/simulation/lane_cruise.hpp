@@ -1,0 +1,29 @@
+// How an actor that knows only its lane position (a WMG SDL actor between its manoeuvre phases)
+// drives on reactively: the Intelligent Driver Model towards its cruising speed, behind the
+// nearest actor ahead along the lanes it will take, stopping for red lights on them and before a
+// dead end. LaneFollower does the same for actors with a planned route and path.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "physics/actors/actor_class.hpp"
+#include "physics/map/lane_queries.hpp"
+#include "physics/simulation/world_snapshot.hpp"
+
+namespace scenfuzz {
+
+// The lane an actor takes after `lane` (itself at a dead end).
+using NextLane = std::function<LaneIndex(LaneIndex)>;
+
+// The acceleration along the heading (m/s^2, within the class's limits) for actor `self` of
+// `world`, at `at` moving forwards, aiming for `cruise_speed`.
+double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                           const NextLane& next_lane, const ActorClass& body, double cruise_speed);
+
+// The deceleration (negative, m/s^2) that stops an actor at `at` moving at `speed` before the
+// end of the lanes ahead, or +infinity when there is room for comfortable braking later.
+double dead_end_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,
+                        const ActorClass& body, double speed, double dt);
+
+}  // namespace scenfuzz
