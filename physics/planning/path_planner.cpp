@@ -368,7 +368,7 @@ std::vector<Curve> plan_around_obstacles(const CarSpace& car, const PathRequest&
   bounds.setHigh(0, box.max_x);
   bounds.setHigh(1, box.max_y);
   car.space->as<ob::SE2StateSpace>()->setBounds(bounds);
-  const std::uint_fast32_t seed = leg_seed(request.seed, leg);
+  const std::uint_fast32_t seed = leg_seed(request.seed, request.first_leg + leg);
   car.space->setStateSamplerAllocator([seed, box](const ob::StateSpace* space) {
     return std::make_shared<SeededPoseSampler>(space, seed, box);
   });
@@ -398,8 +398,8 @@ std::vector<Curve> plan_around_obstacles(const CarSpace& car, const PathRequest&
     const std::string limit = iterations > kMaxPlannerIterations
                                   ? std::to_string(kMaxPlannerIterations) + " planner iterations"
                                   : "the time limit of " + number(request.time_limit) + " s";
-    throw PlanningError(leg_name(leg) + ": no path around the static obstacles found within " +
-                        limit);
+    throw PlanningError(leg_name(request.first_leg + leg) +
+                        ": no path around the static obstacles found within " + limit);
   }
 
   std::vector<ob::ScopedState<>> states;
@@ -488,7 +488,7 @@ void check_request(const PathRequest& request) {
     const MapPose& waypoint = request.waypoints[i];
     if (!std::isfinite(waypoint.position.x) || !std::isfinite(waypoint.position.y) ||
         !std::isfinite(waypoint.heading)) {
-      throw PlanningError("waypoint " + std::to_string(i + 1) +
+      throw PlanningError("waypoint " + std::to_string(request.first_leg + i + 1) +
                           " has a non-finite position or heading");
     }
   }
@@ -507,7 +507,7 @@ void check_request(const PathRequest& request) {
   if (request.is_free) {
     for (std::size_t i = 0; i < request.waypoints.size(); ++i) {
       if (!request.is_free(request.waypoints[i])) {
-        throw PlanningError(waypoint_name(i, request.waypoints[i]) +
+        throw PlanningError(waypoint_name(request.first_leg + i, request.waypoints[i]) +
                             " lies inside a static obstacle");
       }
     }
@@ -558,8 +558,8 @@ PlannedPath plan_path(const PathRequest& request) {
     double length = 0;
     for (const Curve& curve : curves) length += curve.length();
     if (length / request.spacing > kMaxPosesPerLeg) {
-      throw PlanningError(leg_name(leg) + ": the path is " + number(length) + " m long, over " +
-                          number(kMaxPosesPerLeg) + " poses at a spacing of " +
+      throw PlanningError(leg_name(request.first_leg + leg) + ": the path is " + number(length) +
+                          " m long, over " + number(kMaxPosesPerLeg) + " poses at a spacing of " +
                           number(request.spacing) + " m");
     }
 

@@ -5,6 +5,7 @@
 // whatever thread runs them.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -23,6 +24,9 @@ struct PathRequest {
   std::uint64_t seed = 0;
   double time_limit = 0.5;  // s of planning per leg for the sampling planner
   double spacing = 0.5;     // m between the returned poses
+  // Index of waypoints.front() in a longer path of which this plans a part: errors name legs and
+  // waypoints, and legs draw their seeds, by their place in the whole path.
+  std::size_t first_leg = 0;
 };
 
 struct PlannedPath {

@@ -16,6 +16,7 @@
 #include "physics/simulation/relative_position.hpp"
 #include "physics/simulation/scenario_checks.hpp"
 #include "physics/simulation/simulation_limits.hpp"
+#include "physics/simulation/waypoint_path.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -239,8 +240,9 @@ std::optional<Trajectory> straight_walk(Context& context, const Actor& actor, co
                     actor_class(ActorCategory::pedestrian).max_deceleration);
 }
 
-// Through the waypoints in order (then the target): OMPL paths for vehicles, straight legs for
-// pedestrians; the speed given at each waypoint is reached there.
+// Through the waypoints in order (then the target): for vehicles along the lanes where the
+// waypoints lie on lanes, else OMPL paths (waypoint_path.hpp has the rules); straight legs for
+// pedestrians. The speed given at each waypoint is reached there.
 std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor,
                                             const MapPose& start, double speed,
                                             const ActorClass& body, std::size_t actor_index,
@@ -274,18 +276,20 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
       waypoint_s.push_back(s);
     }
   } else {
-    PathRequest request;
-    request.waypoints = poses;
-    request.turning_radius = body.min_turning_radius();
-    request.seed = actor_seed(context.seed, actor_index);
+    WaypointPathRequest request{poses,
+                                speeds,
+                                body.min_turning_radius(),
+                                body.comfortable_lateral_acceleration,
+                                {},
+                                actor_seed(context.seed, actor_index)};
     if (obstacles.body_count() > 0)
       request.is_free = [&](const MapPose& pose) {
         return !obstacles.touches_static(geometry, pose);
       };
     try {
-      PlannedPath planned = plan_path(request);
-      for (const MapPose& pose : planned.poses) points.push_back(pose.position);
-      for (std::size_t index : planned.waypoint_at) waypoint_s.push_back(planned.s[index]);
+      WaypointPath path = waypoint_path(context.map, request);
+      points = std::move(path.points);
+      waypoint_s = std::move(path.waypoint_s);
     } catch (const PlanningError& error) {
       context.diagnostics.error(
           actor.motion.location.line > 0 ? actor.motion.location : actor.location,

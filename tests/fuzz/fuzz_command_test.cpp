@@ -215,11 +215,12 @@ TEST_F(FuzzCommandTest, AnEgoFarFromEveryLaneIsWarnedOnceBeforeTheSearch) {
   EXPECT_EQ(run.err.find(warning, first + 1), std::string::npos) << "warned more than once";
 }
 
-// The roundabout's NPCs cut across its island today (issue 17): every simulation's audit says so,
-// and the search counts it where a user sees it.
+// An NPC sent through a waypoint off the road leaves the lanes in every simulation: every
+// simulation's audit says so, and the search counts it where a user sees it. (The roundabout seed
+// used to serve, while its waypoint NPCs cut across the island.)
 TEST_F(FuzzCommandTest, TheTraceAuditIsCountedPerSearch) {
   const Outcome run =
-      fuzz(source_file("corpora/avunit/roundabout_entry.avu"), {"--budget", "20", "--seed", "2"});
+      fuzz(source_file("tests/fuzz/data/off_road_waypoint.avu"), {"--budget", "20", "--seed", "2"});
   ASSERT_NE(run.exit_code, 2) << run.err;
   const nlohmann::json audit = summary()["audit"];
   EXPECT_EQ(audit["simulations_with_issues"], 20) << audit.dump();

@@ -3,6 +3,7 @@
 // close to avoid collides; the same seed gives the same trace bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <thread>
 
@@ -138,7 +139,12 @@ TEST(SimulationTest, ACutInWithAThreeMetreGapAt25MetresPerSecondCollides) {
   EXPECT_TRUE(hit.first_side == BodySide::front || hit.first_side == BodySide::left);
   EXPECT_TRUE(hit.second_side == BodySide::right || hit.second_side == BodySide::rear);
   EXPECT_EQ(trace.end, EndReason::collision);
-  EXPECT_LT(trace.actors[0].acceleration.back(), -5) << "the ego was braking hard";
+  // The cutter moves over along a smooth lane change; the ego brakes hard once it sees it come
+  // (the reference driver lets go in the step before contact, when the cutter already overlaps
+  // its front, so the last sample is not the one to check).
+  const std::vector<double>& acceleration = trace.actors[0].acceleration;
+  EXPECT_LT(*std::min_element(acceleration.begin(), acceleration.end()), -5)
+      << "the ego was braking hard";
 }
 
 TEST(SimulationTest, TheSameCutInByAFasterCarIsAvoided) {
