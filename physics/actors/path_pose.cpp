@@ -78,6 +78,30 @@ double vertex_curvature(const Polyline& path, std::span<const double> headings,
   return std::abs(turn) / (2 * blend_distance(path, vertex));
 }
 
+Polyline round_corners(const Polyline& path, double min_radius) {
+  constexpr int kPasses = 200;
+  constexpr double kMargin = 0.95;  // of the curvature allowed, for the blend's rounding
+  if (!(min_radius > 0) || path.points().size() < 3) return path;
+  const double allowed = kMargin / min_radius;
+  Polyline rounded = path;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const std::vector<double> headings = segment_headings(rounded);
+    std::vector<MapPoint> points = rounded.points();
+    bool moved = false;
+    for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+      if (vertex_curvature(rounded, headings, i) <= allowed) continue;
+      const MapPoint& before = rounded.points()[i - 1];
+      const MapPoint& after = rounded.points()[i + 1];
+      points[i] = {0.5 * points[i].x + 0.25 * (before.x + after.x),
+                   0.5 * points[i].y + 0.25 * (before.y + after.y)};
+      moved = true;
+    }
+    if (!moved) break;
+    rounded = Polyline(points);
+  }
+  return rounded;
+}
+
 KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
                              double speed, double acceleration) {
   s = std::clamp(s, 0.0, path.length());

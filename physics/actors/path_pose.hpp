@@ -29,6 +29,13 @@ PathDirection direction_at(const Polyline& path, std::span<const double> heading
 // The largest |curvature| the blended heading has around interior vertex `vertex` (0 at the ends).
 double vertex_curvature(const Polyline& path, std::span<const double> headings, std::size_t vertex);
 
+// The path with its sharp corners rounded so that the blended heading never turns tighter than
+// `min_radius` (a vehicle's full lock): lane polylines meet at kinks (Apollo's junction lanes
+// start at an angle to the lane before them) that no vehicle could follow. Each pass moves every
+// offending vertex towards its neighbours' midpoint, spreading the turn over more of the path;
+// straight stretches and gentle bends stay exactly where they were.
+Polyline round_corners(const Polyline& path, double min_radius);
+
 // The state at arc length s (clamped to the path), moving at `speed` with `acceleration`; its
 // yaw rate is speed x curvature.
 KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,

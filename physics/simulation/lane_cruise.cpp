@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "physics/map/lane_route.hpp"
@@ -119,6 +120,36 @@ double dead_end_braking(const RoadMap& map, LanePosition at, const NextLane& nex
   double to_end = last.offset + map.lane(last.lane).length() - kDeadEndMargin;
   if (to_end > stopping + speed * dt) return kInfinity;
   return -std::min(speed * speed / (2 * std::max(to_end, 0.05)), body.max_deceleration);
+}
+
+double bend_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,
+                    const ActorClass& body, double speed, double lateral_acceleration) {
+  constexpr double kStep = 1;  // m between the headings compared
+  const double b = body.comfortable_deceleration;
+  const double reach = speed * speed / (2 * b) + 2 * kStep;
+  bool dead_end = false;
+  const std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, reach, dead_end);
+  auto heading_at = [&](double d) -> std::optional<double> {
+    for (const LaneAhead& lane : lanes) {
+      double s = d - lane.offset;
+      if (s >= 0 && s <= map.lane(lane.lane).length()) return lane_heading_at(map, lane.lane, s);
+    }
+    return std::nullopt;
+  };
+  double needed = kInfinity;
+  std::optional<double> before = heading_at(0);
+  for (double d = kStep; d <= reach && before; d += kStep) {
+    std::optional<double> after = heading_at(d);
+    if (!after) break;
+    const double curvature = std::abs(angle_difference(*after, *before)) / kStep;
+    before = after;
+    if (curvature < 1e-6) continue;
+    const double bend_speed2 = lateral_acceleration / curvature;
+    const double distance = std::max(d - kStep, 0.5);
+    if (speed * speed <= bend_speed2 + 2 * b * distance) continue;
+    needed = std::min(needed, (bend_speed2 - speed * speed) / (2 * distance));
+  }
+  return std::isfinite(needed) ? std::max(needed, -body.max_deceleration) : kInfinity;
 }
 
 }  // namespace scenfuzz

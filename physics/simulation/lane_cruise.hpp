@@ -26,4 +26,10 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
 double dead_end_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,
                         const ActorClass& body, double speed, double dt);
 
+// The deceleration (negative, m/s^2) an actor at `at` moving at `speed` needs so as to take the
+// bends of the lanes ahead within `lateral_acceleration` (speed^2 x curvature), braking at its
+// comfortable deceleration; +infinity when it needs none yet.
+double bend_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,
+                    const ActorClass& body, double speed, double lateral_acceleration);
+
 }  // namespace scenfuzz

@@ -16,7 +16,7 @@ namespace scenfuzz {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kStandingSpeed = 0.2;        // m/s: standing, for a stop sign
+constexpr double kStandingSpeed = 0.2;       // m/s: standing, for a stop sign
 constexpr double kStandingDesire = 0.05;     // m/s: a desired speed below this parks the actor
 constexpr double kStopSignReach = 3;         // m before the line that count as at it
 constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower than this waits too
@@ -95,7 +95,8 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
     features_.push_back({*next, from + next->distance, false});
     from += next->distance + 0.01;
   }
-  double speed = std::min(initial_speed, body_.max_speed);
+  // A start faster than the bends ahead allow is the nearest feasible one: as fast as they do.
+  double speed = std::min({initial_speed, body_.max_speed, envelope_.front()});
   state_ = state_on_path(path_, headings_, 0, speed, 0);
   state_.yaw_rate = 0;
 }

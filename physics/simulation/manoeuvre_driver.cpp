@@ -18,6 +18,10 @@ constexpr double kDefaultWalkingSpeed = 1.4;  // m/s
 constexpr double kDefaultReversingSpeed = 2;  // m/s
 // How far ahead a turn looks for a junction connector of its kind.
 constexpr double kTurnSearchDistance = 1000;  // m
+// The peak lateral acceleration of a minimum-jerk sideways move of 1 m over 1 s (10 / sqrt(3)).
+constexpr double kMinimumJerkPeak = 5.7735;
+// A lane change, or a bend in a phase, uses at most this share of the grip full braking uses.
+constexpr double kLaneChangeGripShare = 0.8;
 // A speed within this of its target counts as reached.
 constexpr double kSpeedTolerance = 0.1;  // m/s
 
@@ -59,8 +63,12 @@ void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, doubl
   double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self);
   if (on_lane_ && !state_.reversing && state_.speed > 0) {
     NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
+    // In a phase the script may corner up to most of the grip; cruising, as a calm driver.
+    double lateral = running_ ? kLaneChangeGripShare * body_.max_deceleration
+                              : body_.comfortable_lateral_acceleration;
     acceleration =
-        std::min(acceleration, dead_end_braking(*map_, *on_lane_, next, body_, state_.speed, dt));
+        std::min({acceleration, dead_end_braking(*map_, *on_lane_, next, body_, state_.speed, dt),
+                  bend_braking(*map_, *on_lane_, next, body_, state_.speed, lateral)});
   }
   if (on_lane_)
     move_on_lane(acceleration, dt);
@@ -91,7 +99,6 @@ void ManoeuvreDriver::update_phases(const WorldSnapshot& world, std::uint32_t se
       cruise_speed_ = state_.reversing ? 0 : state_.speed;
       running_ = false;
       ++next_;
-      lateral_duration_ = 0;
       turn_wanted_ = LaneTurn::none;
     }
     if (next_ >= phases.size()) return;
@@ -112,8 +119,6 @@ void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self
   turn_entered_ = turn_done_ = turn_available_ = false;
   crossed_onto_lane_ = false;
   while_held_ = false;
-  lateral_duration_ = 0;
-  if (on_lane_) lateral_from_ = on_lane_->lateral;
 
   // Without a duration, a speed change takes what a calm driver needs for it.
   primitive_duration_ = 0;
@@ -235,9 +240,13 @@ void ManoeuvreDriver::change_lane(const WorldSnapshot& world, std::uint32_t self
     PolylineProjection there = map_->lane(*target).centre_line.project({state_.x, state_.y});
     on_lane_ = LanePosition{*target, there.s, there.lateral};
   }
-  // Also without a target lane: settle onto the centre line of the lane it is in.
+  // Also without a target lane: settle onto the centre line of the lane it is in, no faster than
+  // its tyres allow (a minimum-jerk move of w metres over T seconds peaks at 5.77 w / T^2).
   lateral_from_ = on_lane_->lateral;
-  lateral_duration_ = std::max(duration, 1e-3);
+  const double grip = kLaneChangeGripShare * body_.max_deceleration;
+  lateral_duration_ =
+      std::max({duration, std::sqrt(kMinimumJerkPeak * std::abs(lateral_from_) / grip), 1e-3});
+  lateral_elapsed_ = 0;
 }
 
 void ManoeuvreDriver::plan_cut_in(const WorldSnapshot& world, const PhaseMotion& phase) {
@@ -390,7 +399,8 @@ void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
   lateral_rate_ = 0;
   if (lateral_duration_ > 0) {
     // The lateral curve's state at the end of this step.
-    double x = std::clamp((phase_time_ + dt) / lateral_duration_, 0.0, 1.0);
+    lateral_elapsed_ += dt;
+    double x = std::clamp(lateral_elapsed_ / lateral_duration_, 0.0, 1.0);
     at.lateral = lateral_from_ * (1 - smooth_progress(x));
     lateral_rate_ = -lateral_from_ * smooth_progress_rate(x) / lateral_duration_;
   }

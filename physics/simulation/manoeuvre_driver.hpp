@@ -79,10 +79,12 @@ class ManoeuvreDriver {
   // On a lane: where along it and how far to its left.
   std::optional<LanePosition> on_lane_;
   double lateral_rate_ = 0;  // m/s, for the heading
-  // A lateral move towards the lane's centre line: from `lateral_from_` at phase time 0 to 0 at
-  // `lateral_duration_`; none when lateral_duration_ is 0.
+  // A lateral move towards the lane's centre line: from `lateral_from_` when it starts to 0
+  // `lateral_duration_` seconds later; none when lateral_duration_ is 0. It runs to its end even
+  // when the phase that started it ends first: a car does not stop half-way across a lane line.
   double lateral_from_ = 0;
   double lateral_duration_ = 0;
+  double lateral_elapsed_ = 0;  // s since it started
 
   // A cut-in's accelerations over the first and second half of its duration.
   std::array<double, 2> cut_in_acceleration_{};

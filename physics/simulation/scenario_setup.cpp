@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "lang/number_format.hpp"
+#include "physics/actors/path_pose.hpp"
 #include "physics/actors/random_walk.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/lane_route.hpp"
@@ -216,7 +217,8 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
   }
   if (route->segments.empty() || route->length < 0.5) return Trajectory::standing(start);
   double lateral = start_lane->lateral;
-  Polyline path = route_path(context.map, *route, lateral);
+  Polyline path =
+      round_corners(route_path(context.map, *route, lateral), body.min_turning_radius());
   drive = LaneDrive{*route, path, speed, initial_speed};
   return Trajectory(std::move(path), {{0, speed}}, body.comfortable_deceleration);
 }

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "lang/demand.hpp"
+#include "physics/actors/path_pose.hpp"
 #include "physics/actors/trajectory.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/lane_route.hpp"
@@ -126,6 +127,7 @@ std::optional<std::vector<MapPoint>> lane_leg(const RoadMap& map,
   try {
     points = route_path(map, late, 0, change_length, kPointSpacing).points();
     points = offset_sideways(points, from->lateral, to->lateral);
+    points = round_corners(Polyline(points), request.turning_radius).points();
   } catch (const std::invalid_argument&) {
     return std::nullopt;  // a route too short to draw: the planner joins the two poses
   }
