@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "lang/number_format.hpp"
+#include "physics/actors/friction_circle.hpp"
 #include "physics/actors/random_walk.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/lane_route.hpp"
@@ -15,6 +16,7 @@
 #include "physics/planning/path_planner.hpp"
 #include "physics/simulation/relative_position.hpp"
 #include "physics/simulation/scenario_checks.hpp"
+#include "physics/simulation/shortfall_warnings.hpp"
 #include "physics/simulation/simulation_limits.hpp"
 
 namespace scenfuzz {
@@ -214,7 +216,11 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
   if (route->segments.empty() || route->length < 0.5) return Trajectory::standing(start);
   double lateral = start_lane->lateral;
   Polyline path = route_path(context.map, *route, lateral);
-  return Trajectory(std::move(path), {{0, speed}}, body.comfortable_deceleration);
+  // A calm driver's bends: at the class's comfortable lateral acceleration.
+  Trajectory trajectory(std::move(path), {{0, speed}},
+                        class_motion_limits(body, body.comfortable_lateral_acceleration));
+  warn_shortfalls(trajectory, actor.name, std::vector{start_point(actor)}, context.diagnostics);
+  return trajectory;
 }
 
 // A pedestrian walks in straight lines: along its heading, or to its target.
@@ -233,7 +239,7 @@ std::optional<Trajectory> straight_walk(Context& context, const Actor& actor, co
   if (speed <= 0 || distance(start.position, end) < 0.01) return Trajectory::standing(start);
   std::vector<MapPoint> points{start.position, end};
   return Trajectory(Polyline(points), {{0, speed}},
-                    actor_class(ActorCategory::pedestrian).max_deceleration);
+                    class_motion_limits(actor_class(ActorCategory::pedestrian), 0));
 }
 
 // Through the waypoints in order (then the target): OMPL paths for vehicles, straight legs for
@@ -291,13 +297,20 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
     }
   }
   std::vector<SpeedPoint> profile;
+  std::vector<std::size_t> profile_poses;  // the pose each speed point is at, for warnings
   for (std::size_t i = 0; i < waypoint_s.size(); ++i) {
     if (!profile.empty() && waypoint_s[i] <= profile.back().s) continue;
     profile.push_back({waypoint_s[i], speeds[i]});
+    profile_poses.push_back(i);
   }
-  // The last waypoint's speed is reached there; the actor then stops at the path's end, which is
-  // that waypoint, so it keeps no speed beyond it.
-  return Trajectory(Polyline(points), std::move(profile), body.comfortable_deceleration);
+  // The actor stops at the path's end, which is the last waypoint. It keeps its script where its
+  // class can: cornering up to nearly its grip (the audit's limit), not at a calm driver's.
+  Trajectory trajectory(
+      Polyline(points), std::move(profile),
+      class_motion_limits(body, kScriptedGripShare * grip_lateral_acceleration(body)));
+  warn_shortfalls(trajectory, actor.name,
+                  waypoint_points(actor, states, poses.size(), profile_poses), context.diagnostics);
+  return trajectory;
 }
 
 const SourceLocation& where(const SourceLocation& preferred, const SourceLocation& fallback) {
@@ -471,7 +484,7 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
       if (speed <= 0) speed = kDefaultPedestrianSpeed;
       Polyline walk = random_walk_path(*start, speed, context.duration, kRandomWalkRadius,
                                        actor_seed(context.seed, actor_index));
-      trajectory = Trajectory(std::move(walk), {{0, speed}}, scripted.body.max_deceleration);
+      trajectory = Trajectory(std::move(walk), {{0, speed}}, class_motion_limits(scripted.body, 0));
       break;
     }
     case MotionKind::manoeuvres: {
