@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "lang/demand.hpp"
+#include "physics/actors/friction_circle.hpp"
 #include "physics/map/lane_queries.hpp"
 
 namespace scenfuzz {
@@ -219,10 +220,10 @@ AuditClassLimits audit_class_limits(const ActorClass& actor_class) {
   limits.max_speed = actor_class.max_speed;
   limits.max_acceleration = actor_class.max_acceleration;
   limits.max_deceleration = actor_class.max_deceleration;
-  // Tyres grip about as well sideways as when braking (the friction circle), so full braking is
-  // also the most a class can corner with. Pedestrians have no steering: neither is checked.
+  // The friction circle (physics/actors/friction_circle.hpp). Pedestrians have no steering:
+  // neither is checked.
   if (actor_class.category != ActorCategory::pedestrian) {
-    limits.max_lateral_acceleration = actor_class.max_deceleration;
+    limits.max_lateral_acceleration = grip_lateral_acceleration(actor_class);
     limits.min_turning_radius = actor_class.min_turning_radius();
   }
   return limits;

@@ -23,12 +23,6 @@ double segment_heading(const Polyline& path, std::size_t segment) {
   return std::atan2(b.y - a.y, b.x - a.x);
 }
 
-// Half-width of the heading blend around interior vertex `vertex`.
-double blend_distance(const Polyline& path, std::size_t vertex) {
-  return std::min({kHeadingBlendDistance, 0.5 * segment_length(path, vertex - 1),
-                   0.5 * segment_length(path, vertex)});
-}
-
 // The heading at s on `segment`, continuous along the path, and its derivative.
 PathDirection direction_on(const Polyline& path, std::span<const double> headings,
                            std::size_t segment, double s) {
@@ -36,14 +30,14 @@ PathDirection direction_on(const Polyline& path, std::span<const double> heading
   double from_start = s - path.arc_lengths()[segment];
   double to_end = path.arc_lengths()[segment + 1] - s;
   if (segment > 0) {
-    double blend = blend_distance(path, segment);
+    double blend = blend_half_width(path, segment);
     if (from_start < blend) {
       double turn = angle_difference(heading, headings[segment - 1]);
       return {wrap_angle(heading - 0.5 * turn * (1 - from_start / blend)), turn / (2 * blend)};
     }
   }
   if (segment + 1 < path.segment_count()) {
-    double blend = blend_distance(path, segment + 1);
+    double blend = blend_half_width(path, segment + 1);
     if (to_end < blend) {
       double turn = angle_difference(headings[segment + 1], heading);
       return {wrap_angle(heading + 0.5 * turn * (1 - to_end / blend)), turn / (2 * blend)};
@@ -53,6 +47,11 @@ PathDirection direction_on(const Polyline& path, std::span<const double> heading
 }
 
 }  // namespace
+
+double blend_half_width(const Polyline& path, std::size_t vertex) {
+  return std::min({kHeadingBlendDistance, 0.5 * segment_length(path, vertex - 1),
+                   0.5 * segment_length(path, vertex)});
+}
 
 std::vector<double> segment_headings(const Polyline& path) {
   std::vector<double> headings;
@@ -75,7 +74,7 @@ double vertex_curvature(const Polyline& path, std::span<const double> headings,
                         std::size_t vertex) {
   if (vertex == 0 || vertex + 1 >= path.points().size()) return 0;
   double turn = angle_difference(headings[vertex], headings[vertex - 1]);
-  return std::abs(turn) / (2 * blend_distance(path, vertex));
+  return std::abs(turn) / (2 * blend_half_width(path, vertex));
 }
 
 Polyline round_corners(const Polyline& path, double min_radius) {

@@ -26,6 +26,10 @@ PathDirection direction_at(const Polyline& path, double s);
 // As direction_at, with the segment headings computed beforehand.
 PathDirection direction_at(const Polyline& path, std::span<const double> headings, double s);
 
+// Half the length of the stretch around interior vertex `vertex` over which the heading turns
+// from one segment's direction to the next.
+double blend_half_width(const Polyline& path, std::size_t vertex);
+
 // The largest |curvature| the blended heading has around interior vertex `vertex` (0 at the ends).
 double vertex_curvature(const Polyline& path, std::span<const double> headings, std::size_t vertex);
 

@@ -29,64 +29,65 @@ constexpr double kTurnLookahead = 5;
 // route_ahead stops after this many segments: a ring of tiny lanes must not loop for ever.
 constexpr std::size_t kMaximumRouteSegments = 100000;
 
-// Speed points checked, sorted, clamped to the path and with repeated arc lengths merged (the
-// later speed wins), so that every interval between knots has a positive length.
-std::vector<SpeedPoint> checked_speed_points(std::vector<SpeedPoint> speeds, double length) {
-  if (speeds.empty()) throw std::invalid_argument("trajectory needs at least one speed point");
-  std::vector<SpeedPoint> checked;
-  double previous_s = 0;
-  for (const SpeedPoint& point : speeds) {
-    if (!std::isfinite(point.s) || !std::isfinite(point.speed) || point.speed < 0)
-      throw std::invalid_argument("trajectory speed points need finite s and speed >= 0");
-    if (point.s < previous_s)
-      throw std::invalid_argument("trajectory speed points must be sorted by s from s = 0");
-    previous_s = point.s;
-    double s = std::min(point.s, length);
-    if (!checked.empty() && s - checked.back().s <= 1e-9)
-      checked.back().speed = point.speed;
-    else
-      checked.push_back({s, point.speed});
+// The path without points closer than kMinimumPointGap to the one before (the last point kept):
+// a planner's path can join two legs with a near-duplicate point, whose tiny segment has an
+// arbitrary heading that no vehicle could follow and a bend cap would crawl through.
+Polyline without_near_duplicates(Polyline path) {
+  const std::vector<MapPoint>& points = path.points();
+  std::vector<MapPoint> kept;
+  for (const MapPoint& point : points) {
+    if (!kept.empty() && distance(kept.back(), point) < kMinimumPointGap) continue;
+    kept.push_back(point);
   }
-  if (checked.front().s > 1e-9)
-    throw std::invalid_argument("trajectory speed points must start at s = 0");
-  checked.front().s = 0;
-  return checked;
+  if (kept.size() == points.size()) return path;
+  if (distance(kept.back(), points.back()) > 0) {
+    if (kept.size() > 1)
+      kept.back() = points.back();
+    else
+      kept.push_back(points.back());
+  }
+  if (kept.size() < 2) return path;
+  return Polyline(kept);
 }
 
 }  // namespace
+
+std::vector<PathBend> path_bends(const Polyline& path) {
+  const std::vector<double> headings = segment_headings(path);
+  std::vector<PathBend> bends;
+  for (std::size_t vertex = 1; vertex < path.segment_count(); ++vertex) {
+    double blend = blend_half_width(path, vertex);
+    double curvature = vertex_curvature(path, headings, vertex);
+    if (blend <= 0 || curvature == 0) continue;
+    double at = path.arc_lengths()[vertex];
+    bends.push_back({at - blend, at + blend, curvature});
+  }
+  return bends;
+}
 
 Trajectory::Trajectory(Polyline path, std::vector<SpeedPoint> speeds, double stop_deceleration)
     : path_(std::move(path)) {
   if (path_.points().empty())
     throw std::invalid_argument("trajectory needs a path; use Trajectory::standing for none");
-  if (!(stop_deceleration > 0) || !std::isfinite(stop_deceleration))
-    throw std::invalid_argument("trajectory stop deceleration must be positive");
-  const double length = path_.length();
-  std::vector<SpeedPoint> points = checked_speed_points(std::move(speeds), length);
+  profile_ = constant_acceleration_profile(std::move(speeds), path_.length(), stop_deceleration);
+  prepare_path();
+}
 
-  // The last given speed holds to where braking at stop_deceleration stops the actor at the end;
-  // if the last point is too close to the end for that, braking starts at the last point.
-  const SpeedPoint last = points.back();
-  if (last.s < length) {
-    double braking_distance = last.speed * last.speed / (2 * stop_deceleration);
-    double braking_start = length - braking_distance;
-    if (last.speed > 0 && braking_start > last.s) points.push_back({braking_start, last.speed});
-    points.push_back({length, 0});
-  }
+Trajectory::Trajectory(Polyline path, std::vector<SpeedPoint> speeds, const MotionLimits& limits)
+    : path_(without_near_duplicates(std::move(path))) {
+  if (path_.points().empty())
+    throw std::invalid_argument("trajectory needs a path; use Trajectory::standing for none");
+  std::vector<PathBend> bends;
+  if (limits.max_lateral_acceleration > 0) bends = path_bends(path_);
+  FeasibleProfile feasible = feasible_profile(std::move(speeds), path_.length(), bends, limits);
+  profile_ = std::move(feasible.profile);
+  shortfalls_ = std::move(feasible.shortfalls);
+  prepare_path();
+}
 
+void Trajectory::prepare_path() {
   standing_pose_ = {path_.points().front(), direction_at(path_, 0).heading};
   segment_headings_ = segment_headings(path_);
-  double time = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i > 0) {
-      double speed_sum = points[i - 1].speed + points[i].speed;
-      // Standing still between two points: the actor never gets past the first.
-      time = speed_sum > 0 ? time + 2 * (points[i].s - points[i - 1].s) / speed_sum : kInfinity;
-    }
-    knot_s_.push_back(points[i].s);
-    knot_speed_.push_back(points[i].speed);
-    knot_time_.push_back(time);
-  }
 }
 
 Trajectory Trajectory::standing(MapPose pose) {
@@ -95,31 +96,18 @@ Trajectory Trajectory::standing(MapPose pose) {
   return trajectory;
 }
 
-double Trajectory::duration() const { return knot_time_.empty() ? 0 : knot_time_.back(); }
+double Trajectory::duration() const { return profile_.duration(); }
 
 KinematicState Trajectory::state_at(double t) const {
-  if (knot_time_.empty()) {
+  if (profile_.empty()) {
     KinematicState state;
     state.x = standing_pose_.position.x;
     state.y = standing_pose_.position.y;
     state.heading = standing_pose_.heading;
     return state;
   }
-  t = std::max(t, 0.0);
-  if (t >= knot_time_.back()) return state_on_path(path_, segment_headings_, path_.length(), 0, 0);
-  // The interval [knot i, knot i + 1) containing t; a knot at infinite time is never reached.
-  auto after = std::upper_bound(knot_time_.begin(), knot_time_.end(), t);
-  std::size_t i = static_cast<std::size_t>(after - knot_time_.begin()) - 1;
-  double v0 = knot_speed_[i];
-  double v1 = knot_speed_[i + 1];
-  double ds = knot_s_[i + 1] - knot_s_[i];
-  double acceleration = (v1 * v1 - v0 * v0) / (2 * ds);
-  if (std::isinf(knot_time_[i + 1])) acceleration = 0;
-  double elapsed = t - knot_time_[i];
-  double speed = std::max(0.0, v0 + acceleration * elapsed);
-  double s =
-      std::min(knot_s_[i] + v0 * elapsed + 0.5 * acceleration * elapsed * elapsed, knot_s_[i + 1]);
-  return state_on_path(path_, segment_headings_, s, speed, acceleration);
+  ProfileState along = profile_.at(t);
+  return state_on_path(path_, segment_headings_, along.s, along.speed, along.acceleration);
 }
 
 namespace {

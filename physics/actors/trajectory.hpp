@@ -1,22 +1,18 @@
 // Scripted motion: a path with a speed profile along it, for NPC vehicles and pedestrians that
-// follow what the scenario says rather than react. The speed changes with constant acceleration
-// between consecutive speed points (the speeds the scenario gives at its waypoints), so the
-// profile is continuous and every time is finite; past the end the actor stands still.
+// follow what the scenario says rather than react. The profile (physics/actors/speed_profile.hpp)
+// is continuous and every time is finite; past the end the actor stands still. Built with an
+// actor's motion limits, it is one its class can drive: slower in bends, acceleration and jerk
+// bounded.
 #pragma once
 
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
+#include "physics/actors/speed_profile.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
 
 namespace scenfuzz {
-
-// The actor's speed when its path reaches arc length s.
-struct SpeedPoint {
-  double s = 0;
-  double speed = 0;
-};
 
 class Trajectory {
  public:
@@ -26,6 +22,10 @@ class Trajectory {
   // Throws std::invalid_argument for an empty path or speed list, speeds out of order or
   // negative, or a deceleration that is not positive.
   Trajectory(Polyline path, std::vector<SpeedPoint> speeds, double stop_deceleration);
+  // The feasible profile of `speeds` (feasible_profile) for `limits`, the path's curvature
+  // bounding the speed in bends; shortfalls() says which given speeds it cannot keep to. Throws
+  // std::invalid_argument as above and for limits that are not positive.
+  Trajectory(Polyline path, std::vector<SpeedPoint> speeds, const MotionLimits& limits);
   // An actor that stays at `pose` (a Polyline needs two distinct points, so a standing actor has
   // no path: path() is empty and duration() is 0).
   static Trajectory standing(MapPose pose);
@@ -36,14 +36,22 @@ class Trajectory {
   KinematicState state_at(double t) const;
   const Polyline& path() const { return path_; }
   double duration() const;  // time to reach the end of the path (infinite if it never does)
+  // The given speed points the actor cannot keep to (only with motion limits), by point.
+  const std::vector<SpeedShortfall>& shortfalls() const { return shortfalls_; }
 
  private:
+  void prepare_path();  // the standing pose and the segment headings, for state_at
+
   Polyline path_;
   std::vector<double> segment_headings_;  // of each path segment, for state_at
   MapPose standing_pose_;                 // where an actor without a path stays
-  // Knots of the piecewise constant-acceleration profile: arc length, speed and time at each.
-  std::vector<double> knot_s_, knot_speed_, knot_time_;
+  SpeedProfile profile_;
+  std::vector<SpeedShortfall> shortfalls_;
 };
+
+// The curving stretches of a path as the trajectory's heading turns along it (near each vertex),
+// with their |curvature|: what bounds the speed in bends.
+std::vector<PathBend> path_bends(const Polyline& path);
 
 // A drivable path along a lane route, `lateral` metres left of the centre lines, sampled every
 // `spacing` metres. A lane change in the route becomes a smooth sideways move over

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "lang/number_format.hpp"
+#include "physics/actors/friction_circle.hpp"
 #include "physics/actors/path_pose.hpp"
 #include "physics/actors/random_walk.hpp"
 #include "physics/map/lane_queries.hpp"
@@ -16,6 +17,7 @@
 #include "physics/planning/path_planner.hpp"
 #include "physics/simulation/relative_position.hpp"
 #include "physics/simulation/scenario_checks.hpp"
+#include "physics/simulation/shortfall_warnings.hpp"
 #include "physics/simulation/simulation_limits.hpp"
 #include "physics/simulation/waypoint_path.hpp"
 
@@ -183,6 +185,13 @@ ActorClass body_of(Context& context, const Actor& actor, ActorCategory fallback)
   return body;
 }
 
+// The tightest turn planned paths take: a little wider than full lock, which no driver holds and
+// which a trace sampled while braking would read as tighter than it is.
+double planning_radius(const ActorClass& body) {
+  constexpr double kLockMargin = 1.05;
+  return kLockMargin * body.min_turning_radius();
+}
+
 std::uint64_t actor_seed(std::uint64_t seed, std::size_t actor) {
   // SplitMix64 of (seed, actor): neighbouring actors get unrelated streams.
   std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (actor + 1);
@@ -218,9 +227,12 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
   if (route->segments.empty() || route->length < 0.5) return Trajectory::standing(start);
   double lateral = start_lane->lateral;
   Polyline path =
-      round_corners(route_path(context.map, *route, lateral), body.min_turning_radius());
+      round_corners(route_path(context.map, *route, lateral), planning_radius(body));
   drive = LaneDrive{*route, path, speed, initial_speed};
-  return Trajectory(std::move(path), {{0, speed}}, body.comfortable_deceleration);
+  // A calm driver's bends, at the class's comfortable lateral acceleration: slowing for them is
+  // what the scenario's speed means on a road that bends, so it is no shortfall to warn about.
+  return Trajectory(std::move(path), {{0, speed}},
+                    class_motion_limits(body, body.comfortable_lateral_acceleration));
 }
 
 // A pedestrian walks in straight lines: along its heading, or to its target.
@@ -239,7 +251,7 @@ std::optional<Trajectory> straight_walk(Context& context, const Actor& actor, co
   if (speed <= 0 || distance(start.position, end) < 0.01) return Trajectory::standing(start);
   std::vector<MapPoint> points{start.position, end};
   return Trajectory(Polyline(points), {{0, speed}},
-                    actor_class(ActorCategory::pedestrian).max_deceleration);
+                    class_motion_limits(actor_class(ActorCategory::pedestrian), 0));
 }
 
 // Through the waypoints in order (then the target): for vehicles along the lanes where the
@@ -280,7 +292,7 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
   } else {
     WaypointPathRequest request{poses,
                                 speeds,
-                                body.min_turning_radius(),
+                                planning_radius(body),
                                 body.comfortable_lateral_acceleration,
                                 {},
                                 actor_seed(context.seed, actor_index)};
@@ -300,13 +312,20 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
     }
   }
   std::vector<SpeedPoint> profile;
+  std::vector<std::size_t> profile_poses;  // the pose each speed point is at, for warnings
   for (std::size_t i = 0; i < waypoint_s.size(); ++i) {
     if (!profile.empty() && waypoint_s[i] <= profile.back().s) continue;
     profile.push_back({waypoint_s[i], speeds[i]});
+    profile_poses.push_back(i);
   }
-  // The last waypoint's speed is reached there; the actor then stops at the path's end, which is
-  // that waypoint, so it keeps no speed beyond it.
-  return Trajectory(Polyline(points), std::move(profile), body.comfortable_deceleration);
+  // The actor stops at the path's end, which is the last waypoint. It keeps its script where its
+  // class can: cornering up to nearly its grip (the audit's limit), not at a calm driver's.
+  Trajectory trajectory(
+      Polyline(points), std::move(profile),
+      class_motion_limits(body, kScriptedGripShare * grip_lateral_acceleration(body)));
+  warn_shortfalls(trajectory, actor.name,
+                  waypoint_points(actor, states, poses.size(), profile_poses), context.diagnostics);
+  return trajectory;
 }
 
 const SourceLocation& where(const SourceLocation& preferred, const SourceLocation& fallback) {
@@ -482,7 +501,7 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
       if (speed <= 0) speed = kDefaultPedestrianSpeed;
       Polyline walk = random_walk_path(*start, speed, context.duration, kRandomWalkRadius,
                                        actor_seed(context.seed, actor_index));
-      trajectory = Trajectory(std::move(walk), {{0, speed}}, scripted.body.max_deceleration);
+      trajectory = Trajectory(std::move(walk), {{0, speed}}, class_motion_limits(scripted.body, 0));
       break;
     }
     case MotionKind::manoeuvres: {

@@ -85,7 +85,8 @@ TEST(JudgeTest, EverySpecOfEveryCorpusSeedIsJudgedOnItsTrace) {
     for (const std::vector<double>& point : {std::vector<double>{}, random_point}) {
       const JudgedRun run = judge_file(*file, point, search_path);
       ASSERT_TRUE(run.trace) << run.errors;
-      ASSERT_EQ(run.errors, "");
+      // Warnings are allowed: a point of the space may script speeds an NPC cannot drive.
+      ASSERT_EQ(run.errors.find(": error:"), std::string::npos) << run.errors;
       ASSERT_EQ(run.verdicts.size(), parsed.scenario.specs.size());
       for (std::size_t i = 0; i < run.verdicts.size(); ++i) {
         const SpecVerdict& verdict = run.verdicts[i];

@@ -73,12 +73,15 @@ TEST(SimulationTest, YieldsToACrossingPedestrian) {
 }
 
 // npc starts in the left lane with its rear 3 m ahead of the ego's front and moves over.
-std::string cut_in(const std::string& cutter_speed) {
+// The ego at 25 m/s in east_0; a car in east_1 starting `start` m along it at `cutter_speed`
+// moves over into east_0, arriving at `arrival` m along it.
+std::string cut_in(const std::string& cutter_speed, const std::string& start = "57.7",
+                   const std::string& arrival = "85") {
   return scenario_text("straight", "ego", "cutter", "",
                        "ego = AV((\"east_0\"->50, , 25), (\"east_0\"->480));\n"
-                       "cutter = Vehicle((\"east_1\"->57.7, , " +
-                           cutter_speed + "), Waypoint((\"east_0\"->85, , " + cutter_speed +
-                           ")), (\"east_0\"->400));\n");
+                       "cutter = Vehicle((\"east_1\"->" +
+                           start + ", , " + cutter_speed + "), Waypoint((\"east_0\"->" + arrival +
+                           ", , " + cutter_speed + ")), (\"east_0\"->400));\n");
 }
 
 TEST(SimulationTest, StopsAtAStopSignThenGoesOn) {
@@ -148,8 +151,9 @@ TEST(SimulationTest, ACutInWithAThreeMetreGapAt25MetresPerSecondCollides) {
 }
 
 TEST(SimulationTest, TheSameCutInByAFasterCarIsAvoided) {
-  // Closing at 3 m/s from 3 m: braking in time is possible, and the driver does it.
-  auto run = simulate_text(cut_in("22"));
+  // Closing at 3 m/s: braking in time is possible, and the driver does it. The cutter moves over
+  // in 2 s (45 m at 22 m/s, 5 m/s^2 sideways): faster than its tyres allow, it would slow for it.
+  auto run = simulate_text(cut_in("22", "62", "107"));
   ASSERT_TRUE(run.trace) << run.errors;
   EXPECT_TRUE(run.trace->collisions.empty());
   EXPECT_GT(closest_approach(*run.trace, 0, 1), 0.0);
