@@ -16,7 +16,7 @@ namespace scenfuzz {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kStandingSpeed = 0.2;        // m/s: standing, for a stop sign
+constexpr double kStandingSpeed = 0.2;       // m/s: standing, for a stop sign
 constexpr double kStandingDesire = 0.05;     // m/s: a desired speed below this parks the actor
 constexpr double kStopSignReach = 3;         // m before the line that count as at it
 constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower than this waits too
@@ -100,6 +100,13 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   state_.yaw_rate = 0;
 }
 
+void LaneFollower::start_at(double progress) {
+  SCENFUZZ_DEMAND(std::isfinite(progress) && progress >= 0 && progress <= path_.length());
+  s_ = progress;
+  state_ = state_on_path(path_, headings_, s_, state_.speed, 0);
+  state_.yaw_rate = 0;
+}
+
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   if (finished_) return;
   advance(choose_acceleration(world, self, dt), dt);
@@ -166,7 +173,7 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
   double best_gap = kInfinity;
   Stop best;
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (k == self) continue;
+    if (k == self || !present_in(world, k)) continue;
     const KinematicState& other = world.states[k];
     const MapPoint now{other.x, other.y};
     if (distance(now, {state_.x, state_.y}) > lookahead + world.lengths[k]) continue;
@@ -289,7 +296,7 @@ bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t se
   if (!junction_lane) return false;
   const std::vector<LaneIndex>& conflicts = conflicts_of(*junction_lane);
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (k == self || world.lanes[k].lane < 0) continue;
+    if (k == self || world.lanes[k].lane < 0 || !present_in(world, k)) continue;
     if (world.kinds[k] == TraceActorKind::pedestrian || world.kinds[k] == TraceActorKind::obstacle)
       continue;
     const auto lane = static_cast<LaneIndex>(world.lanes[k].lane);
@@ -306,7 +313,7 @@ bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t se
 
 bool LaneFollower::pedestrians_at(const WorldSnapshot& world, const Crosswalk& crosswalk) const {
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (world.kinds[k] != TraceActorKind::pedestrian) continue;
+    if (world.kinds[k] != TraceActorKind::pedestrian || !present_in(world, k)) continue;
     const KinematicState& walker = world.states[k];
     if (walker.speed >= settings_.walking_speed &&
         near_polygon({walker.x, walker.y}, crosswalk.outline, settings_.crosswalk_clearance))

@@ -16,6 +16,7 @@
 #include "physics/simulation/relative_position.hpp"
 #include "physics/simulation/scenario_checks.hpp"
 #include "physics/simulation/simulation_limits.hpp"
+#include "physics/simulation/traffic_flows.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -663,6 +664,8 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   }
 
   resolve_phases(context, setup, sources);
+  // After the actors and obstacles: the road is pre-filled around them.
+  prepare_flows(scenario, values, map, seed, setup, diagnostics);
   prepare_lights(context, setup);
   for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
     auto lane = map.find_lane(limit.lane);
