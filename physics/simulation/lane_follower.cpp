@@ -103,7 +103,10 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
 void LaneFollower::start_at(double progress) {
   SCENFUZZ_DEMAND(std::isfinite(progress) && progress >= 0 && progress <= path_.length());
   s_ = progress;
-  state_ = state_on_path(path_, headings_, s_, state_.speed, 0);
+  // No faster than the bends ahead can be taken from: a car placed in a bend drives it as one
+  // that came to it would.
+  const double limit = envelope_[std::min(path_.segment_at(s_) + 1, envelope_.size() - 1)];
+  state_ = state_on_path(path_, headings_, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
 }
 

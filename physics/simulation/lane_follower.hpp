@@ -55,8 +55,8 @@ class LaneFollower {
                const FollowerSettings& settings = {});
 
   // Before the first step: puts it `progress` metres along its path instead of at its start, at
-  // the same speed (a background-traffic vehicle already on the road at t = 0). Stop lines it
-  // has passed are behind it and ignored.
+  // the same speed, or the most the bends ahead allow (a background-traffic vehicle already on
+  // the road at t = 0). Stop lines it has passed are behind it and ignored.
   void start_at(double progress);
 
   const KinematicState& state() const { return state_; }
