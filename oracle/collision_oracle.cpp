@@ -20,6 +20,7 @@ NearestBody nearest_body(const Trace& trace, std::size_t sample) {
   NearestBody nearest;
   const Footprint ego = footprint_at(trace, kEgo, sample);
   for (std::size_t other = 1; other < trace.actors.size(); ++other) {
+    if (!present_at(trace.actors[other], sample)) continue;  // background traffic off the map
     const auto id = static_cast<ActorId>(other);
     const double distance = signed_distance(ego, footprint_at(trace, id, sample));
     if (distance < nearest.distance) nearest = {distance, id};

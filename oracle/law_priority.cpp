@@ -69,7 +69,7 @@ std::vector<double> priority_vehicle_ahead(const Trace& trace, const EgoManoeuvr
                                     : ego_area(ego, 0, kAheadLength, -kAheadLength, kAheadLength);
     for (std::size_t k = 1; k < trace.actors.size() && values[i] == 0; ++k) {
       const TraceActor& vehicle = trace.actors[k];
-      if (vehicle.kind != TraceActorKind::vehicle) continue;
+      if (vehicle.kind != TraceActorKind::vehicle || !present_at(vehicle, i)) continue;
       const Footprint body = footprint_at(trace, static_cast<ActorId>(k), i);
       const double heading = std::abs(angle_difference(vehicle.heading[i], ego.heading));
       const bool has_priority =
@@ -93,7 +93,8 @@ std::vector<double> priority_pedestrian_ahead(const Trace& trace, const EgoManoe
                                : ego_area(ego, 0, kAheadLength, -kAheadLength, kAheadLength);
     const double reach = direction == kForward ? kPedestrianAheadReach : kPedestrianSideReach;
     for (std::size_t k = 1; k < trace.actors.size() && values[i] == 0; ++k) {
-      if (trace.actors[k].kind != TraceActorKind::pedestrian) continue;
+      if (trace.actors[k].kind != TraceActorKind::pedestrian || !present_at(trace.actors[k], i))
+        continue;
       const Footprint body = footprint_at(trace, static_cast<ActorId>(k), i);
       if (gap(ego, body) < reach && touches(area, body)) values[i] = 1;
     }

@@ -165,7 +165,8 @@ VehicleFound vehicle_ahead(const Trace& trace, const AheadView& view, std::size_
   VehicleFound found;
   for (std::size_t k = 1; k < trace.actors.size(); ++k) {
     const TraceActor& vehicle = trace.actors[k];
-    if (vehicle.kind != TraceActorKind::vehicle || vehicle.lane[i] < 0) continue;
+    if (vehicle.kind != TraceActorKind::vehicle || vehicle.lane[i] < 0 || !present_at(vehicle, i))
+      continue;
     const auto lane = static_cast<LaneIndex>(vehicle.lane[i]);
     bool ahead = false;
     for (const LaneStretch& stretch : view.stretches) {
@@ -184,7 +185,8 @@ VehicleFound vehicle_ahead(const Trace& trace, const AheadView& view, std::size_
 VehicleFound nearest_vehicle(const Trace& trace, std::size_t i) {
   VehicleFound found;
   for (std::size_t k = 1; k < trace.actors.size(); ++k) {
-    if (trace.actors[k].kind != TraceActorKind::vehicle) continue;
+    if (trace.actors[k].kind != TraceActorKind::vehicle || !present_at(trace.actors[k], i))
+      continue;
     const double gap = footprint_gap(trace, static_cast<ActorId>(k), i);
     if (gap < found.distance) found = {gap, trace.actors[k].speed[i]};
   }
@@ -248,7 +250,8 @@ VehicleFound vehicle_opposite(const Trace& trace, const RoadMap& map, const Ahea
   VehicleFound found;
   for (std::size_t k = 1; k < trace.actors.size(); ++k) {
     const TraceActor& vehicle = trace.actors[k];
-    if (vehicle.kind != TraceActorKind::vehicle || vehicle.lane[i] < 0) continue;
+    if (vehicle.kind != TraceActorKind::vehicle || vehicle.lane[i] < 0 || !present_at(vehicle, i))
+      continue;
     const auto lane = static_cast<LaneIndex>(vehicle.lane[i]);
     const MapPoint centre{vehicle.x[i], vehicle.y[i]};
     bool oncoming = false;
@@ -300,7 +303,9 @@ double traffic_jam(const Trace& trace, const RoadMap& map, const AheadView& view
   std::size_t stopped = 0;
   for (std::size_t k = 1; k < trace.actors.size(); ++k) {
     const TraceActor& vehicle = trace.actors[k];
-    if (vehicle.kind != TraceActorKind::vehicle || vehicle.speed[i] >= kStoppedSpeed) continue;
+    if (vehicle.kind != TraceActorKind::vehicle || vehicle.speed[i] >= kStoppedSpeed ||
+        !present_at(vehicle, i))
+      continue;
     const bool on_its_lanes =
         vehicle.lane[i] >= 0 &&
         map.lane(static_cast<LaneIndex>(vehicle.lane[i])).junction == junction;

@@ -34,6 +34,17 @@ struct Failures {
   }
 };
 
+// The samples [begin, end) the actor is on the map: background traffic comes and goes, and is
+// audited only while there.
+struct Presence {
+  std::size_t begin = 0, end = 0;
+};
+
+Presence presence(const Trace& trace, const TraceActor& actor) {
+  const std::size_t end = std::min(actor.present_until, trace.sample_count());
+  return {std::min(actor.present_from, end), end};
+}
+
 // `value` beyond `limit` by more than rounding.
 bool exceeds(double value, double limit) {
   return value > limit + kAuditThresholds.relative_tolerance * std::max(1.0, std::abs(limit));
@@ -90,7 +101,8 @@ void audit_off_road(TraceAudit& audit, const Trace& trace, const RoadMap& map, A
   const double grace = kAuditThresholds.off_road_grace;
   Failures failures;
   std::size_t samples_off = 0;
-  std::size_t stretch_start = 0;
+  const Presence there = presence(trace, actor);
+  std::size_t stretch_start = there.begin;
   auto close_stretch = [&](std::size_t end) {
     const std::size_t length = end - stretch_start;
     const double duration = static_cast<double>(length) * trace.dt;
@@ -99,13 +111,13 @@ void audit_off_road(TraceAudit& audit, const Trace& trace, const RoadMap& map, A
       samples_off += length;
     }
   };
-  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+  for (std::size_t i = there.begin; i < there.end; ++i) {
     if (on_some_lane(map, actor, i)) {
       close_stretch(i);
       stretch_start = i + 1;
     }
   }
-  close_stretch(trace.sample_count());
+  close_stretch(there.end);
   failures.samples = samples_off;
   add_issue(audit, trace, id, AuditKind::off_road, failures);
 }
@@ -114,7 +126,8 @@ void audit_speed(TraceAudit& audit, const Trace& trace, ActorId id,
                  const AuditClassLimits& limits) {
   const TraceActor& actor = trace.actors[id];
   Failures failures;
-  for (std::size_t i = 0; i < trace.sample_count(); ++i)
+  const Presence there = presence(trace, actor);
+  for (std::size_t i = there.begin; i < there.end; ++i)
     if (exceeds(actor.speed[i], limits.max_speed))
       failures.add(i, actor.speed[i], limits.max_speed, actor.speed[i] - limits.max_speed);
   add_issue(audit, trace, id, AuditKind::speed_limit, failures);
@@ -126,7 +139,8 @@ void audit_acceleration(TraceAudit& audit, const Trace& trace, ActorId id,
                         const AuditClassLimits& limits) {
   const TraceActor& actor = trace.actors[id];
   Failures failures;
-  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+  const Presence there = presence(trace, actor);
+  for (std::size_t i = there.begin; i < there.end; ++i) {
     const double a = actor.acceleration[i];
     if (exceeds(a, limits.max_acceleration))
       failures.add(i, a, limits.max_acceleration, a - limits.max_acceleration);
@@ -144,13 +158,15 @@ void audit_turning(TraceAudit& audit, const Trace& trace, ActorId id,
   if (limits.max_lateral_acceleration <= 0 || limits.min_turning_radius <= 0) return;
   const TraceActor& actor = trace.actors[id];
   Failures lateral, turning;
-  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+  const Presence there = presence(trace, actor);
+  for (std::size_t i = there.begin; i < there.end; ++i) {
     const double yaw_rate = std::abs(actor.yaw_rate[i]);
     const double centripetal = actor.speed[i] * yaw_rate;
     if (exceeds(centripetal, limits.max_lateral_acceleration))
       lateral.add(i, centripetal, limits.max_lateral_acceleration,
                   centripetal - limits.max_lateral_acceleration);
-    const double step_speed = i > 0 ? std::max(actor.speed[i - 1], actor.speed[i]) : actor.speed[i];
+    const double step_speed =
+        i > there.begin ? std::max(actor.speed[i - 1], actor.speed[i]) : actor.speed[i];
     const double allowed = step_speed / limits.min_turning_radius;
     if (exceeds(yaw_rate, allowed)) turning.add(i, yaw_rate, allowed, yaw_rate - allowed);
   }
@@ -164,7 +180,9 @@ void audit_yaw_rate(TraceAudit& audit, const Trace& trace, ActorId id) {
   const TraceActor& actor = trace.actors[id];
   const double tolerance = kAuditThresholds.yaw_rate_tolerance;
   Failures failures;
-  for (std::size_t i = 1; i < trace.sample_count(); ++i) {
+  // The first sample on the map has no step on the map before it.
+  const Presence there = presence(trace, actor);
+  for (std::size_t i = there.begin + 1; i < there.end; ++i) {
     const double dt = trace.time[i] - trace.time[i - 1];
     if (dt <= 0) continue;
     const double derivative = angle_difference(actor.heading[i], actor.heading[i - 1]) / dt;

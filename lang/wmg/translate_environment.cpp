@@ -133,6 +133,22 @@ void translate_environment(const Environment& environment, Translation& translat
   }
 }
 
+// A flow's destination: at a junction, `Rn.Lk` names the arm's in lane (lane_id), but traffic
+// bound for another road leaves the junction on it, by the arm's out lane of the same number. A
+// flow to its own origin (level 1's "traffic on R1") has no destination: it drives on along the
+// lanes' successors.
+std::string destination_lane_id(const TrafficFlow& flow, Translation& translation) {
+  if (flow.destination_lane.road.name == flow.source_lane.road.name &&
+      flow.destination_lane.lane.name == flow.source_lane.lane.name) {
+    translation.lane_id(flow.destination_lane);  // still checked
+    return "";
+  }
+  std::string id = translation.lane_id(flow.destination_lane).value_or("");
+  const std::string::size_type in = id.rfind("_in_");
+  if (in != std::string::npos) id.replace(in, 4, "_out_");
+  return id;
+}
+
 void translate_traffic(const TrafficModel& traffic, Translation& translation) {
   for (const Centroid& centroid : traffic.centroids) {
     if (!translation.roads.contains(centroid.road.name))
@@ -146,7 +162,7 @@ void translate_traffic(const TrafficModel& traffic, Translation& translation) {
     result.name = flow.id.name;
     result.location = flow.location;
     result.source_lane = translation.lane_id(flow.source_lane).value_or("");
-    result.destination_lane = translation.lane_id(flow.destination_lane).value_or("");
+    result.destination_lane = destination_lane_id(flow, translation);
     const std::string prefix = "traffic." + flow.id.name + ".";
     result.rate = translation.number(flow.first, prefix + "rate", "veh/h");
     result.speed = translation.number(flow.second, prefix + "speed", "km/h", kKilometresPerHour);

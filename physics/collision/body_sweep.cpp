@@ -12,6 +12,7 @@ std::uint32_t BodySweep::add(const SweepBox& box, bool is_static) {
   const auto id = static_cast<std::uint32_t>(boxes_.size());
   boxes_.push_back(box);
   is_static_.push_back(is_static ? 1 : 0);
+  enabled_.push_back(1);
   order_.push_back(id);
   return id;
 }
@@ -19,6 +20,11 @@ std::uint32_t BodySweep::add(const SweepBox& box, bool is_static) {
 void BodySweep::move(std::uint32_t body, const SweepBox& box) {
   SCENFUZZ_DEMAND(body < boxes_.size() && "no such body");
   boxes_[body] = box;
+}
+
+void BodySweep::set_enabled(std::uint32_t body, bool enabled) {
+  SCENFUZZ_DEMAND(body < boxes_.size() && "no such body");
+  enabled_[body] = enabled ? 1 : 0;
 }
 
 void BodySweep::sort_by_low_x() {
@@ -36,6 +42,7 @@ void BodySweep::overlapping_pairs(std::vector<Pair>& pairs) {
   sort_by_low_x();
   for (std::size_t i = 0; i < order_.size(); ++i) {
     const std::uint32_t a = order_[i];
+    if (!enabled_[a]) continue;
     const SweepBox& box_a = boxes_[a];
     // Every later body starts at or after a's low x, so its x range overlaps a's exactly when it
     // starts at or before a's high x.
@@ -43,7 +50,7 @@ void BodySweep::overlapping_pairs(std::vector<Pair>& pairs) {
       const std::uint32_t b = order_[j];
       const SweepBox& box_b = boxes_[b];
       if (box_b.min_x > box_a.max_x) break;
-      if (is_static_[a] && is_static_[b]) continue;
+      if ((is_static_[a] && is_static_[b]) || !enabled_[b]) continue;
       if (box_a.min_y <= box_b.max_y && box_b.min_y <= box_a.max_y)
         pairs.push_back(std::minmax(a, b));
     }

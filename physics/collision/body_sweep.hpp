@@ -28,6 +28,9 @@ class BodySweep {
   // other.
   std::uint32_t add(const SweepBox& box, bool is_static);
   void move(std::uint32_t body, const SweepBox& box);
+  // A disabled body pairs with nothing (a background-traffic vehicle not yet on the map, or gone
+  // from it); bodies are enabled when added.
+  void set_enabled(std::uint32_t body, bool enabled);
 
   // Replaces `pairs` with every pair of overlapping boxes, except static-static ones, each once
   // as (lower id, higher id), in no particular order.
@@ -38,6 +41,7 @@ class BodySweep {
 
   std::vector<SweepBox> boxes_;
   std::vector<std::uint8_t> is_static_;
+  std::vector<std::uint8_t> enabled_;
   std::vector<std::uint32_t> order_;  // body ids by boxes_[id].min_x
 };
 

@@ -300,6 +300,11 @@ void CollisionWorld::set_pose(BodyId body, const MapPose& pose) {
   impl_->sweep.move(body, sweep_box_around(pose.position, moving.reach));
 }
 
+void CollisionWorld::set_enabled(BodyId body, bool enabled) {
+  SCENFUZZ_DEMAND(body < impl_->bodies.size() && "no such body");
+  impl_->sweep.set_enabled(body, enabled);
+}
+
 void CollisionWorld::ignore_pair(BodyId a, BodyId b) {
   SCENFUZZ_DEMAND(a < impl_->bodies.size() && b < impl_->bodies.size() && "no such body");
   impl_->ignored.insert(pair_key(a, b));

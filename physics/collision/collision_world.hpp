@@ -45,6 +45,10 @@ class CollisionWorld {
   // pose it is added with; static bodies never collide with each other.
   BodyId add_body(const BodyGeometry& geometry, const MapPose& pose, bool is_static);
   void set_pose(BodyId body, const MapPose& pose);
+  // A disabled body is not in the world for find_contacts: it touches nothing until enabled
+  // again (a background-traffic vehicle before it enters the map and after it leaves). Bodies
+  // are enabled when added.
+  void set_enabled(BodyId body, bool enabled);
   std::size_t body_count() const;
   Footprint footprint(BodyId body) const;
 

@@ -101,6 +101,16 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   state_.yaw_rate = 0;
 }
 
+void LaneFollower::start_at(double progress) {
+  SCENFUZZ_DEMAND(std::isfinite(progress) && progress >= 0 && progress <= path_.length());
+  s_ = progress;
+  // No faster than the bends ahead can be taken from: a car placed in a bend drives it as one
+  // that came to it would.
+  const double limit = envelope_[std::min(path_.segment_at(s_) + 1, envelope_.size() - 1)];
+  state_ = state_on_path(path_, headings_, s_, std::min(state_.speed, limit), 0);
+  state_.yaw_rate = 0;
+}
+
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   if (finished_) return;
   advance(choose_acceleration(world, self, dt), dt);
@@ -167,7 +177,7 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
   double best_gap = kInfinity;
   Stop best;
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (k == self) continue;
+    if (k == self || !present_in(world, k)) continue;
     const KinematicState& other = world.states[k];
     const MapPoint now{other.x, other.y};
     if (distance(now, {state_.x, state_.y}) > lookahead + world.lengths[k]) continue;
@@ -290,7 +300,7 @@ bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t se
   if (!junction_lane) return false;
   const std::vector<LaneIndex>& conflicts = conflicts_of(*junction_lane);
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (k == self || world.lanes[k].lane < 0) continue;
+    if (k == self || world.lanes[k].lane < 0 || !present_in(world, k)) continue;
     if (world.kinds[k] == TraceActorKind::pedestrian || world.kinds[k] == TraceActorKind::obstacle)
       continue;
     const auto lane = static_cast<LaneIndex>(world.lanes[k].lane);
@@ -307,7 +317,7 @@ bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t se
 
 bool LaneFollower::pedestrians_at(const WorldSnapshot& world, const Crosswalk& crosswalk) const {
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (world.kinds[k] != TraceActorKind::pedestrian) continue;
+    if (world.kinds[k] != TraceActorKind::pedestrian || !present_in(world, k)) continue;
     const KinematicState& walker = world.states[k];
     if (walker.speed >= settings_.walking_speed &&
         near_polygon({walker.x, walker.y}, crosswalk.outline, settings_.crosswalk_clearance))

@@ -54,6 +54,11 @@ class LaneFollower {
                double desired_speed, double initial_speed, bool leaves_at_end,
                const FollowerSettings& settings = {});
 
+  // Before the first step: puts it `progress` metres along its path instead of at its start, at
+  // the same speed, or the most the bends ahead allow (a background-traffic vehicle already on
+  // the road at t = 0). Stop lines it has passed are behind it and ignored.
+  void start_at(double progress);
+
   const KinematicState& state() const { return state_; }
   double progress() const { return s_; }  // m along the path
   bool finished() const { return finished_; }

@@ -19,6 +19,7 @@
 #include "physics/simulation/scenario_checks.hpp"
 #include "physics/simulation/shortfall_warnings.hpp"
 #include "physics/simulation/simulation_limits.hpp"
+#include "physics/simulation/traffic_flows.hpp"
 #include "physics/simulation/waypoint_path.hpp"
 
 namespace scenfuzz {
@@ -688,6 +689,8 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   }
 
   resolve_phases(context, setup, sources);
+  // After the actors and obstacles: the road is pre-filled around them.
+  prepare_flows(scenario, values, map, seed, setup, diagnostics);
   prepare_lights(context, setup);
   for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
     auto lane = map.find_lane(limit.lane);

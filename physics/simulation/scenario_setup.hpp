@@ -31,6 +31,19 @@ struct LaneDrive {
   double initial_speed = 0;  // m/s
 };
 
+// A background traffic flow (the scenario's Traffic::flows) ready to run: its lane route from the
+// start of its source lane, the path drawn along it, its rate and its vehicles' desired speed.
+// Its vehicles and when they arrive are drawn from `seed` (traffic_flows.hpp).
+struct FlowPlan {
+  std::string name;
+  SourceLocation location;
+  LaneRoute route;
+  Polyline path;
+  double rate = 0;   // vehicles per hour
+  double speed = 0;  // m/s
+  std::uint64_t seed = 0;
+};
+
 // An NPC vehicle or pedestrian: it follows its trajectory and does not react; or, with
 // `manoeuvres` (WMG SDL phases), it is driven online by a ManoeuvreDriver and its trajectory
 // only stands at its initial pose; or, with `lane_drive` and reactive NPC behaviour, it is driven
@@ -76,6 +89,8 @@ struct SimulationSetup {
   // The run ends at the first step where one holds.
   std::vector<TriggerCondition> end_conditions;
   NpcBehaviour npc_behaviour = NpcBehaviour::reactive;  // as the scenario says
+  // Background traffic, in the scenario's order; its vehicles are always reactive.
+  std::vector<FlowPlan> flows;
 };
 
 // Evaluates `scenario` at `values` on `map`. Problems (an unknown lane, an unreachable target, a

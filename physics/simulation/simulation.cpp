@@ -3,6 +3,8 @@
 // driver choose the ego's control and advance the ego with the bicycle model. Scripted actors
 // are evaluated at each step's time directly, so they accumulate no integration error; actors
 // with manoeuvre phases (WMG SDL) react to the world and are stepped by their ManoeuvreDriver.
+// Background traffic (flows) comes after the obstacles in actor order; its vehicles are actors
+// throughout, present on the map only between their entry and exit (background_traffic.hpp).
 #include "physics/simulation/simulation.hpp"
 
 #include <algorithm>
@@ -14,12 +16,14 @@
 #include "physics/collision/collision_world.hpp"
 #include "physics/ego/observation_json.hpp"
 #include "physics/ego/plugin_driver.hpp"
+#include "physics/simulation/background_traffic.hpp"
 #include "physics/simulation/lane_follower.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/manoeuvre_driver.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
 #include "physics/simulation/plugin_observation.hpp"
 #include "physics/simulation/simulation_limits.hpp"
+#include "physics/simulation/traffic_flows.hpp"
 #include "physics/simulation/traffic_signals.hpp"
 
 namespace scenfuzz {
@@ -69,6 +73,17 @@ KinematicState scripted_state(const Trajectory& trajectory, double t, const Kine
   KinematicState state = trajectory.state_at(t);
   if (before) state.yaw_rate = step_yaw_rate(before->heading, state.heading, dt);
   return state;
+}
+
+// The objects of `truth` (actors 1, 2, ... in order) that are on the map, in `out`: the ego
+// perceives nothing of a flow vehicle before it enters or after it leaves.
+const std::vector<WorldObject>& present_objects(const std::vector<WorldObject>& truth,
+                                                const std::vector<std::uint8_t>& present,
+                                                std::vector<WorldObject>& out) {
+  out.clear();
+  for (const WorldObject& object : truth)
+    if (present[object.id]) out.push_back(object);
+  return out;
 }
 
 void append_perceived(PerceivedActor& column, const WorldObject* seen) {
@@ -170,7 +185,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   trace.seed = options.seed;
   trace.dt = dt;
 
-  // Bodies: the ego, the scripted actors, the obstacles; collision ids equal actor ids.
+  // Bodies: the ego, the scripted actors, the obstacles, the flow vehicles; collision ids equal
+  // actor ids.
   CollisionWorld world;
   std::vector<KinematicState> states;
   BodyGeometry ego_geometry = body_geometry(setup.ego_body);
@@ -214,7 +230,23 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     state.heading = obstacle.pose.heading;
     states.push_back(state);
   }
+  const std::size_t first_flow = trace.actors.size();
+  BackgroundTraffic traffic(map, setup, draw_flow_schedule(setup, duration), first_flow);
+  const BodyGeometry flow_geometry = body_geometry(flow_vehicle_body());
+  for (std::size_t j = 0; j < traffic.size(); ++j) {
+    trace.actors.push_back(describe(traffic.vehicle(j).name, TraceActorKind::vehicle,
+                                    flow_vehicle_body().category, flow_geometry));
+    KinematicState start = traffic.initial_state(j);
+    BodyId body = world.add_body(flow_geometry, {{start.x, start.y}, start.heading}, false);
+    if (!traffic.present_at_start(j)) world.set_enabled(body, false);
+    states.push_back(start);
+  }
   const std::size_t actor_count = trace.actors.size();
+  const bool sees_world = watches_world || !traffic.empty();
+  // By actor id: on the map now. Only flow vehicles come and go.
+  std::vector<std::uint8_t> present(actor_count, 1);
+  for (std::size_t j = 0; j < traffic.size(); ++j)
+    present[first_flow + j] = traffic.present_at_start(j) ? 1 : 0;
   for (std::size_t k = 1; k < actor_count; ++k)
     trace.perceived.push_back({static_cast<ActorId>(k), {}, {}, {}, {}, {}, {}});
   for (const TrafficLight& light : map.traffic_lights()) trace.lights.push_back({light.id, {}});
@@ -244,6 +276,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     kinds[k] = trace.actors[k].kind;
   }
 
+  std::vector<WorldObject> on_map;       // the objects of `truth` present now, for perception
+  std::vector<WorldObject> seen_on_map;  // what perception reports of them
+
   std::optional<PluginDriver> plugin;
   if (!options.ego_plugin.empty()) {
     try {
@@ -270,6 +305,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                                                       step > 0 ? &states[k] : nullptr, dt);
     for (std::size_t k = 0; k < first_obstacle; ++k)
       world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
+    if (!traffic.empty()) traffic.update(step, t, states, lengths, widths, present, world);
 
     bool ego_hit = false;
     // Each pair's first contact only: after it the world stops testing the pair.
@@ -286,7 +322,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
 
     trace.time.push_back(t);
     for (std::size_t k = 0; k < actor_count; ++k) {
-      fixes[k] = lanes[k].update(map, {states[k].x, states[k].y}, states[k].heading);
+      // An absent flow vehicle is on no lane; its tracker starts afresh when it enters.
+      fixes[k] = present[k] ? lanes[k].update(map, {states[k].x, states[k].y}, states[k].heading)
+                            : LaneFix{};
       append_sample(trace.actors[k], states[k], fixes[k]);
     }
     const std::vector<SignalColour>& colours = signals.colours_at(t);
@@ -300,7 +338,14 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       object.speed = states[k].speed;
       object.reversing = states[k].reversing;
     }
-    const std::vector<WorldObject>& seen = perception.observe(states[kEgo], truth);
+    // Sensors sample only what is on the map, and a vehicle that has left is not reported late
+    // (latency) nor coasted: it is gone, not missed.
+    const std::vector<WorldObject>& seen =
+        traffic.empty()
+            ? perception.observe(states[kEgo], truth)
+            : present_objects(
+                  perception.observe(states[kEgo], present_objects(truth, present, on_map)),
+                  present, seen_on_map);
     for (std::size_t k = 1, next = 0; k < actor_count; ++k) {
       while (next < seen.size() && seen[next].id < k) ++next;
       bool detected = next < seen.size() && seen[next].id == k;
@@ -308,7 +353,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     }
 
     WorldSnapshot snapshot;
-    if (watches_world) {
+    if (sees_world) {
       for (std::size_t k = 0; k < first_obstacle; ++k)
         manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
       for (std::size_t k = 1; k <= drivers.size(); ++k)
@@ -323,7 +368,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                   sequence_starts,
                   !trace.collisions.empty(),
                   widths,
-                  kinds};
+                  kinds,
+                  traffic.empty() ? std::span<const std::uint8_t>{}
+                                  : std::span<const std::uint8_t>(present)};
     }
 
     route.update({states[kEgo].x, states[kEgo].y});
@@ -350,6 +397,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       if (drivers[k - 1]) drivers[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt);
     for (std::size_t k = 1; k <= followers.size(); ++k)
       if (followers[k - 1]) followers[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt);
+    traffic.step(snapshot, dt);
 
     VehicleControl control;
     if (plugin) {
@@ -368,6 +416,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
   }
   colour_runs.write(trace.lights);
+  traffic.finish(trace.actors, trace.sample_count());
   return trace;
 }
 

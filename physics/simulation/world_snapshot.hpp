@@ -3,6 +3,7 @@
 // the simulation loop's own arrays, valid for that step only.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "physics/actors/kinematics.hpp"
@@ -27,6 +28,14 @@ struct WorldSnapshot {
   bool collided = false;                  // some collision happened at or before `time`
   std::span<const double> widths;         // body width by actor id
   std::span<const TraceActorKind> kinds;  // by actor id
+  // By actor id, 1 while the actor is on the map (TraceActor::present_from/until); empty when
+  // every actor is, as without background traffic. An absent actor's state is a parked pose that
+  // nobody may see.
+  std::span<const std::uint8_t> present;
 };
+
+inline bool present_in(const WorldSnapshot& world, std::uint32_t actor) {
+  return world.present.empty() || world.present[actor] != 0;
+}
 
 }  // namespace scenfuzz

@@ -3,7 +3,9 @@
 // the traffic lights' colours, and the events of the run.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,7 +41,26 @@ struct TraceActor {
   std::vector<std::int32_t> lane;       // LaneIndex of the lane the centre is on, -1 on none
   std::vector<double> s;                // arc length on `lane`; 0 when lane is -1
   std::vector<std::uint8_t> reversing;  // one per sample, or empty: it never reverses
+
+  // The samples [present_from, present_until) in which the actor is on the map. Scenario actors
+  // are present throughout (the defaults); a background-traffic vehicle (a Flow's) enters the map
+  // at its spawn and leaves it at the end of its route, and one that never got in has an empty
+  // interval. Outside it the columns still hold finite values (the entry pose before, the exit
+  // pose after, at rest, lane -1), but nothing may read them as the actor being there: it is not
+  // in the collision world, not perceived, not audited, not drawn, not exported as CSV rows.
+  std::size_t present_from = 0;
+  std::size_t present_until = std::numeric_limits<std::size_t>::max();
 };
+
+// Whether the actor is on the map at sample i.
+inline bool present_at(const TraceActor& actor, std::size_t i) {
+  return i >= actor.present_from && i < actor.present_until;
+}
+
+// Whether the actor is on the map throughout a run of `sample_count` samples.
+inline bool present_throughout(const TraceActor& actor, std::size_t sample_count) {
+  return actor.present_from == 0 && actor.present_until >= sample_count;
+}
 
 // Whether `reversing` (a TraceActor's or PerceivedActor's column) says sample i moved backwards.
 inline bool reversing_at(const std::vector<std::uint8_t>& reversing, std::size_t i) {

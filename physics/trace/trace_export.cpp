@@ -121,14 +121,19 @@ ordered_json actor_json(const TraceActor& actor) {
   samples["lane"] = actor.lane;
   samples["s"] = actor.s;
   samples["reversing"] = reversing_json(actor.reversing, actor.x.size());
-  return ordered_json{{"name", actor.name},
-                      {"kind", trace_actor_kind_name(actor.kind)},
-                      {"category", category_name(actor.category)},
-                      {"shape", body_shape_name(actor.shape)},
-                      {"length", actor.length},
-                      {"width", actor.width},
-                      {"height", actor.height},
-                      {"samples", std::move(samples)}};
+  ordered_json written{{"name", actor.name},
+                       {"kind", trace_actor_kind_name(actor.kind)},
+                       {"category", category_name(actor.category)},
+                       {"shape", body_shape_name(actor.shape)},
+                       {"length", actor.length},
+                       {"width", actor.width},
+                       {"height", actor.height}};
+  // Only an actor that came or went during the run (background traffic) says when it was there.
+  const std::size_t n = actor.x.size();
+  if (!present_throughout(actor, n))
+    written["present"] = {std::min(actor.present_from, n), std::min(actor.present_until, n)};
+  written["samples"] = std::move(samples);
+  return written;
 }
 
 ordered_json perceived_json(const PerceivedActor& perceived) {
@@ -301,6 +306,22 @@ std::vector<std::int32_t> read_lane_column(const json& object, const std::string
   return values;
 }
 
+// "present": [from, until], samples with from <= until <= the sample count; without it the actor
+// was there throughout.
+void read_presence(const json& actor_value, const std::string& where, std::size_t sample_count,
+                   TraceActor& actor) {
+  if (!actor_value.contains("present")) return;
+  const std::string path = member_path(where, "present");
+  const json& interval = require_array(actor_value["present"], path);
+  if (interval.size() != 2) fail(path, "expected [from, until]");
+  const std::int64_t from = read_integer(interval[0], element_path(path, 0));
+  const std::int64_t until = read_integer(interval[1], element_path(path, 1));
+  if (from < 0 || from > until || static_cast<std::uint64_t>(until) > sample_count)
+    fail(path, "expected 0 <= from <= until <= " + std::to_string(sample_count));
+  actor.present_from = static_cast<std::size_t>(from);
+  actor.present_until = static_cast<std::size_t>(until);
+}
+
 TraceActor read_actor(const json& value, const std::string& where, std::size_t sample_count) {
   require_object(value, where);
   TraceActor actor;
@@ -325,6 +346,7 @@ TraceActor read_actor(const json& value, const std::string& where, std::size_t s
   actor.lane = read_lane_column(samples, samples_path, sample_count);
   actor.s = read_number_column(samples, "s", samples_path, sample_count);
   actor.reversing = read_reversing_column(samples, samples_path, sample_count);
+  read_presence(value, where, sample_count, actor);
   return actor;
 }
 
@@ -425,6 +447,7 @@ std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids)
   for (std::size_t i = 0; i < trace.sample_count(); ++i) {
     for (std::size_t id = 0; id < trace.actors.size(); ++id) {
       const TraceActor& actor = trace.actors[id];
+      if (!present_at(actor, i)) continue;  // a flow vehicle off the map has no row
       append_csv_number(out, trace.time[i]);
       out += ',';
       append_csv_text(out, actor.name);

@@ -18,12 +18,15 @@ namespace scenfuzz {
 // perceived columns are empty on the ego's rows, and all but perceived_detected (0) are empty
 // where the ego did not detect the actor. Lanes print as `lane_ids[lane]` when ids are
 // given (the map's lane ids, in LaneIndex order), else as the index; empty off the lanes.
-// Numbers are the shortest text that reads back to the same double. Text is quoted as RFC 4180
-// says. Throws std::out_of_range when a lane index has no entry in a non-empty `lane_ids`.
+// An actor has rows only for the samples it is on the map (TraceActor::present_from/until):
+// background traffic comes and goes. Numbers are the shortest text that reads back to the same
+// double. Text is quoted as RFC 4180 says. Throws std::out_of_range when a lane index has no entry
+// in a non-empty `lane_ids`.
 std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids = {});
 
 // {"format": "scenfuzz-trace", "version": 1, "map", "seed", "dt", "end", "time": [...],
 //  "actors": [{"name", "kind", "category", "shape", "length", "width", "height",
+//              "present": [from, until] (only for an actor not on the map throughout),
 //              "samples": {"x": [...], "y", "heading", "speed", "acceleration", "yaw_rate",
 //                          "lane", "s", "reversing": [false, ...]}}],
 //  "perceived": [{"actor", "detected": [true, ...], "x": [...], "y", "heading", "speed",

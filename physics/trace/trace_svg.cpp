@@ -135,6 +135,12 @@ MapPoint position(const TraceActor& actor, std::size_t sample) {
   return {actor.x[sample], actor.y[sample]};
 }
 
+// Whether sample i of the actor is drawn: it is on the map then (background traffic comes and
+// goes) at a finite position.
+bool drawn(const TraceActor& actor, std::size_t i) {
+  return present_at(actor, i) && finite(position(actor, i));
+}
+
 bool round_body(const TraceActor& actor) {
   return actor.kind == TraceActorKind::pedestrian ||
          (actor.kind == TraceActorKind::obstacle && actor.shape != BodyShape::box);
@@ -154,7 +160,7 @@ MapBounds visited_region(const RoadMap& map, const Trace& trace) {
   for (const TraceActor& actor : trace.actors) {
     bool seen = false;
     for (std::size_t i = 0; i < actor.x.size(); ++i) {
-      if (!finite(position(actor, i))) continue;
+      if (!drawn(actor, i)) continue;
       bounds.include(position(actor, i));
       seen = true;
     }
@@ -302,7 +308,7 @@ void flush_path(PathDrawing& drawing, const SvgFrame& frame, std::vector<MapPoin
 }
 
 // The path in path_shades slices of the run's time, each one more opaque; a gap in the samples
-// (NaN) breaks it.
+// (NaN, or the actor off the map) breaks it.
 void append_path(PathDrawing& drawing, const SvgFrame& frame, const Trace& trace, std::size_t id) {
   const TraceActor& actor = trace.actors[id];
   const std::string_view colour = actor_colour(trace, id);
@@ -312,7 +318,7 @@ void append_path(PathDrawing& drawing, const SvgFrame& frame, const Trace& trace
   auto opacity = [](int slice) { return 0.3 + 0.7 * (slice + 1) / path_shades; };
   for (std::size_t i = 0; i < actor.x.size() && i < trace.time.size(); ++i) {
     const MapPoint point = position(actor, i);
-    if (!finite(point)) {
+    if (!drawn(actor, i)) {
       flush_path(drawing, frame, points, colour, opacity(shade));
       continue;
     }
@@ -496,10 +502,16 @@ std::string render_trace_svg(const RoadMap& map, const Trace& trace,
       map_svg_frame(visited_region(map, trace), 0, options.pixels_per_metre, default_image_pixels);
 
   std::vector<LegendEntry> entries;
-  for (std::size_t id = 0; id < trace.actors.size(); ++id)
+  for (std::size_t id = 0; id < trace.actors.size(); ++id) {
+    // A flow vehicle that never got onto the map is not drawn, so it has no entry either.
+    if (trace.actors[id].present_from >=
+            std::min(trace.actors[id].present_until, trace.sample_count()) &&
+        trace.sample_count() > 0)
+      continue;
     entries.push_back({trace.actors[id].name + " (" +
                            std::string(trace_actor_kind_name(trace.actors[id].kind)) + ")",
                        actor_colour(trace, id)});
+  }
   if (!trace.collisions.empty()) entries.push_back({"collision", {}});
   entries.push_back(
       {"paths darken with time; bodies every " + number_text(options.snapshot_interval, 2) + " s",
@@ -546,7 +558,7 @@ std::string render_trace_svg(const RoadMap& map, const Trace& trace,
   for (std::size_t id = 0; id < trace.actors.size(); ++id) {
     const TraceActor& actor = trace.actors[id];
     for (const std::size_t sample : snapshots) {
-      if (sample >= actor.x.size()) continue;
+      if (sample >= actor.x.size() || !present_at(actor, sample)) continue;
       append_body(out, frame, actor, sample, actor_colour(trace, id),
                   elapsed_fraction(trace, trace.time[sample]), colliding.contains({sample, id}));
       if (sample > 0 && finite(position(actor, sample)))
@@ -559,7 +571,7 @@ std::string render_trace_svg(const RoadMap& map, const Trace& trace,
   for (std::size_t id = 0; id < trace.actors.size(); ++id) {
     const TraceActor& actor = trace.actors[id];
     std::size_t first = 0;
-    while (first < actor.x.size() && !finite(position(actor, first))) ++first;
+    while (first < actor.x.size() && !drawn(actor, first)) ++first;
     if (first == actor.x.size()) continue;
     append_text(out, frame, "trace-name", position(actor, first), -8, -10, actor.name,
                 actor_colour(trace, id));

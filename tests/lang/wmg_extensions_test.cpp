@@ -142,7 +142,7 @@ TEST(WmgFlows, TheirRangesAreSearchParametersAndNothingWarns) {
   const scenfuzz::TrafficFlow& flow = scenario.traffic.flows[0];
   EXPECT_EQ(flow.name, "Background");
   EXPECT_EQ(flow.source_lane, "east_0");
-  EXPECT_EQ(flow.destination_lane, "east_0");
+  EXPECT_EQ(flow.destination_lane, "") << "a flow to its own origin drives on along the lanes";
   std::vector<double> values(scenario.parameters.size(), 0.0);
   values[static_cast<std::size_t>(rate - scenario.parameters.data())] = 500;
   values[static_cast<std::size_t>(speed - scenario.parameters.data())] = 36;
@@ -167,6 +167,10 @@ TEST(WmgFlows, TheCorpusFlowIsSearchedWithoutAWarning) {
   ASSERT_NE(speed, nullptr);
   EXPECT_EQ(speed->lower, 30);
   EXPECT_EQ(speed->upper, 48);
+  // From R4 (north) into the junction, out on R2 (south): the destination is R2's out lane.
+  ASSERT_EQ(result.scenario.traffic.flows.size(), 1u);
+  EXPECT_EQ(result.scenario.traffic.flows[0].source_lane, "north_in_1");
+  EXPECT_EQ(result.scenario.traffic.flows[0].destination_lane, "south_out_1");
 }
 
 TEST(WmgFlows, RateAndSpeedOutsideWhatTheyMeanAreErrorsAtTheirText) {
