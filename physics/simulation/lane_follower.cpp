@@ -22,6 +22,7 @@ constexpr double kStopSignReach = 3;         // m before the line that count as 
 constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower than this waits too
 constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term finite
 constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
+constexpr double kScanInterval = 0.2;        // s between looks at every actor (see find_leader)
 
 double fourth_power(double x) {
   double squared = x * x;
@@ -131,7 +132,8 @@ double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32
     best = bend;
     reason_ = FollowerReason::bend;
   }
-  std::vector<Stop> stops;
+  std::vector<Stop>& stops = stops_;
+  stops.clear();
   find_leader(world, self, stops);
   find_stop_lines(world, self, dt, stops);
   if (!leaves_at_end_) stops.push_back({path_.length() - s_, 0, 0, FollowerReason::path_end});
@@ -167,52 +169,97 @@ double LaneFollower::idm(const Stop& stop) const {
 
 // Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
 // leader. A vehicle coming the other way counts as standing.
+// Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
+// leader. Every actor is looked at every scan interval, as a driver's glance goes round; between
+// scans only the leader is followed (its gap and speed every step).
 void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
-                               std::vector<Stop>& stops) const {
-  const double v = state_.speed;
-  const double lookahead = std::max(settings_.min_lookahead, v * settings_.lookahead_time);
-  const double half_length = body_.length / 2;
-  const double half_width = body_.width / 2;
-  const std::size_t first = path_.segment_at(s_);
-  double best_gap = kInfinity;
-  Stop best;
-  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (k == self || !present_in(world, k)) continue;
-    const KinematicState& other = world.states[k];
-    const MapPoint now{other.x, other.y};
-    if (distance(now, {state_.x, state_.y}) > lookahead + world.lengths[k]) continue;
-    double along_heading = angle_difference(other.heading, state_.heading);
-    double velocity = longitudinal_velocity(other);
-    double tau = other.speed > 0.1 ? settings_.prediction_time : 0;
-    for (MapPoint at : {now, MapPoint{other.x + std::cos(other.heading) * velocity * tau,
-                                      other.y + std::sin(other.heading) * velocity * tau}}) {
-      // The nearest point of the path ahead, segment by segment from this actor's own.
-      PolylineProjection nearest;
-      nearest.distance = kInfinity;
-      for (std::size_t seg = first; seg < path_.segment_count(); ++seg) {
-        if (path_.arc_lengths()[seg] > s_ + lookahead) break;
-        PolylineProjection p = path_.project_to_segment(at, seg);
-        if (p.distance < nearest.distance) nearest = p;
+                               std::vector<Stop>& stops) {
+  scanning_ = world.time + 1e-9 >= next_scan_;
+  if (scanning_) {
+    next_scan_ = world.time + kScanInterval;
+    leader_ = -1;
+    double best_gap = kInfinity;
+    for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+      if (k == self || !present_in(world, k)) continue;
+      auto stop = in_path(world, k);
+      if (stop && stop->gap < best_gap) {
+        best_gap = stop->gap;
+        leader_ = static_cast<std::int64_t>(k);
       }
-      if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
-      double relative = angle_difference(other.heading, headings_[nearest.segment]);
-      double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
-                      std::abs(std::cos(relative)) * world.widths[k] / 2;
-      double along = std::abs(std::cos(relative)) * world.lengths[k] / 2 +
-                     std::abs(std::sin(relative)) * world.widths[k] / 2;
-      if (std::abs(nearest.lateral) > half_width + across + settings_.path_margin) continue;
-      double gap = nearest.s - s_ - half_length - along;
-      if (gap < -along) continue;  // beside it, not ahead
-      if (gap >= best_gap) continue;
-      best_gap = gap;
-      bool predicted = at.x != now.x || at.y != now.y;
-      double speed_along = predicted ? 0 : std::max(0.0, velocity * std::cos(along_heading));
-      best = {gap, settings_.standstill_gap, speed_along,
-              world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
-                                                           : FollowerReason::leader};
     }
   }
-  if (std::isfinite(best_gap)) stops.push_back(best);
+  if (leader_ < 0 || !present_in(world, static_cast<std::uint32_t>(leader_))) return;
+  if (auto stop = in_path(world, static_cast<std::uint32_t>(leader_))) stops.push_back(*stop);
+}
+
+// Actor k as something to stop behind: where it is, or where it will be within the prediction
+// time (standing there), whichever is nearer along the path; nullopt when neither is in the path
+// ahead. A vehicle coming the other way counts as standing.
+std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& world,
+                                                        std::uint32_t k) const {
+  const double lookahead =
+      std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  const KinematicState& other = world.states[k];
+  const double dx = other.x - state_.x, dy = other.y - state_.y;
+  const double reach_k = lookahead + world.lengths[k];
+  if (dx * dx + dy * dy > reach_k * reach_k) return std::nullopt;
+  // Behind this actor's front it is in nobody's way ahead (paths do not turn back within the
+  // lookahead), wherever it moves in the next seconds.
+  const double ahead = dx * std::cos(state_.heading) + dy * std::sin(state_.heading);
+  const double tau = other.speed > 0.1 ? settings_.prediction_time : 0;
+  if (ahead < -(world.lengths[k] + other.speed * tau)) return std::nullopt;
+  const double velocity = longitudinal_velocity(other);
+  const MapPoint points[] = {{other.x, other.y},
+                             {other.x + std::cos(other.heading) * velocity * tau,
+                              other.y + std::sin(other.heading) * velocity * tau}};
+  const double half_width = body_.width / 2;
+  const double reach =
+      half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
+  const std::size_t first = path_.segment_at(s_);
+  std::optional<Stop> best;
+  for (int which = 0; which < (tau > 0 ? 2 : 1); ++which) {
+    PolylineProjection nearest = nearest_ahead(points[which], first, s_ + lookahead, reach);
+    if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
+    double relative = angle_difference(other.heading, headings_[nearest.segment]);
+    double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
+                    std::abs(std::cos(relative)) * world.widths[k] / 2;
+    double along = std::abs(std::cos(relative)) * world.lengths[k] / 2 +
+                   std::abs(std::sin(relative)) * world.widths[k] / 2;
+    if (std::abs(nearest.lateral) > half_width + across + settings_.path_margin) continue;
+    double gap = nearest.s - s_ - body_.length / 2 - along;
+    if (gap < -along) continue;  // beside it, not ahead
+    if (best && gap >= best->gap) continue;
+    double speed_along =
+        which == 1
+            ? 0
+            : std::max(0.0, velocity * std::cos(angle_difference(other.heading, state_.heading)));
+    best = Stop{gap, settings_.standstill_gap, speed_along,
+                world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
+                                                             : FollowerReason::leader};
+  }
+  return best;
+}
+
+// The nearest point of the path between segment `first` and arc length `until` to `point`, if
+// one lies within `reach` (else its distance is infinite). A path point d metres away is at least
+// d - reach metres of path from any point within reach, so the scan jumps that far ahead.
+PolylineProjection LaneFollower::nearest_ahead(MapPoint point, std::size_t first, double until,
+                                               double reach) const {
+  PolylineProjection nearest;
+  nearest.distance = kInfinity;
+  const auto& arc = path_.arc_lengths();
+  for (std::size_t seg = first; seg < path_.segment_count() && arc[seg] <= until;) {
+    const double beyond = arc[seg] + distance(point, path_.points()[seg]) - reach;
+    if (arc[seg + 1] < beyond) {  // this segment, and all up to `beyond`, are out of reach
+      while (seg < path_.segment_count() && arc[seg + 1] < beyond) ++seg;
+      continue;
+    }
+    PolylineProjection p = path_.project_to_segment(point, seg);
+    if (p.distance < nearest.distance) nearest = p;
+    ++seg;
+  }
+  if (nearest.distance > reach) nearest.distance = kInfinity;
+  return nearest;
 }
 
 void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
@@ -221,9 +268,11 @@ void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t sel
   const double front = s_ + body_.length / 2;
   const double comfortable_stop = v * v / (2 * body_.comfortable_deceleration);
   const double full_stop = v * v / (2 * body_.max_deceleration);
-  for (Feature& feature : features_) {
+  while (next_feature_ < features_.size() && features_[next_feature_].at - front < -0.5)
+    ++next_feature_;  // passed
+  for (std::size_t f = next_feature_; f < features_.size(); ++f) {
+    Feature& feature = features_[f];
     double gap = feature.at - front;
-    if (gap < -0.5) continue;  // passed
     if (gap > std::max(settings_.min_lookahead, v * settings_.lookahead_time)) break;
     Stop line{gap, settings_.stop_line_gap, 0, FollowerReason::red_light};
     switch (feature.feature.kind) {
@@ -258,7 +307,10 @@ void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t sel
         }
         break;
       case FeatureKind::crosswalk:
-        if (gap >= full_stop && pedestrians_at(world, map_->crosswalks()[feature.feature.index])) {
+        // Looked at once a scan, as the actors are (find_leader).
+        if (scanning_)
+          feature.occupied = pedestrians_at(world, map_->crosswalks()[feature.feature.index]);
+        if (gap >= full_stop && feature.occupied) {
           line.reason = FollowerReason::pedestrian;
           stops.push_back(line);
         }

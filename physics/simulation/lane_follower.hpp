@@ -78,12 +78,16 @@ class LaneFollower {
   struct Feature {  // a stop line on the route, at path distance `at`
     FeatureAhead feature;
     double at = 0;
-    bool served = false;  // stop sign: stood there long enough and the way was clear
+    bool served = false;    // stop sign: stood there long enough and the way was clear
+    bool occupied = false;  // crosswalk: pedestrians walking in or at it, at the last scan
   };
 
   double choose_acceleration(const WorldSnapshot& world, std::uint32_t self, double dt);
   double bend_acceleration() const;
-  void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops) const;
+  void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
+  std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k) const;
+  PolylineProjection nearest_ahead(MapPoint point, std::size_t first, double until,
+                                   double reach) const;
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
   bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
@@ -101,6 +105,11 @@ class LaneFollower {
   std::vector<double> envelope_;  // at each vertex: the most speed from which the bends ahead
                                   // can be taken at comfortable deceleration
   std::vector<Feature> features_;
+  std::size_t next_feature_ = 0;  // the first not yet passed
+  std::vector<Stop> stops_;       // this step's, kept to reuse its memory
+  double next_scan_ = 0;          // s: when every actor is looked at again
+  bool scanning_ = false;         // this step is a scan
+  std::int64_t leader_ = -1;      // the actor followed between scans, or -1
   ActorClass body_;
   double desired_speed_ = 0;
   bool leaves_at_end_ = false;
