@@ -16,6 +16,8 @@ namespace {
 
 constexpr double kMinimumDesiredSpeed = 0.1;  // m/s, keeps IDM's free-road term finite
 constexpr double kTargetClearance = 0.5;      // m the centre stops short of the target
+constexpr double kRoadEndClearance = 1.0;     // m the front stops short of a road's end
+constexpr double kRoadEndNotice = 30;         // m beyond twice the stopping distance
 constexpr double kStoppedSpeed = 0.2;         // m/s: standing, for a stop sign
 constexpr double kPredictionTime = 3.0;       // s a pedestrian's or cut-in's motion is projected
 constexpr double kCorridorMargin = 0.4;       // m beside the ego's body that must stay clear
@@ -294,6 +296,16 @@ void ReferenceDriver::collect_feature_constraints(const DriverInput& input, doub
   if (route_ends_at_target_)
     constraints_.push_back(
         {route_.length() - route_.progress(), kTargetClearance, 0, false, DriverReason::target});
+  else if (!route_.empty())
+    add_road_end(input.ego.speed);
+}
+
+// The end of the lanes ahead (a map's edge, without a target): stop before it. Only once it is
+// near: IDM brakes a little for a standing obstacle however far, and cruising would feel it.
+void ReferenceDriver::add_road_end(double speed) {
+  const double gap = route_.length() - route_.progress() - vehicle_.length / 2;
+  const double near = 2 * speed * speed / (2 * settings_.comfortable_deceleration) + kRoadEndNotice;
+  if (gap <= near) constraints_.push_back({gap, kRoadEndClearance, 0, false, DriverReason::target});
 }
 
 void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, double front_s) {

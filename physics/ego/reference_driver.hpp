@@ -90,6 +90,7 @@ class ReferenceDriver {
   void collect_object_constraints(const DriverInput& input, double front_s);
   void collect_feature_constraints(const DriverInput& input, double front_s);
   void collect_lane_change_constraints(const DriverInput& input, double front_s);
+  void add_road_end(double speed);
   double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
 
   const RoadMap& map_;

@@ -645,5 +645,15 @@ TEST(ManoeuvreTest, ACarComesToRestBeforeTheEndOfARoadThatLeadsNowhere) {
   for (double a : runner.acceleration) EXPECT_GE(a, -car.comfortable_deceleration - 0.5);
 }
 
+TEST(ManoeuvreTest, AnEgoWithoutATargetStopsBeforeTheRoadEnds) {
+  // WMG egos have no target: the lanes ahead end with the map, 120 m on (the road is 500 m).
+  ManoeuvreRun run = run_manoeuvres(three_lane_road(380, 15, 20));
+  ASSERT_TRUE(run.trace) << run.messages;
+  const TraceActor& ego = run.trace->actors[kEgo];
+  EXPECT_LT(ego.speed.back(), 0.01);
+  for (double x : ego.x) ASSERT_LE(x + ego.length / 2, 500.0) << "it drove off the road";
+  EXPECT_GT(ego.x.back() + ego.length / 2, 490.0) << "and stops near the end, not far before";
+}
+
 }  // namespace
 }  // namespace scenfuzz
