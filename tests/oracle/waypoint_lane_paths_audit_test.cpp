@@ -27,8 +27,7 @@ struct AuditedRun {
 };
 
 // A corpus seed simulated at `point` of its search space (every coordinate in [0, 1]).
-AuditedRun run_corpus_seed(const std::string& name, double point) {
-  const fs::path path = fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "avunit" / name;
+AuditedRun run_seed(const fs::path& path, double point) {
   const std::optional<SourceFile> file = read_source_file(path.string());
   if (!file) throw std::runtime_error("cannot read " + path.string());
   const avunit::ParseResult parsed = avunit::parse(*file);
@@ -43,6 +42,10 @@ AuditedRun run_corpus_seed(const std::string& name, double point) {
   Trace trace = simulate(map, *setup, {});
   TraceAudit audit = audit_trace(trace, map);
   return {std::move(map), std::move(trace), std::move(audit)};
+}
+
+AuditedRun run_corpus_seed(const std::string& name, double point) {
+  return run_seed(fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "avunit" / name, point);
 }
 
 ActorId actor_named(const Trace& trace, const std::string& name) {
@@ -64,7 +67,9 @@ TEST(WaypointLanePathsAuditTest, RoundaboutNpcsDriveRoundTheRingNotAcrossTheIsla
   // two thirds round (ring_0 -> 110 -> 10, over the ring's seam) and leaves north.
   for (double point : {0.0, 0.2, 0.5, 0.8, 1.0}) {
     SCOPED_TRACE("point " + std::to_string(point));
-    const AuditedRun run = run_corpus_seed("roundabout_entry.avu", point);
+    const AuditedRun run = run_seed(
+        fs::path(SCENFUZZ_SOURCE_DIR) / "tests" / "oracle" / "data" / "roundabout_waypoints.avu",
+        point);
     const auto ring = run.map.find_lane("ring_0");
     ASSERT_TRUE(ring);
     for (const std::string name : {"npc1", "npc2"}) {
