@@ -101,6 +101,11 @@ Polyline round_corners(const Polyline& path, double min_radius) {
   return rounded;
 }
 
+double planning_radius(const ActorClass& body) {
+  constexpr double kLockMargin = 1.05;
+  return kLockMargin * body.min_turning_radius();
+}
+
 KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
                              double speed, double acceleration) {
   s = std::clamp(s, 0.0, path.length());

@@ -40,6 +40,10 @@ double vertex_curvature(const Polyline& path, std::span<const double> headings, 
 // straight stretches and gentle bends stay exactly where they were.
 Polyline round_corners(const Polyline& path, double min_radius);
 
+// The tightest turn the paths an NPC is given take: a little wider than full lock, which no
+// driver holds and which a trace sampled while braking would read as tighter than it is.
+double planning_radius(const ActorClass& body);
+
 // The state at arc length s (clamped to the path), moving at `speed` with `acceleration`; its
 // yaw rate is speed x curvature.
 KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,

@@ -186,13 +186,6 @@ ActorClass body_of(Context& context, const Actor& actor, ActorCategory fallback)
   return body;
 }
 
-// The tightest turn planned paths take: a little wider than full lock, which no driver holds and
-// which a trace sampled while braking would read as tighter than it is.
-double planning_radius(const ActorClass& body) {
-  constexpr double kLockMargin = 1.05;
-  return kLockMargin * body.min_turning_radius();
-}
-
 std::uint64_t actor_seed(std::uint64_t seed, std::size_t actor) {
   // SplitMix64 of (seed, actor): neighbouring actors get unrelated streams.
   std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (actor + 1);
@@ -227,8 +220,7 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
   }
   if (route->segments.empty() || route->length < 0.5) return Trajectory::standing(start);
   double lateral = start_lane->lateral;
-  Polyline path =
-      round_corners(route_path(context.map, *route, lateral), planning_radius(body));
+  Polyline path = round_corners(route_path(context.map, *route, lateral), planning_radius(body));
   drive = LaneDrive{*route, path, speed, initial_speed};
   // A calm driver's bends, at the class's comfortable lateral acceleration: slowing for them is
   // what the scenario's speed means on a road that bends, so it is no shortfall to warn about.

@@ -229,7 +229,8 @@ std::optional<FlowPlan> prepare_flow(const TrafficFlow& flow, std::span<const do
                                            " m long; it sends no vehicles");
     return std::nullopt;
   }
-  return FlowPlan{flow.name, flow.location, *route, route_path(map, *route), *rate, *speed, seed};
+  Polyline path = round_corners(route_path(map, *route), planning_radius(flow_vehicle_body()));
+  return FlowPlan{flow.name, flow.location, *route, std::move(path), *rate, *speed, seed};
 }
 
 }  // namespace

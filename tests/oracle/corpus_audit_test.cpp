@@ -1,4 +1,4 @@
-// Every corpus seed, simulated at several points of its search space, passes the trace audit's
+// Every corpus seed and benchmark scenario, simulated at several points of its search space, passes the trace audit's
 // limits: no actor beats its class's speed, acceleration, grip or steering lock, and every
 // recorded yaw rate is its heading's derivative. Off-road driving and NPC overlaps are counted and
 // printed but not asserted here: the tests of the reactive NPCs and the lane-true paths hold those.
@@ -34,7 +34,7 @@ constexpr AuditKind kLimits[] = {AuditKind::speed_limit, AuditKind::lateral_acce
 
 std::vector<fs::path> corpus_seeds() {
   std::vector<fs::path> files;
-  for (const char* folder : {"avunit", "wmg"})
+  for (const char* folder : {"avunit", "wmg", "benchmarks"})
     for (const auto& entry :
          fs::directory_iterator(fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / folder))
       if (entry.path().extension() == ".avu" || entry.path().extension() == ".sdl")
