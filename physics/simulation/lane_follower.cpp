@@ -91,6 +91,7 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   SCENFUZZ_DEMAND(path_.segment_count() > 0);
   headings_ = segment_headings(path_);
   boxes_ = PolylineBoxes(path_);
+  frames_ = SegmentFrames(path_);
   double lateral = body_.comfortable_lateral_acceleration > 0
                        ? body_.comfortable_lateral_acceleration
                        : body_.max_deceleration;
@@ -272,7 +273,7 @@ PolylineProjection LaneFollower::nearest_ahead(MapPoint point, std::size_t first
       ++seg;
       continue;
     }
-    PolylineProjection p = path_.project_to_segment(point, seg);
+    PolylineProjection p = frames_.project(path_, point, seg);
     if (p.distance < nearest.distance) nearest = p;
     ++seg;
   }

@@ -15,6 +15,7 @@
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/polyline_boxes.hpp"
+#include "physics/map/segment_frames.hpp"
 #include "physics/simulation/world_snapshot.hpp"
 
 namespace scenfuzz {
@@ -104,6 +105,7 @@ class LaneFollower {
   Polyline path_;
   std::vector<double> headings_;  // of each path segment
   PolylineBoxes boxes_;           // of runs of path segments, for nearest_ahead
+  SegmentFrames frames_;          // of path segments, for nearest_ahead's projections
   std::vector<double> envelope_;  // at each vertex: the most speed from which the bends ahead
                                   // can be taken at comfortable deceleration
   std::vector<Feature> features_;

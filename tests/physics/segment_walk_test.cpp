@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "physics/map/polyline_boxes.hpp"
+#include "physics/map/segment_frames.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -97,6 +98,26 @@ TEST(PolylineBoxes, OnlySegmentsStartingByUntilCount) {
   EXPECT_FALSE(boxes.all_beyond(path, {18.5, 0.1}, 0, 16, 0.5));
   // Nor are the boxes wholly before `first`.
   EXPECT_TRUE(boxes.all_beyond(path, {2, 0}, 16, 30, 0.5));
+}
+
+TEST(SegmentFrames, ProjectionIsPolylinesBitForBit) {
+  std::mt19937_64 random(17);
+  Polyline path = wiggly_path(random, 120);
+  SegmentFrames frames(path);
+  std::uniform_int_distribution<std::size_t> vertex(0, path.points().size() - 1);
+  std::uniform_real_distribution<double> offset(-15, 15);
+  for (int i = 0; i < 2000; ++i) {
+    const MapPoint& near_vertex = path.points()[vertex(random)];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    std::size_t segment = static_cast<std::size_t>(i) % path.segment_count();
+    PolylineProjection expected = path.project_to_segment(point, segment);
+    PolylineProjection got = frames.project(path, point, segment);
+    // Bit for bit: EXPECT_EQ on doubles compares exactly.
+    EXPECT_EQ(got.s, expected.s);
+    EXPECT_EQ(got.lateral, expected.lateral);
+    EXPECT_EQ(got.distance, expected.distance);
+    EXPECT_EQ(got.segment, expected.segment);
+  }
 }
 
 }  // namespace
