@@ -90,12 +90,12 @@ double ReferenceDriver::steering(const KinematicState& ego) const {
     // Overtaking moves the aim sideways, as the plan has it at the target point.
     target = route_.path().point_at(target_s);
     double offset = planned_lateral(overtake_, target_s);
-    double heading = route_.path().heading_at(target_s);
+    double heading = route_.heading_at(target_s);
     target = {target.x - offset * std::sin(heading), target.y + offset * std::cos(heading)};
   } else {
     // Beyond the end, keep aiming along the path's last direction.
     MapPoint end = route_.path().point_at(route_.length());
-    double heading = route_.path().heading_at(route_.length());
+    double heading = route_.heading_at(route_.length());
     double beyond = target_s - route_.length();
     target = {end.x + beyond * std::cos(heading), end.y + beyond * std::sin(heading)};
   }
@@ -114,15 +114,16 @@ std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) 
   const KinematicState& ego = input.ego;
   double horizon = std::max(60.0, ego.speed * 6 + 30);
   double half_width = vehicle_.width / 2 + kCorridorMargin;
+  const PathWindow stretch = route_.window(30, horizon);  // the same for every object
   for (const WorldObject& object : input.objects) {
     bool pedestrian = object.kind == TraceActorKind::pedestrian;
     if (pedestrian && !(patience_over_ && motion_.speed(object.id) < settings_.standing_speed))
       continue;
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
-    auto at = route_.locate({object.x, object.y}, 30, horizon, horizon);
+    auto at = route_.locate({object.x, object.y}, stretch, horizon);
     if (!at || at->beyond_end) continue;
-    double relative = angle_difference(object.heading, route_.path().heading_at(at->s));
+    double relative = angle_difference(object.heading, route_.heading_at(at->s));
     if (std::abs(at->lateral) - extent_across(object, relative) - half_width > 0) continue;
     double along = extent_along(object, relative);
     double velocity = object.reversing ? -object.speed : object.speed;
@@ -183,13 +184,14 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
   const KinematicState& ego = input.ego;
   double horizon = std::max(60.0, ego.speed * 6 + 30);
   double half_width = vehicle_.width / 2 + kCorridorMargin;
+  const PathWindow stretch = route_.window(0, horizon);  // the same for every object
   for (const WorldObject& object : input.objects) {
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
-    auto at = route_.locate({object.x, object.y}, 0, horizon, horizon);
+    auto at = route_.locate({object.x, object.y}, stretch, horizon);
     // Beside or behind the ego's centre, or past the end of the route (where the ego stops).
     if (!at || at->beyond_end || at->s <= route_.progress()) continue;
-    double path_heading = route_.path().heading_at(at->s);
+    double path_heading = route_.heading_at(at->s);
     double relative = angle_difference(object.heading, path_heading);
     // Sideways from where the ego will be there (off the path while it overtakes).
     double lateral = at->lateral - planned_lateral(overtake_, at->s);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/actors/path_pose.hpp"
 #include "physics/actors/trajectory.hpp"
 
 namespace scenfuzz {
@@ -50,6 +51,8 @@ RouteTracker::RouteTracker(const RoadMap& map, const LaneRoute& route,
   std::sort(features_.begin(), features_.end(),
             [](const RouteFeature& a, const RouteFeature& b) { return a.s < b.s; });
 
+  headings_ = segment_headings(path_);
+  frames_ = SegmentFrames(path_);
   const auto& points = path_.points();
   const auto& arc = path_.arc_lengths();
   curvature_.assign(points.size(), 0.0);
@@ -96,6 +99,11 @@ std::optional<RouteLanePosition> RouteTracker::lane_at(double s) const {
                            begin + segment.s_end - segment.s_begin};
 }
 
+double RouteTracker::heading_at(double s) const {
+  // Polyline::heading_at's segment, and the same atan2 of it (segment_headings).
+  return headings_[path_.segment_at(std::clamp(s, 0.0, length()))];
+}
+
 double RouteTracker::curvature_at(double s) const {
   if (curvature_.empty()) return 0;
   std::size_t segment = path_.segment_at(s);
@@ -105,8 +113,19 @@ double RouteTracker::curvature_at(double s) const {
 std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, double behind, double ahead,
                                                    double max_lateral) const {
   if (empty()) return std::nullopt;
-  std::size_t first = path_.segment_at(std::max(0.0, progress_ - behind));
-  std::size_t last = path_.segment_at(std::min(length(), progress_ + ahead));
+  return locate(point, window(behind, ahead), max_lateral);
+}
+
+PathWindow RouteTracker::window(double behind, double ahead) const {
+  if (empty()) return {};
+  return {path_.segment_at(std::max(0.0, progress_ - behind)),
+          path_.segment_at(std::min(length(), progress_ + ahead))};
+}
+
+std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, PathWindow window,
+                                                   double max_lateral) const {
+  if (empty()) return std::nullopt;
+  const std::size_t first = window.first, last = window.last;
   // Coarse to fine: the nearest of every few vertices, then the segments around it. The path is
   // sampled every metre or so, far finer than it bends.
   const auto& points = path_.points();
@@ -125,7 +144,7 @@ std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, double behind
   std::size_t to = std::min(last, nearest_vertex + kCoarseStride);
   std::optional<PolylineProjection> best;
   for (std::size_t segment = from; segment <= to; ++segment) {
-    PolylineProjection projection = path_.project_to_segment(point, segment);
+    PolylineProjection projection = frames_.project(path_, point, segment);
     if (!best || projection.distance < best->distance) best = projection;
   }
   if (!best || best->distance > max_lateral) return std::nullopt;

@@ -14,6 +14,7 @@
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/road_map.hpp"
+#include "physics/map/segment_frames.hpp"
 
 namespace scenfuzz {
 
@@ -33,6 +34,11 @@ struct RouteLanePosition {
 };
 
 // Where a point lies along the path: arc length and signed lateral offset (left positive).
+// The stretch of path segments locate() searches, found once for the many objects of a step.
+struct PathWindow {
+  std::size_t first = 0, last = 0;  // segments
+};
+
 struct PathCoordinate {
   double s = 0;
   double lateral = 0;
@@ -61,6 +67,8 @@ class RouteTracker {
   // The route lane at path arc length s (nullopt for an empty route). Inside a lane change
   // stretch the path lies between two lanes; this is the lane the route is on at s.
   std::optional<RouteLanePosition> lane_at(double s) const;
+  // path().heading_at(s), from headings computed once (the driver asks for several a step).
+  double heading_at(double s) const;
   // The path's curvature (1/m, unsigned) around arc length s.
   double curvature_at(double s) const;
 
@@ -68,6 +76,9 @@ class RouteTracker {
   // when it is nearer to no point of that stretch than `max_lateral`.
   std::optional<PathCoordinate> locate(MapPoint point, double behind, double ahead,
                                        double max_lateral) const;
+  // The same in two parts: the stretch (valid until the progress moves), then a point in it.
+  PathWindow window(double behind, double ahead) const;
+  std::optional<PathCoordinate> locate(MapPoint point, PathWindow window, double max_lateral) const;
 
  private:
   Polyline path_;
@@ -76,6 +87,8 @@ class RouteTracker {
   std::vector<double> limit_s_, limit_speed_;  // speed limit from each s on (one per segment)
   std::vector<RouteSegment> segments_;         // the route's, in the order of limit_s_
   std::vector<double> curvature_;              // per path vertex
+  std::vector<double> headings_;               // per path segment
+  SegmentFrames frames_;                       // of path segments, for locate's projections
   std::size_t segment_ = 0;
   double progress_ = 0;
 };

@@ -11,6 +11,7 @@
 #include "lang/demand.hpp"
 #include "physics/actors/path_pose.hpp"
 #include "physics/map/polygon.hpp"
+#include "physics/map/segment_walk.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -23,6 +24,9 @@ constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower tha
 constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term finite
 constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
 constexpr double kScanInterval = 0.2;        // s between looks at every actor (see find_leader)
+// m: far above the rounding of a distance between map points (about 1e-12 m), far below anything
+// that matters; a segment surely farther than the nearest found by more is not projected.
+constexpr double kRoundingMargin = 1e-6;
 
 double fourth_power(double x) {
   double squared = x * x;
@@ -86,6 +90,8 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
       settings_(settings) {
   SCENFUZZ_DEMAND(path_.segment_count() > 0);
   headings_ = segment_headings(path_);
+  boxes_ = PolylineBoxes(path_);
+  frames_ = SegmentFrames(path_);
   double lateral = body_.comfortable_lateral_acceleration > 0
                        ? body_.comfortable_lateral_acceleration
                        : body_.max_deceleration;
@@ -100,6 +106,7 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   double speed = std::min({initial_speed, body_.max_speed, envelope_.front()});
   state_ = state_on_path(path_, headings_, 0, speed, 0);
   state_.yaw_rate = 0;
+  facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 void LaneFollower::start_at(double progress) {
@@ -107,9 +114,11 @@ void LaneFollower::start_at(double progress) {
   s_ = progress;
   // No faster than the bends ahead can be taken from: a car placed in a bend drives it as one
   // that came to it would.
-  const double limit = envelope_[std::min(path_.segment_at(s_) + 1, envelope_.size() - 1)];
+  segment_ = path_.segment_at(s_);
+  const double limit = envelope_[std::min(segment_ + 1, envelope_.size() - 1)];
   state_ = state_on_path(path_, headings_, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
+  facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
@@ -148,7 +157,7 @@ double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32
 }
 
 double LaneFollower::bend_acceleration() const {
-  std::size_t next = std::min(path_.segment_at(s_) + 1, envelope_.size() - 1);
+  std::size_t next = std::min(segment_ + 1, envelope_.size() - 1);
   double limit = envelope_[next];
   double v = state_.speed;
   if (!(v > limit)) return kInfinity;
@@ -205,7 +214,7 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   if (dx * dx + dy * dy > reach_k * reach_k) return std::nullopt;
   // Behind this actor's front it is in nobody's way ahead (paths do not turn back within the
   // lookahead), wherever it moves in the next seconds.
-  const double ahead = dx * std::cos(state_.heading) + dy * std::sin(state_.heading);
+  const double ahead = dx * facing_.x + dy * facing_.y;
   const double tau = other.speed > 0.1 ? settings_.prediction_time : 0;
   if (ahead < -(world.lengths[k] + other.speed * tau)) return std::nullopt;
   const double velocity = longitudinal_velocity(other);
@@ -215,7 +224,7 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   const double half_width = body_.width / 2;
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
-  const std::size_t first = path_.segment_at(s_);
+  const std::size_t first = segment_;
   std::optional<Stop> best;
   for (int which = 0; which < (tau > 0 ? 2 : 1); ++which) {
     PolylineProjection nearest = nearest_ahead(points[which], first, s_ + lookahead, reach);
@@ -247,14 +256,24 @@ PolylineProjection LaneFollower::nearest_ahead(MapPoint point, std::size_t first
                                                double reach) const {
   PolylineProjection nearest;
   nearest.distance = kInfinity;
+  // Most actors a scan looks at are nowhere near the path ahead: a few box tests tell, where the
+  // scan below would take a square root and a jump for every few metres of path.
+  if (boxes_.all_beyond(path_, point, first, until, reach)) return nearest;
   const auto& arc = path_.arc_lengths();
   for (std::size_t seg = first; seg < path_.segment_count() && arc[seg] <= until;) {
-    const double beyond = arc[seg] + distance(point, path_.points()[seg]) - reach;
+    const double to_vertex = distance(point, path_.points()[seg]);
+    const double beyond = arc[seg] + to_vertex - reach;
     if (arc[seg + 1] < beyond) {  // this segment, and all up to `beyond`, are out of reach
-      while (seg < path_.segment_count() && arc[seg + 1] < beyond) ++seg;
+      seg = first_segment_reaching(path_, seg, beyond);
       continue;
     }
-    PolylineProjection p = path_.project_to_segment(point, seg);
+    // No point of the segment is nearer than its start's distance less its length: farther than
+    // the nearest found, its projection could not replace it (ties keep the first found).
+    if (to_vertex - (arc[seg + 1] - arc[seg]) > nearest.distance + kRoundingMargin) {
+      ++seg;
+      continue;
+    }
+    PolylineProjection p = frames_.project(path_, point, seg);
     if (p.distance < nearest.distance) nearest = p;
     ++seg;
   }
@@ -393,8 +412,11 @@ void LaneFollower::advance(double acceleration, double dt) {
     if (leaves_at_end_) finished_ = true;
     if (!leaves_at_end_) next = 0;
   }
+  segment_ = segment_at_from(path_, s_, segment_);
   state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt);
   state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
+  // On a straight segment the heading stays the same, and so do its cosine and sine.
+  if (state_.heading != heading) facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
   // At a standstill the brakes hold without effort: no braking is carried into setting off.
   applied_ = next == 0 && acceleration < 0 ? 0 : acceleration;
 }

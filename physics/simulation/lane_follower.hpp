@@ -14,6 +14,8 @@
 #include "physics/actors/actor_class.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
+#include "physics/map/polyline_boxes.hpp"
+#include "physics/map/segment_frames.hpp"
 #include "physics/simulation/world_snapshot.hpp"
 
 namespace scenfuzz {
@@ -102,6 +104,8 @@ class LaneFollower {
   LaneRoute route_;
   Polyline path_;
   std::vector<double> headings_;  // of each path segment
+  PolylineBoxes boxes_;           // of runs of path segments, for nearest_ahead
+  SegmentFrames frames_;          // of path segments, for nearest_ahead's projections
   std::vector<double> envelope_;  // at each vertex: the most speed from which the bends ahead
                                   // can be taken at comfortable deceleration
   std::vector<Feature> features_;
@@ -117,7 +121,9 @@ class LaneFollower {
 
   KinematicState state_;
   double s_ = 0;
-  double applied_ = 0;  // m/s^2 asked of the vehicle at the last step, for the jerk limit
+  std::size_t segment_ = 0;  // path_.segment_at(s_), kept as s_ moves on (segment_walk.hpp)
+  MapPoint facing_{1, 0};    // cos and sin of state_.heading, for the scans
+  double applied_ = 0;       // m/s^2 asked of the vehicle at the last step, for the jerk limit
   bool finished_ = false;
   FollowerReason reason_ = FollowerReason::cruise;
   double stopped_since_ = -1;  // s: when it came to stand at the stop sign it waits at

@@ -1,0 +1,50 @@
+// Each segment's unit direction, computed once for a polyline projected onto many times (a lane
+// follower's path, every actor at every scan): Polyline::project_to_segment divides by the
+// segment's length twice per call. The projection below is its arithmetic step for step, with
+// the two quotients taken from the table, so its results are the same bit for bit.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "physics/map/polyline.hpp"
+
+namespace scenfuzz {
+
+class SegmentFrames {
+ public:
+  SegmentFrames() = default;
+  explicit SegmentFrames(const Polyline& path) {
+    const auto& points = path.points();
+    const auto& arc = path.arc_lengths();
+    for (std::size_t segment = 0; segment < path.segment_count(); ++segment) {
+      const double length = arc[segment + 1] - arc[segment];
+      directions_.push_back({(points[segment + 1].x - points[segment].x) / length,
+                             (points[segment + 1].y - points[segment].y) / length});
+    }
+  }
+
+  // Polyline::project_to_segment(point, segment) of the polyline these frames were made from.
+  PolylineProjection project(const Polyline& path, MapPoint point, std::size_t segment) const {
+    const MapPoint& a = path.points()[segment];
+    const double segment_length = path.arc_lengths()[segment + 1] - path.arc_lengths()[segment];
+    const double ux = directions_[segment].x, uy = directions_[segment].y;
+    const double px = point.x - a.x;
+    const double py = point.y - a.y;
+    const double along = std::clamp(px * ux + py * uy, 0.0, segment_length);
+    PolylineProjection projection;
+    projection.s = path.arc_lengths()[segment] + along;
+    projection.lateral = ux * py - uy * px;
+    const double off_x = px - along * ux, off_y = py - along * uy;
+    projection.distance = std::sqrt(off_x * off_x + off_y * off_y);
+    projection.segment = segment;
+    return projection;
+  }
+
+ private:
+  std::vector<MapPoint> directions_;  // unit vector along each segment
+};
+
+}  // namespace scenfuzz

@@ -1,0 +1,124 @@
+// The look-ups the simulation uses in place of Polyline::segment_at and full projections must
+// give exactly their answers: segment walks from a hint, galloping jumps, and box rejections.
+#include "physics/map/segment_walk.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "physics/map/polyline_boxes.hpp"
+#include "physics/map/segment_frames.hpp"
+
+namespace scenfuzz {
+namespace {
+
+// A wiggly path of uneven segments (0.2 m to 3 m) at UTM-like coordinates.
+Polyline wiggly_path(std::mt19937_64& random, std::size_t points) {
+  std::uniform_real_distribution<double> step(0.2, 3.0), turn(-0.4, 0.4);
+  std::vector<MapPoint> vertices{{552000.5, 4182000.25}};
+  double heading = 0.3;
+  for (std::size_t i = 1; i < points; ++i) {
+    heading += turn(random);
+    double length = step(random);
+    vertices.push_back({vertices.back().x + length * std::cos(heading),
+                        vertices.back().y + length * std::sin(heading)});
+  }
+  return Polyline(vertices);
+}
+
+TEST(SegmentWalk, SegmentAtFromAnyHintIsSegmentAt) {
+  std::mt19937_64 random(7);
+  Polyline path = wiggly_path(random, 200);
+  std::uniform_real_distribution<double> along(-5, path.length() + 5);
+  std::uniform_int_distribution<std::size_t> hint(0, path.segment_count() + 3);
+  std::vector<double> probes = {0, path.length(), -1, path.length() + 1,
+                                std::numeric_limits<double>::quiet_NaN()};
+  for (double s : path.arc_lengths()) probes.push_back(s);  // exactly at the vertices
+  for (int i = 0; i < 2000; ++i) probes.push_back(along(random));
+  for (double s : probes)
+    for (int j = 0; j < 5; ++j) {
+      std::size_t from = hint(random);
+      EXPECT_EQ(segment_at_from(path, s, from), path.segment_at(s))
+          << "s " << s << " hint " << from;
+    }
+}
+
+TEST(SegmentWalk, FirstSegmentReachingIsTheLinearScan) {
+  std::mt19937_64 random(11);
+  Polyline path = wiggly_path(random, 300);
+  const auto& arc = path.arc_lengths();
+  std::uniform_real_distribution<double> target(-5, path.length() + 20);
+  for (std::size_t start = 0; start < path.segment_count(); start += 7)
+    for (int i = 0; i < 50; ++i) {
+      double s = i == 0 ? arc[start + 1] : target(random);
+      std::size_t expected = start;
+      while (expected < path.segment_count() && arc[expected + 1] < s) ++expected;
+      EXPECT_EQ(first_segment_reaching(path, start, s), expected) << start << " " << s;
+    }
+}
+
+TEST(PolylineBoxes, AllBeyondOnlyWhenEveryProjectionIsBeyond) {
+  std::mt19937_64 random(13);
+  Polyline path = wiggly_path(random, 150);
+  PolylineBoxes boxes(path);
+  std::uniform_int_distribution<std::size_t> vertex(0, path.points().size() - 1);
+  std::uniform_real_distribution<double> offset(-12, 12), reach(0.5, 8);
+  int rejected = 0, kept = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const MapPoint& near_vertex = path.points()[vertex(random)];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    std::size_t first = static_cast<std::size_t>(i) % path.segment_count();
+    double until = path.arc_lengths()[first] + 40;
+    double r = reach(random);
+    bool near = false;
+    for (std::size_t seg = first; seg < path.segment_count() && path.arc_lengths()[seg] <= until;
+         ++seg)
+      near = near || path.project_to_segment(point, seg).distance <= r;
+    bool beyond = boxes.all_beyond(path, point, first, until, r);
+    EXPECT_FALSE(beyond && near) << "point " << i;
+    (beyond ? rejected : kept)++;
+  }
+  // The test means something only if both answers occur often.
+  EXPECT_GT(rejected, 300);
+  EXPECT_GT(kept, 100);
+}
+
+TEST(PolylineBoxes, OnlySegmentsStartingByUntilCount) {
+  std::vector<MapPoint> straight;
+  for (int i = 0; i <= 20; ++i) straight.push_back({static_cast<double>(i), 0});
+  Polyline path(straight);
+  PolylineBoxes boxes(path);
+  EXPECT_FALSE(boxes.all_beyond(path, {18.5, 0.1}, 0, 30, 0.5));
+  EXPECT_TRUE(boxes.all_beyond(path, {18.5, 5}, 0, 30, 0.5));
+  // Segments starting beyond `until` are not looked at; a box's segments all are, or none.
+  EXPECT_TRUE(boxes.all_beyond(path, {18.5, 0.1}, 0, 7.5, 0.5));
+  EXPECT_FALSE(boxes.all_beyond(path, {18.5, 0.1}, 0, 16, 0.5));
+  // Nor are the boxes wholly before `first`.
+  EXPECT_TRUE(boxes.all_beyond(path, {2, 0}, 16, 30, 0.5));
+}
+
+TEST(SegmentFrames, ProjectionIsPolylinesBitForBit) {
+  std::mt19937_64 random(17);
+  Polyline path = wiggly_path(random, 120);
+  SegmentFrames frames(path);
+  std::uniform_int_distribution<std::size_t> vertex(0, path.points().size() - 1);
+  std::uniform_real_distribution<double> offset(-15, 15);
+  for (int i = 0; i < 2000; ++i) {
+    const MapPoint& near_vertex = path.points()[vertex(random)];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    std::size_t segment = static_cast<std::size_t>(i) % path.segment_count();
+    PolylineProjection expected = path.project_to_segment(point, segment);
+    PolylineProjection got = frames.project(path, point, segment);
+    // Bit for bit: EXPECT_EQ on doubles compares exactly.
+    EXPECT_EQ(got.s, expected.s);
+    EXPECT_EQ(got.lateral, expected.lateral);
+    EXPECT_EQ(got.distance, expected.distance);
+    EXPECT_EQ(got.segment, expected.segment);
+  }
+}
+
+}  // namespace
+}  // namespace scenfuzz
