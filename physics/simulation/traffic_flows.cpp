@@ -26,6 +26,8 @@ constexpr double kStandstillGap = 2;  // m
 constexpr double kGapTime = 1;        // s
 // Beside each other within this much across, two bodies are in one another's way.
 constexpr double kSideMargin = 0.5;  // m
+// m/s^2 a faster actor behind a pre-filled car is given room to brake at to its speed.
+constexpr double kClosingDeceleration = 3;
 // Keeps the draws of flows and of actors (scenario_setup.cpp's actor_seed) apart.
 constexpr std::uint64_t kFlowStream = 0x666c6f77ull;
 
@@ -63,11 +65,13 @@ double safe_gap(const ActorClass& body, double speed) {
 struct Occupant {
   MapPose pose;
   double length = 0, width = 0;
+  double speed = 0;  // m/s at t = 0
 };
 
 // Whether `other` is in the way of a flow vehicle at `at`: bodies that (nearly) touch, or one in
 // line with it within its safe gap, ahead or behind.
-bool in_the_way(const MapPose& at, const ActorClass& body, double gap, const Occupant& other) {
+bool in_the_way(const MapPose& at, const ActorClass& body, double gap, double speed,
+                const Occupant& other) {
   const double dx = other.pose.position.x - at.position.x;
   const double dy = other.pose.position.y - at.position.y;
   const double reach =
@@ -76,7 +80,14 @@ bool in_the_way(const MapPose& at, const ActorClass& body, double gap, const Occ
   if (std::hypot(dx, dy) < reach) return true;
   const double along = dx * std::cos(at.heading) + dy * std::sin(at.heading);
   const double across = -dx * std::sin(at.heading) + dy * std::cos(at.heading);
-  const double centres = gap - body.length / 2 + other.length / 2;
+  double centres = gap - body.length / 2 + other.length / 2;
+  // One behind (the ego at 30 m/s behind a flow car at 10) needs room to slow down to it.
+  if (along < 0) {
+    const double closing = std::max(0.0, other.speed - speed);
+    centres = std::max(centres, (body.length + other.length) / 2 + kStandstillGap +
+                                    kGapTime * other.speed +
+                                    closing * closing / (2 * kClosingDeceleration));
+  }
   return std::abs(across) < (body.width + other.width) / 2 + kSideMargin &&
          std::abs(along) < centres;
 }
@@ -89,10 +100,12 @@ std::vector<Occupant> initial_occupants(const SimulationSetup& setup) {
   std::vector<Occupant> occupants;
   occupants.push_back({{{setup.ego_initial.x, setup.ego_initial.y}, setup.ego_initial.heading},
                        setup.ego_body.length,
-                       setup.ego_body.width});
+                       setup.ego_body.width,
+                       setup.ego_initial.speed});
   for (const ScriptedActor& actor : setup.actors) {
     const KinematicState start = actor.trajectory.state_at(0);
-    occupants.push_back({{{start.x, start.y}, start.heading}, actor.body.length, actor.body.width});
+    occupants.push_back(
+        {{{start.x, start.y}, start.heading}, actor.body.length, actor.body.width, start.speed});
   }
   for (const StaticObstacle& obstacle : setup.obstacles)
     occupants.push_back({obstacle.pose, obstacle.geometry.length, obstacle.geometry.width});
@@ -120,10 +133,10 @@ std::vector<FlowVehicle> draw_flow(const FlowPlan& flow, std::size_t index, doub
     if (s > last) break;
     const MapPose pose = pose_on(flow.path, s);
     const bool clear = std::none_of(occupants.begin(), occupants.end(), [&](const Occupant& o) {
-      return in_the_way(pose, body, gap, o);
+      return in_the_way(pose, body, gap, speed, o);
     });
     if (!clear) continue;
-    occupants.push_back({pose, body.length, body.width});
+    occupants.push_back({pose, body.length, body.width, speed});
     vehicles.push_back({index, name(), 0, s, true});
   }
   const double interval = 3600 / flow.rate;
@@ -290,8 +303,9 @@ std::optional<double> flow_entry_speed(const FlowPlan& flow, std::span<const Kin
   const double gap = safe_gap(body, speed);
   for (std::size_t k = 0; k < states.size(); ++k) {
     if (!present.empty() && present[k] == 0) continue;
-    const Occupant other{{{states[k].x, states[k].y}, states[k].heading}, lengths[k], widths[k]};
-    if (in_the_way(entry, body, gap, other)) return std::nullopt;
+    const Occupant other{
+        {{states[k].x, states[k].y}, states[k].heading}, lengths[k], widths[k], states[k].speed};
+    if (in_the_way(entry, body, gap, speed, other)) return std::nullopt;
   }
   return speed;
 }

@@ -115,6 +115,23 @@ TEST(TrafficFlowTest, FlowVehiclesAreCarsNamedAfterTheirFlowAndThePrefillIsPrese
   EXPECT_LE(prefilled, 20u);
 }
 
+TEST(TrafficFlowTest, NoCarIsPlacedAheadOfAFasterEgoInsideItsRoomToSlowDown) {
+  // The ego at 30 m/s in a lane whose flow runs at 8 m/s: a car pre-filled a few tens of metres
+  // ahead of it would be a collision at once, nobody's doing. Over many seeds none is hit.
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    auto run = test::simulate_text(
+        "slow = Flow(\"east_0\", 1800, 8);\n" +
+            straight_scenario("straight", "(\"east_0\"->60, , 30), (\"east_0\"->490)", "slow"),
+        lasting(6, seed));
+    ASSERT_TRUE(run.trace) << run.errors;
+    for (const Collision& collision : run.trace->collisions)
+      EXPECT_FALSE(collision.first == kEgo && collision.time < 3)
+          << "the ego hit " << run.trace->actors[collision.second].name << " at " << collision.time
+          << " s";
+  }
+}
+
 TEST(TrafficFlowTest, SameSeedGivesTheSameTraceAndAnotherSeedAnotherSchedule) {
   const std::string text = straight_scenario(
       "straight", kParkedEgo, "Flow(\"east_0\", 900, 12), Flow(\"east_1\", 600, 14)");
