@@ -1,0 +1,225 @@
+// Failure-mode signatures read from a trace and the map (see failure_mode.hpp for the rules).
+#include "oracle/failure_mode.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/actors/actor_class.hpp"
+#include "physics/map/polygon.hpp"
+
+namespace scenfuzz {
+namespace {
+
+std::size_t window_samples(const Trace& trace, double seconds) {
+  return static_cast<std::size_t>(std::lround(seconds / trace.dt));
+}
+
+std::optional<LaneIndex> lane_at(const TraceActor& actor, std::size_t i) {
+  if (actor.lane[i] < 0) return std::nullopt;
+  return static_cast<LaneIndex>(actor.lane[i]);
+}
+
+bool contains(const std::vector<LaneIndex>& lanes, LaneIndex lane) {
+  return std::find(lanes.begin(), lanes.end(), lane) != lanes.end();
+}
+
+bool forward_neighbours(const RoadMap& map, LaneIndex a, LaneIndex b) {
+  const Lane& lane = map.lane(a);
+  return contains(lane.left_forward_neighbours, b) || contains(lane.right_forward_neighbours, b);
+}
+
+bool stopped_between(const TraceActor& ego, std::size_t from, std::size_t to) {
+  for (std::size_t j = from; j < to; ++j)
+    if (ego.speed[j] < kEgoStoppedSpeed) return true;
+  return false;
+}
+
+bool changing_lane(const Trace& trace, const RoadMap& map, std::size_t i) {
+  const TraceActor& ego = trace.actors[kEgo];
+  const std::optional<LaneIndex> here = lane_at(ego, i);
+  if (!here) return false;
+  const std::size_t w = window_samples(trace, kLaneChangeWindow);
+  const std::size_t from = i > w ? i - w : 0;
+  const std::size_t to = std::min(trace.sample_count(), i + w + 1);
+  for (std::size_t j = from; j < to; ++j) {
+    const std::optional<LaneIndex> there = lane_at(ego, j);
+    if (there && *there != *here && forward_neighbours(map, *here, *there)) return true;
+  }
+  return false;
+}
+
+std::optional<EgoActivity> turning(const RoadMap& map, const TraceActor& ego, std::size_t i) {
+  const std::optional<LaneIndex> lane = lane_at(ego, i);
+  if (!lane || !map.lane(*lane).junction) return std::nullopt;
+  switch (map.lane(*lane).turn) {
+    case LaneTurn::left: return EgoActivity::turning_left;
+    case LaneTurn::right: return EgoActivity::turning_right;
+    case LaneTurn::u_turn: return EgoActivity::turning_around;
+    case LaneTurn::none: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+// Another present road user whose centre lies ahead of the ego within its lane's width (2 m
+// either side of the ego's heading line) and within max(10 m, 3 s at the ego's speed).
+bool following(const Trace& trace, std::size_t i) {
+  const TraceActor& ego = trace.actors[kEgo];
+  const double c = std::cos(ego.heading[i]), s = std::sin(ego.heading[i]);
+  const double reach = std::max(10.0, 3 * ego.speed[i]);
+  for (ActorId id = 1; id < trace.actors.size(); ++id) {
+    const TraceActor& other = trace.actors[id];
+    if (other.kind == TraceActorKind::obstacle || !present_at(other, i)) continue;
+    const double dx = other.x[i] - ego.x[i], dy = other.y[i] - ego.y[i];
+    const double along = dx * c + dy * s, across = -dx * s + dy * c;
+    if (along > 0 && along < reach && std::abs(across) < 2) return true;
+  }
+  return false;
+}
+
+// A ring: a lane whose centre line closes on itself (the built-in roundabout's ring).
+bool ring_lane(const Lane& lane) {
+  const auto& points = lane.centre_line.points();
+  if (points.size() < 3 || lane.length() < 20) return false;
+  return std::hypot(points.front().x - points.back().x, points.front().y - points.back().y) < 1;
+}
+
+bool on_roundabout(const RoadMap& map, LaneIndex index) {
+  const Lane& lane = map.lane(index);
+  if (ring_lane(lane)) return true;
+  for (LaneIndex next : lane.successors)
+    if (ring_lane(map.lane(next))) return true;
+  for (LaneIndex previous : lane.predecessors)
+    if (ring_lane(map.lane(previous))) return true;
+  return false;
+}
+
+// An acceleration lane: it ends (no successor) beside a lane that goes on past its end.
+bool ending_beside_another(const RoadMap& map, const Lane& lane) {
+  if (!lane.successors.empty() || lane.centre_line.points().empty()) return false;
+  const MapPoint end = lane.centre_line.points().back();
+  auto goes_on = [&](LaneIndex neighbour) {
+    const Lane& other = map.lane(neighbour);
+    return !other.successors.empty() ||
+           other.length() - other.centre_line.project(end).s > kMergeLookahead;
+  };
+  return std::any_of(lane.left_forward_neighbours.begin(), lane.left_forward_neighbours.end(),
+                     goes_on) ||
+         std::any_of(lane.right_forward_neighbours.begin(), lane.right_forward_neighbours.end(),
+                     goes_on);
+}
+
+// Two or more lanes outside junctions run into this one (a slip road joining, two becoming one).
+bool joined_by_two(const RoadMap& map, LaneIndex index) {
+  const Lane& lane = map.lane(index);
+  if (lane.junction) return false;
+  return std::count_if(lane.predecessors.begin(), lane.predecessors.end(),
+                       [&](LaneIndex p) { return !map.lane(p).junction; }) >= 2;
+}
+
+// Merging: on or beside an acceleration lane (within a lane width of its centre line), on a lane
+// two lanes run into, or within kMergeLookahead before one.
+bool merges(const RoadMap& map, LaneIndex index, double s, MapPoint p) {
+  const Lane& lane = map.lane(index);
+  std::vector<LaneIndex> here = {index};
+  here.insert(here.end(), lane.left_forward_neighbours.begin(), lane.left_forward_neighbours.end());
+  here.insert(here.end(), lane.right_forward_neighbours.begin(),
+              lane.right_forward_neighbours.end());
+  for (LaneIndex near : here) {
+    const Lane& candidate = map.lane(near);
+    if (ending_beside_another(map, candidate) && candidate.centre_line.project(p).distance < 4)
+      return true;
+  }
+  if (joined_by_two(map, index)) return true;
+  if (lane.length() - s > kMergeLookahead) return false;
+  return std::any_of(lane.successors.begin(), lane.successors.end(),
+                     [&](LaneIndex next) { return joined_by_two(map, next); });
+}
+
+}  // namespace
+
+std::string_view ego_activity_name(EgoActivity activity) {
+  switch (activity) {
+    case EgoActivity::reversing: return "reversing";
+    case EgoActivity::stopped: return "stopped";
+    case EgoActivity::pulling_out: return "pulling out";
+    case EgoActivity::changing_lane: return "changing lane";
+    case EgoActivity::turning_left: return "turning left";
+    case EgoActivity::turning_right: return "turning right";
+    case EgoActivity::turning_around: return "turning around";
+    case EgoActivity::following: return "following";
+    case EgoActivity::cruising: return "cruising";
+  }
+  return "cruising";
+}
+
+std::string_view road_feature_name(RoadFeature feature) {
+  switch (feature) {
+    case RoadFeature::roundabout: return "roundabout";
+    case RoadFeature::junction: return "junction";
+    case RoadFeature::crosswalk: return "crosswalk";
+    case RoadFeature::merge: return "merge";
+    case RoadFeature::straight: return "straight";
+  }
+  return "straight";
+}
+
+std::string failure_mode_key(const FailureMode& mode) {
+  std::string key = mode.atom;
+  key += " | " +
+         (mode.other_class.empty() ? std::string("-") : mode.other_class + " " + mode.other_role);
+  key += " | " + (mode.responsibility.empty() ? std::string("-") : mode.responsibility);
+  key += " | " + std::string(ego_activity_name(mode.ego_activity));
+  key += " | " + std::string(road_feature_name(mode.road_feature));
+  if (mode.ego_side && mode.other_side)
+    key += " | " + std::string(body_side_name(*mode.ego_side)) + "-" +
+           std::string(body_side_name(*mode.other_side));
+  return key;
+}
+
+std::string actor_role(const TraceActor& actor) {
+  const std::size_t dot = actor.name.rfind('.');
+  if (dot == std::string::npos || dot + 1 == actor.name.size()) return actor.name;
+  const bool numbered = std::all_of(actor.name.begin() + static_cast<std::ptrdiff_t>(dot) + 1,
+                                    actor.name.end(), [](char c) { return c >= '0' && c <= '9'; });
+  return numbered ? actor.name.substr(0, dot) : actor.name;
+}
+
+std::string actor_class_name(const TraceActor& actor) {
+  if (actor.kind == TraceActorKind::obstacle) return "obstacle";
+  return std::string(actor_class(actor.category).name);
+}
+
+EgoActivity ego_activity_at(const Trace& trace, const RoadMap& map, std::size_t i) {
+  const TraceActor& ego = trace.actors[kEgo];
+  if (reversing_at(ego.reversing, i)) return EgoActivity::reversing;
+  if (ego.speed[i] < kEgoStoppedSpeed) return EgoActivity::stopped;
+  const std::size_t w = window_samples(trace, kPullOutWindow);
+  if (stopped_between(ego, i > w ? i - w : 0, i)) return EgoActivity::pulling_out;
+  if (changing_lane(trace, map, i)) return EgoActivity::changing_lane;
+  if (const auto turn = turning(map, ego, i)) return *turn;
+  if (following(trace, i)) return EgoActivity::following;
+  return EgoActivity::cruising;
+}
+
+RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t i) {
+  const TraceActor& ego = trace.actors[kEgo];
+  const MapPoint p{ego.x[i], ego.y[i]};
+  const std::optional<LaneIndex> lane = lane_at(ego, i);
+  if (lane && on_roundabout(map, *lane)) return RoadFeature::roundabout;
+  for (const Crosswalk& crosswalk : map.crosswalks())
+    if (near_polygon(p, crosswalk.outline, kCrosswalkMargin)) return RoadFeature::crosswalk;
+  if (lane && map.lane(*lane).junction) return RoadFeature::junction;
+  for (const Junction& junction : map.junctions())
+    if (near_polygon(p, junction.outline, kJunctionMargin)) return RoadFeature::junction;
+  if (lane && merges(map, *lane, ego.s[i], p)) return RoadFeature::merge;
+  return RoadFeature::straight;
+}
+
+std::size_t sample_at_time(const Trace& trace, double time) {
+  if (trace.sample_count() == 0) return 0;
+  const double index = std::round(time / trace.dt);
+  if (!(index > 0)) return 0;
+  return std::min(trace.sample_count() - 1, static_cast<std::size_t>(index));
+}
+
+}  // namespace scenfuzz
