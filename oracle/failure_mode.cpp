@@ -215,6 +215,56 @@ RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t 
   return RoadFeature::straight;
 }
 
+namespace {
+
+const Collision* first_ego_collision(const Trace& trace) {
+  for (const Collision& collision : trace.collisions)
+    if (collision.first == kEgo || collision.second == kEgo) return &collision;
+  return nullptr;
+}
+
+std::optional<ActorId> nearest_road_user(const Trace& trace, std::size_t i) {
+  const TraceActor& ego = trace.actors[kEgo];
+  std::optional<ActorId> nearest;
+  double best = kNearbyActor;
+  for (ActorId id = 1; id < trace.actors.size(); ++id) {
+    const TraceActor& other = trace.actors[id];
+    if (other.kind == TraceActorKind::obstacle || !present_at(other, i)) continue;
+    const double d = std::hypot(other.x[i] - ego.x[i], other.y[i] - ego.y[i]);
+    if (d < best) best = d, nearest = id;
+  }
+  return nearest;
+}
+
+}  // namespace
+
+FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict) {
+  FailureMode mode;
+  if (verdict.name == kNoCollisionSpec)
+    mode.atom = "collision";
+  else
+    mode.atom = verdict.name + ": " + (verdict.atom_text.empty() ? "-" : verdict.atom_text);
+  if (trace.sample_count() == 0 || trace.actors.empty()) return mode;
+  std::size_t at = sample_at_time(trace, verdict.time);
+  std::optional<ActorId> other;
+  if (const Collision* collision = first_ego_collision(trace)) {
+    at = sample_at_time(trace, collision->time);
+    const bool ego_first = collision->first == kEgo;
+    other = ego_first ? collision->second : collision->first;
+    mode.ego_side = ego_first ? collision->first_side : collision->second_side;
+    mode.other_side = ego_first ? collision->second_side : collision->first_side;
+  } else {
+    other = nearest_road_user(trace, at);
+  }
+  if (other) {
+    mode.other_class = actor_class_name(trace.actors[*other]);
+    mode.other_role = actor_role(trace.actors[*other]);
+  }
+  mode.ego_activity = ego_activity_at(trace, map, at);
+  mode.road_feature = road_feature_at(trace, map, at);
+  return mode;
+}
+
 std::size_t sample_at_time(const Trace& trace, double time) {
   if (trace.sample_count() == 0) return 0;
   const double index = std::round(time / trace.dt);

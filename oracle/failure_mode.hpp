@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "oracle/judge.hpp"
 #include "physics/collision/body_side.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/trace/trace.hpp"
@@ -64,6 +65,13 @@ std::string actor_class_name(const TraceActor& actor);
 
 EgoActivity ego_activity_at(const Trace& trace, const RoadMap& map, std::size_t sample);
 RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t sample);
+
+// The failure mode of a violated verdict, responsibility left empty for the caller. The other
+// actor: the one the ego first collided with, if it collided, with the touching sides; else the
+// nearest road user (vehicle or pedestrian, centre to centre, within kNearbyActor) at the
+// verdict's time. The ego's activity and road feature: at the collision, else at that time.
+inline constexpr double kNearbyActor = 50;  // m
+FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict);
 
 // The sample nearest `time` (clamped to the trace).
 std::size_t sample_at_time(const Trace& trace, double time);

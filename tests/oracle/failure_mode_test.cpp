@@ -172,6 +172,45 @@ TEST(FailureModeTest, TheKeyTellsModesApartByEveryField) {
   EXPECT_EQ(failure_mode_key(spec), "dist(ego, npc1) > 2 | - | - | cruising | straight");
 }
 
+TEST(FailureModeTest, ACollisionNamesItsOtherActorAndSidesAtItsMoment) {
+  const RoadMap map = two_lane_straight();
+  Trace trace = empty_trace(50);
+  trace.actors.push_back(
+      still_actor(trace, "ego", TraceActorKind::ego, BodyShape::box, 4.5, 1.9, 0, -5.25));
+  drive_east(trace, trace.actors[kEgo], 0, 10, lane_named(map, "east_0"), -5.25);
+  trace.actors.push_back(
+      still_actor(trace, "flow2.4", TraceActorKind::vehicle, BodyShape::box, 4.5, 1.9, 44, -5.25));
+  trace.actors.push_back(
+      still_actor(trace, "ped", TraceActorKind::pedestrian, BodyShape::cylinder, 0.5, 0.5, 20, -8));
+  trace.collisions.push_back({4.0, kEgo, 1, {42, -5.25}, BodySide::front, BodySide::rear});
+  SpecVerdict verdict;
+  verdict.name = kNoCollisionSpec;
+  verdict.robustness = -0.3;
+  verdict.time = 1.0;  // nearest approach is not where the mode is read: the collision is
+  const FailureMode mode = describe_failure(trace, map, verdict);
+  EXPECT_EQ(failure_mode_key(mode),
+            "collision | car flow2 | - | following | straight | front-rear");
+}
+
+TEST(FailureModeTest, AViolationWithoutCollisionNamesTheNearestRoadUser) {
+  const RoadMap map = two_lane_straight();
+  Trace trace = empty_trace(50);
+  trace.actors.push_back(
+      still_actor(trace, "ego", TraceActorKind::ego, BodyShape::box, 4.5, 1.9, 0, -5.25));
+  drive_east(trace, trace.actors[kEgo], 0, 10, lane_named(map, "east_0"), -5.25);
+  trace.actors.push_back(
+      still_actor(trace, "far", TraceActorKind::vehicle, BodyShape::box, 4.5, 1.9, 400, -1.75));
+  trace.actors.push_back(
+      still_actor(trace, "ped", TraceActorKind::pedestrian, BodyShape::cylinder, 0.5, 0.5, 22, -8));
+  SpecVerdict verdict;
+  verdict.name = "keep_clear";
+  verdict.atom_text = "dist(ego, ped) > 5";
+  verdict.robustness = -1;
+  verdict.time = 2.0;  // the ego at x = 20
+  EXPECT_EQ(failure_mode_key(describe_failure(trace, map, verdict)),
+            "keep_clear: dist(ego, ped) > 5 | pedestrian ped | - | cruising | straight");
+}
+
 TEST(FailureModeTest, SampleAtTimeRoundsAndClamps) {
   const Trace trace = empty_trace(11);  // 0 .. 1 s
   EXPECT_EQ(sample_at_time(trace, 0.44), 4u);
