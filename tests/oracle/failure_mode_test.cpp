@@ -202,6 +202,7 @@ TEST(FailureModeTest, AViolationWithoutCollisionNamesTheNearestRoadUser) {
       still_actor(trace, "far", TraceActorKind::vehicle, BodyShape::box, 4.5, 1.9, 400, -1.75));
   trace.actors.push_back(
       still_actor(trace, "ped", TraceActorKind::pedestrian, BodyShape::cylinder, 0.5, 0.5, 22, -8));
+  trace.actors[2].category = ActorCategory::pedestrian;
   SpecVerdict verdict;
   verdict.name = "keep_clear";
   verdict.atom_text = "dist(ego, ped) > 5";
