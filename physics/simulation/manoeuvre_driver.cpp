@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/actors/path_pose.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/simulation/lane_cruise.hpp"
 
@@ -36,6 +37,12 @@ bool contains(const std::vector<LaneIndex>& lanes, LaneIndex lane) {
 
 bool is_turn(const Lane& lane, LaneTurn turn) { return lane.junction && lane.turn == turn; }
 
+// The lane's direction at s, turning smoothly through its centre line's vertices: the segment's
+// own direction jumps there, which at a crawl reads as a turn tighter than any steering allows.
+double smooth_lane_heading(const RoadMap& map, LaneIndex lane, double s) {
+  return direction_at(map.lane(lane).centre_line, s).heading;
+}
+
 }  // namespace
 
 ManoeuvreDriver::ManoeuvreDriver(const RoadMap& map, const ManoeuvreScript& script,
@@ -47,7 +54,7 @@ ManoeuvreDriver::ManoeuvreDriver(const RoadMap& map, const ManoeuvreScript& scri
   if (lane && lane->inside) {
     on_lane_ = LanePosition{lane->lane, lane->s, lane->lateral};
     // On a lane it faces along it from the start, as it will at every step after.
-    state_.heading = lane_heading_at(map, lane->lane, lane->s);
+    state_.heading = smooth_lane_heading(map, lane->lane, lane->s);
   }
   cruise_speed_ = state_.speed;
 }
@@ -413,7 +420,7 @@ void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
   // would swing round; a vehicle there turns no further than a slow one would). Backing up
   // sideways, the body turns the other way: its rear leads.
   double sideways = std::atan2(lateral_rate_, std::max(std::abs(v1), 1.0));
-  double heading = pose->heading + (v1 < 0 ? -sideways : sideways);
+  double heading = smooth_lane_heading(*map_, at.lane, at.s) + (v1 < 0 ? -sideways : sideways);
   state_.acceleration = (std::abs(v1) - std::abs(v0)) / dt;
   state_.yaw_rate = step_yaw_rate(state_.heading, heading, dt);
   state_.x = pose->position.x;
