@@ -262,6 +262,9 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
   for (const State& state : states) {
     auto pose = place_state(context, state);
     if (!pose) return std::nullopt;
+    if (!state.heading)
+      pose->heading =
+          waypoint_heading(context.map, poses.back().position, pose->position, pose->heading);
     auto waypoint_speed = speed_of(context, state, speeds.back());
     if (!waypoint_speed) return std::nullopt;
     if (distance(pose->position, poses.back().position) < 0.01) {
