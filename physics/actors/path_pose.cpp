@@ -23,27 +23,35 @@ double segment_heading(const Polyline& path, std::size_t segment) {
   return std::atan2(b.y - a.y, b.x - a.x);
 }
 
-// The heading at s on `segment`, continuous along the path, and its derivative.
-PathDirection direction_on(const Polyline& path, std::span<const double> headings,
+// The heading at s on `segment`, continuous along the path, and its derivative; `heading(k)` is
+// segment k's direction (only the segment's and its neighbours' are asked for).
+template <typename SegmentHeading>
+PathDirection direction_on(const Polyline& path, const SegmentHeading& heading_of,
                            std::size_t segment, double s) {
-  double heading = headings[segment];
+  double heading = heading_of(segment);
   double from_start = s - path.arc_lengths()[segment];
   double to_end = path.arc_lengths()[segment + 1] - s;
   if (segment > 0) {
     double blend = blend_half_width(path, segment);
     if (from_start < blend) {
-      double turn = angle_difference(heading, headings[segment - 1]);
+      double turn = angle_difference(heading, heading_of(segment - 1));
       return {wrap_angle(heading - 0.5 * turn * (1 - from_start / blend)), turn / (2 * blend)};
     }
   }
   if (segment + 1 < path.segment_count()) {
     double blend = blend_half_width(path, segment + 1);
     if (to_end < blend) {
-      double turn = angle_difference(headings[segment + 1], heading);
+      double turn = angle_difference(heading_of(segment + 1), heading);
       return {wrap_angle(heading + 0.5 * turn * (1 - to_end / blend)), turn / (2 * blend)};
     }
   }
   return {heading, 0};
+}
+
+PathDirection direction_on(const Polyline& path, std::span<const double> headings,
+                           std::size_t segment, double s) {
+  return direction_on(
+      path, [&](std::size_t k) { return headings[k]; }, segment, s);
 }
 
 }  // namespace
@@ -62,7 +70,9 @@ std::vector<double> segment_headings(const Polyline& path) {
 }
 
 PathDirection direction_at(const Polyline& path, double s) {
-  return direction_at(path, segment_headings(path), s);
+  s = std::clamp(s, 0.0, path.length());
+  return direction_on(
+      path, [&](std::size_t k) { return segment_heading(path, k); }, path.segment_at(s), s);
 }
 
 PathDirection direction_at(const Polyline& path, std::span<const double> headings, double s) {

@@ -21,7 +21,8 @@ struct PathDirection {
 // The direction of each segment of `path`, computed once for paths sampled at every step.
 std::vector<double> segment_headings(const Polyline& path);
 
-// The heading at arc length s (clamped to the path) and its derivative along the path.
+// The heading at arc length s (clamped to the path) and its derivative along the path; it looks
+// at the segment there and its neighbours only, so it suits long paths asked at one point.
 PathDirection direction_at(const Polyline& path, double s);
 // As direction_at, with the segment headings computed beforehand.
 PathDirection direction_at(const Polyline& path, std::span<const double> headings, double s);

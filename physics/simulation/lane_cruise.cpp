@@ -20,11 +20,13 @@ constexpr double kStopLineGap = 1.0;          // m before a stop line
 constexpr double kComfortAcceleration = 1.5;  // m/s^2, IDM's a (at most the class's)
 constexpr double kMinimumLookahead = 40;      // m
 constexpr double kLookaheadTime = 6;          // s of travel
-constexpr std::size_t kMaximumLanes = 64;
-constexpr double kStandingCruise = 0.5;
-constexpr double kDeadEndMargin =
-    0.5;  // m short of a dead end where an actor aims to stop  // m/s: cruising slower than this is
-          // standing     // lanes walked ahead, for rings of tiny lanes
+constexpr std::size_t kMaximumLanes = 64;     // lanes walked ahead, for rings of tiny lanes
+constexpr double kStandingCruise = 0.5;       // m/s: cruising slower than this is standing
+constexpr double kDeadEndMargin = 0.5;        // m short of a dead end where an actor aims to stop
+constexpr double kPhaseSideMargin = 0.3;      // m beside a body leaving a lane that must stay clear
+constexpr double kPhaseTimeGap = 0.5;         // s behind its leader a scripted phase keeps at least
+// The share of its full braking from which a scripted phase brakes for what is ahead.
+constexpr double kPhaseBrakingShare = 0.6;
 
 struct LaneAhead {
   LaneIndex lane = 0;
@@ -55,6 +57,37 @@ double fourth_power(double x) {
   return squared * squared;
 }
 
+// The nearest actor ahead of `self` on `lanes` (bumper to bumper along them) and its speed along
+// self's heading, for which `counts` holds; gap +infinity when there is none.
+struct Leader {
+  double gap = kInfinity;
+  double speed = 0;
+};
+
+template <typename Counts>
+Leader nearest_ahead(const WorldSnapshot& world, std::uint32_t self,
+                     const std::vector<LaneAhead>& lanes, double half_length,
+                     const Counts& counts) {
+  const KinematicState& me = world.states[self];
+  Leader leader;
+  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+    if (k == self || world.lanes[k].lane < 0 || !present_in(world, k) || !counts(k)) continue;
+    for (const LaneAhead& lane : lanes) {
+      if (static_cast<LaneIndex>(world.lanes[k].lane) != lane.lane) continue;
+      double along = lane.offset + world.lanes[k].s;
+      double gap = along - half_length - world.lengths[k] / 2;
+      if (along > 0 && gap < leader.gap) {
+        leader.gap = gap;
+        double relative = angle_difference(world.states[k].heading, me.heading);
+        leader.speed = std::max(0.0, longitudinal_velocity(world.states[k]) * std::cos(relative));
+      }
+    }
+  }
+  return leader;
+}
+
+double lookahead(double speed) { return std::max(kMinimumLookahead, speed * kLookaheadTime); }
+
 }  // namespace
 
 double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
@@ -64,9 +97,8 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
   const double v = me.speed;
   const double a = std::min(kComfortAcceleration, body.max_acceleration);
   const double b = body.comfortable_deceleration;
-  const double reach = std::max(kMinimumLookahead, v * kLookaheadTime);
   bool dead_end = false;
-  std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, reach, dead_end);
+  std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, lookahead(v), dead_end);
   // A phase that ended at a standstill (or nearly: a stop reaches 0 within a step) leaves it
   // standing.
   if (cruise_speed < kStandingCruise) return v > 0 ? -body.comfortable_deceleration : 0;
@@ -79,20 +111,8 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
   };
   const double half = body.length / 2;
   // The nearest actor ahead on these lanes.
-  double nearest = kInfinity, lead_speed = 0;
-  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-    if (k == self || world.lanes[k].lane < 0) continue;
-    for (const LaneAhead& lane : lanes) {
-      if (static_cast<LaneIndex>(world.lanes[k].lane) != lane.lane) continue;
-      double along = lane.offset + world.lanes[k].s;
-      double gap = along - half - world.lengths[k] / 2;
-      if (along > 0 && gap < nearest) {
-        nearest = gap;
-        double relative = angle_difference(world.states[k].heading, me.heading);
-        lead_speed = std::max(0.0, longitudinal_velocity(world.states[k]) * std::cos(relative));
-      }
-    }
-  }
+  const Leader leader = nearest_ahead(world, self, lanes, half, [](std::uint32_t) { return true; });
+  const double nearest = leader.gap, lead_speed = leader.speed;
   if (std::isfinite(nearest)) follow(nearest, lead_speed, kStandstillGap);
   // Red lights (and yellow ones it can stop for) on these lanes.
   for (const LaneAhead& lane : lanes)
@@ -106,6 +126,50 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
       if (stop && gap >= v * v / (2 * body.max_deceleration)) follow(gap, 0, kStopLineGap);
     }
   return std::clamp(best, -body.max_deceleration, body.max_acceleration);
+}
+
+double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                          const NextLane& next_lane, const ActorClass& body) {
+  const RoadMap& map = *world.map;
+  const KinematicState& me = world.states[self];
+  const double v = me.speed;
+  const double half = body.length / 2;
+  bool dead_end = false;
+  const std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, lookahead(v), dead_end);
+  auto not_ego = [](std::uint32_t k) { return k != kEgo; };
+  Leader leader = nearest_ahead(world, self, lanes, half, not_ego);
+  // Changing lanes, the actor is still partly in the lane it leaves (the lane tracker's, while its
+  // centre is there): what is ahead there counts while the bodies overlap sideways.
+  const LaneFix& own = world.lanes[self];
+  if (own.lane >= 0 && static_cast<LaneIndex>(own.lane) != at.lane) {
+    const std::vector<LaneAhead> leaving =
+        lanes_ahead(map, LanePosition{static_cast<LaneIndex>(own.lane), own.s, 0}, next_lane,
+                    lookahead(v), dead_end);
+    auto beside = [&](std::uint32_t k) {
+      const double dx = world.states[k].x - me.x, dy = world.states[k].y - me.y;
+      const double lateral = -std::sin(me.heading) * dx + std::cos(me.heading) * dy;
+      return not_ego(k) &&
+             std::abs(lateral) < (body.width + world.widths[k]) / 2 + kPhaseSideMargin;
+    };
+    const Leader there = nearest_ahead(world, self, leaving, half, beside);
+    if (there.gap < leader.gap) leader = there;
+  }
+  if (!std::isfinite(leader.gap)) return kInfinity;
+  // Close behind its leader, it drops back as IDM would, to a brisk driver's gap.
+  const double safe = kStandstillGap + v * kPhaseTimeGap;
+  double limit = kInfinity;
+  if (leader.gap < safe) {
+    const double ratio = safe / std::max(leader.gap, 0.1);
+    limit = body.max_acceleration * (1 - ratio * ratio);
+  }
+  // Closing in, it brakes at the last moment firm braking still stops it at that gap behind its
+  // leader's speed: a script that cuts out late around a stopped car is not slowed before.
+  const double closing = v - leader.speed;
+  if (closing > 0) {
+    const double needed = closing * closing / (2 * std::max(leader.gap - safe, 0.1));
+    if (needed >= kPhaseBrakingShare * body.max_deceleration) limit = std::min(limit, -needed);
+  }
+  return std::isfinite(limit) ? std::max(limit, -body.max_deceleration) : kInfinity;
 }
 
 double dead_end_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,

@@ -21,6 +21,16 @@ using NextLane = std::function<LaneIndex(LaneIndex)>;
 double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
                            const NextLane& next_lane, const ActorClass& body, double cruise_speed);
 
+// For a WMG actor in a manoeuvre phase: the most acceleration (m/s^2, at least minus the class's
+// braking) that keeps it from running into the nearest actor other than the ego ahead on the lanes
+// it takes from `at`, or, while a lane change has its centre in another lane (world.lanes[self]),
+// ahead on that lane and still beside it; +infinity while the script may run as written. The
+// script keeps its speeds until firm braking is needed to stop behind its leader (at 2 m plus
+// 0.5 s), and then brakes as much as that needs; within that gap it drops back. The script is the
+// fuzzer's adversary to the ego, not to the rest of the traffic: it may still hit the ego.
+double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                          const NextLane& next_lane, const ActorClass& body);
+
 // The deceleration (negative, m/s^2) that stops an actor at `at` moving at `speed` before the
 // end of the lanes ahead, or +infinity when there is room for comfortable braking later.
 double dead_end_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,

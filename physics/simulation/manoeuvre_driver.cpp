@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/actors/path_pose.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/simulation/lane_cruise.hpp"
 
@@ -36,6 +37,12 @@ bool contains(const std::vector<LaneIndex>& lanes, LaneIndex lane) {
 
 bool is_turn(const Lane& lane, LaneTurn turn) { return lane.junction && lane.turn == turn; }
 
+// The lane's direction at s, turning smoothly through its centre line's vertices: the segment's
+// own direction jumps there, which at a crawl reads as a turn tighter than any steering allows.
+double smooth_lane_heading(const RoadMap& map, LaneIndex lane, double s) {
+  return direction_at(map.lane(lane).centre_line, s).heading;
+}
+
 }  // namespace
 
 ManoeuvreDriver::ManoeuvreDriver(const RoadMap& map, const ManoeuvreScript& script,
@@ -47,7 +54,7 @@ ManoeuvreDriver::ManoeuvreDriver(const RoadMap& map, const ManoeuvreScript& scri
   if (lane && lane->inside) {
     on_lane_ = LanePosition{lane->lane, lane->s, lane->lateral};
     // On a lane it faces along it from the start, as it will at every step after.
-    state_.heading = lane_heading_at(map, lane->lane, lane->s);
+    state_.heading = smooth_lane_heading(map, lane->lane, lane->s);
   }
   cruise_speed_ = state_.speed;
 }
@@ -61,6 +68,16 @@ int ManoeuvreDriver::phase() const { return running_ ? static_cast<int>(next_) :
 void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   update_phases(world, self);
   double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self);
+  held_back_ = false;
+  if (running_ && on_lane_ && !state_.reversing) {
+    // A phase drives as scripted, but not into the traffic ahead (the ego aside).
+    NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
+    const double limit = phase_leader_limit(world, self, *on_lane_, next, body_);
+    if (limit < acceleration) {
+      acceleration = limit;
+      held_back_ = true;
+    }
+  }
   if (on_lane_ && !state_.reversing && state_.speed > 0) {
     NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
     // In a phase the script may corner up to most of the grip; cruising, as a calm driver.
@@ -247,6 +264,11 @@ void ManoeuvreDriver::change_lane(const WorldSnapshot& world, std::uint32_t self
   lateral_duration_ =
       std::max({duration, std::sqrt(kMinimumJerkPeak * std::abs(lateral_from_) / grip), 1e-3});
   lateral_elapsed_ = 0;
+  // Sideways only as it moves on: over at least the distance that keeps the curve within full
+  // lock, so that a car slowed to a crawl (or standing) mid-change does not turn on the spot.
+  const double shortest =
+      std::sqrt(kMinimumJerkPeak * std::abs(lateral_from_) * planning_radius(body_));
+  lateral_speed_ = std::max(state_.speed, shortest / lateral_duration_);
 }
 
 void ManoeuvreDriver::plan_cut_in(const WorldSnapshot& world, const PhaseMotion& phase) {
@@ -397,23 +419,30 @@ void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
       turn_entered_ = true;
   }
   lateral_rate_ = 0;
+  lateral_slope_ = 0;
   if (lateral_duration_ > 0) {
     // The lateral curve's state at the end of this step.
-    lateral_elapsed_ += dt;
+    // Slower than planned, the curve is drawn over the same distance, more slowly.
+    const double pace = std::min(1.0, (std::abs(v0) + std::abs(v1)) / 2 / lateral_speed_);
+    lateral_elapsed_ += dt * pace;
     double x = std::clamp(lateral_elapsed_ / lateral_duration_, 0.0, 1.0);
     at.lateral = lateral_from_ * (1 - smooth_progress(x));
-    lateral_rate_ = -lateral_from_ * smooth_progress_rate(x) / lateral_duration_;
+    lateral_slope_ =
+        -lateral_from_ * smooth_progress_rate(x) / (lateral_duration_ * lateral_speed_);
+    lateral_rate_ = lateral_slope_ * std::min(std::abs(v1), lateral_speed_);
   }
   auto pose = lane_pose_at(*map_, at.lane, at.s, at.lateral);
   if (!pose) {
     state_.yaw_rate = 0;  // the actor stays where it was: its heading did not change
     return;
   }
-  // The heading follows the path the sideways move draws (at walking pace or less, the body
-  // would swing round; a vehicle there turns no further than a slow one would). Backing up
-  // sideways, the body turns the other way: its rear leads.
-  double sideways = std::atan2(lateral_rate_, std::max(std::abs(v1), 1.0));
-  double heading = pose->heading + (v1 < 0 ? -sideways : sideways);
+  // The heading follows the path the sideways move draws: its slope along the lane, as planned,
+  // or flatter when faster than planned. Backing up sideways, the body turns the other way: its
+  // rear leads.
+  const double slope =
+      std::abs(v1) > lateral_speed_ ? lateral_rate_ / std::abs(v1) : lateral_slope_;
+  double sideways = lateral_duration_ > 0 ? std::atan(slope) : 0;
+  double heading = smooth_lane_heading(*map_, at.lane, at.s) + (v1 < 0 ? -sideways : sideways);
   state_.acceleration = (std::abs(v1) - std::abs(v0)) / dt;
   state_.yaw_rate = step_yaw_rate(state_.heading, heading, dt);
   state_.x = pose->position.x;
@@ -469,9 +498,10 @@ bool ManoeuvreDriver::phase_complete(const WorldSnapshot& world, std::uint32_t s
   const bool speed_reached =
       !target || std::abs(longitudinal_velocity(state_) - *target) < kSpeedTolerance;
   switch (phase.choice.primitive) {
-    case MotionPrimitive::keep_lane: return elapsed && speed_reached;
+    // Held back by the traffic ahead, the phase's speed may never be reached: its time is up.
+    case MotionPrimitive::keep_lane: return elapsed && (speed_reached || held_back_);
     case MotionPrimitive::lane_change:
-    case MotionPrimitive::cut_in: return elapsed && speed_reached;
+    case MotionPrimitive::cut_in: return elapsed && (speed_reached || held_back_);
     case MotionPrimitive::stop:
     case MotionPrimitive::stopped: return state_.speed <= 0;
     case MotionPrimitive::turn_left:

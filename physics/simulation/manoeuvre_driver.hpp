@@ -84,7 +84,12 @@ class ManoeuvreDriver {
   // when the phase that started it ends first: a car does not stop half-way across a lane line.
   double lateral_from_ = 0;
   double lateral_duration_ = 0;
-  double lateral_elapsed_ = 0;  // s since it started
+  double lateral_elapsed_ = 0;  // s since it started, at the planned pace
+  double lateral_speed_ = 1;    // m/s the curve is planned for: slower, it progresses less
+  double lateral_slope_ = 0;    // the curve's sideways metres per metre along the lane
+
+  // At the last step the traffic ahead held the phase's acceleration back (phase_leader_limit).
+  bool held_back_ = false;
 
   // A cut-in's accelerations over the first and second half of its duration.
   std::array<double, 2> cut_in_acceleration_{};

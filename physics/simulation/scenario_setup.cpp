@@ -222,6 +222,9 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
   double lateral = start_lane->lateral;
   Polyline path = round_corners(route_path(context.map, *route, lateral), planning_radius(body));
   drive = LaneDrive{*route, path, speed, initial_speed};
+  if (context.scenario.npc_behaviour.value_or(NpcBehaviour::reactive) == NpcBehaviour::reactive)
+    warn_reactive_start(path, body, initial_speed, actor.name, start_point(actor),
+                        context.diagnostics);
   // A calm driver's bends, at the class's comfortable lateral acceleration: slowing for them is
   // what the scenario's speed means on a road that bends, so it is no shortfall to warn about.
   return Trajectory(std::move(path), {{0, speed}},
@@ -262,6 +265,9 @@ std::optional<Trajectory> through_waypoints(Context& context, const Actor& actor
   for (const State& state : states) {
     auto pose = place_state(context, state);
     if (!pose) return std::nullopt;
+    if (!state.heading)
+      pose->heading =
+          waypoint_heading(context.map, poses.back().position, pose->position, pose->heading);
     auto waypoint_speed = speed_of(context, state, speeds.back());
     if (!waypoint_speed) return std::nullopt;
     if (distance(pose->position, poses.back().position) < 0.01) {

@@ -1,10 +1,14 @@
 // Shortfall warnings: naming the script's points and saying what the actor does instead.
 #include "physics/simulation/shortfall_warnings.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
+#include "physics/actors/path_pose.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -90,6 +94,39 @@ void warn_shortfalls(const Trajectory& trajectory, const std::string& actor,
     diagnostics.warning(points[shortfall.point].location,
                         message(shortfall, actor, points, trajectory.path().length()));
   }
+}
+
+double reactive_start_limit(const Polyline& path, const ActorClass& body) {
+  // LaneFollower's bend envelope at the path's start: the lateral limit and braking it uses.
+  const double lateral = body.comfortable_lateral_acceleration > 0
+                             ? body.comfortable_lateral_acceleration
+                             : body.max_deceleration;
+  const double braking = body.comfortable_deceleration;
+  const std::vector<double> headings = segment_headings(path);
+  const std::size_t count = path.points().size();
+  double envelope = std::numeric_limits<double>::infinity();
+  for (std::size_t i = count; i-- > 0;) {
+    const double curvature = vertex_curvature(path, headings, i);
+    double cap =
+        curvature > 1e-9 ? std::sqrt(lateral / curvature) : std::numeric_limits<double>::infinity();
+    if (i + 1 < count) {
+      const double ds = path.arc_lengths()[i + 1] - path.arc_lengths()[i];
+      cap = std::min(cap, std::sqrt(envelope * envelope + 2 * braking * ds));
+    }
+    envelope = cap;
+  }
+  return std::min(envelope, body.max_speed);
+}
+
+void warn_reactive_start(const Polyline& path, const ActorClass& body, double initial_speed,
+                         const std::string& actor, const ScriptPoint& start,
+                         Diagnostics& diagnostics) {
+  const double limit = reactive_start_limit(path, body);
+  // Rounding is not a shortfall: a tenth of a m/s is what the message shows.
+  if (!(initial_speed > limit + 0.05)) return;
+  diagnostics.warning(start.location, actor + " cannot start at " + speed_text(initial_speed) +
+                                          ": the bends ahead (or its class's top speed) allow " +
+                                          speed_text(limit) + ", so it starts at that");
 }
 
 }  // namespace scenfuzz

@@ -1,7 +1,7 @@
 // Warnings for the speeds a scripted actor's script asks for but its class cannot drive (a
 // waypoint speed too far from the one before for the distance between them, or too fast for the
 // bend it lies in): which actor, which waypoint (at the source of its speed), and what it does
-// instead.
+// instead. Also for a reactive lane follower whose initial speed the bends ahead do not allow.
 #pragma once
 
 #include <cstddef>
@@ -11,7 +11,9 @@
 
 #include "lang/diagnostic.hpp"
 #include "lang/scenario.hpp"
+#include "physics/actors/actor_class.hpp"
 #include "physics/actors/trajectory.hpp"
+#include "physics/map/polyline.hpp"
 
 namespace scenfuzz {
 
@@ -35,5 +37,16 @@ std::vector<ScriptPoint> waypoint_points(const Actor& actor, std::span<const Sta
 // One warning per shortfall of the trajectory; `points[i]` names its i-th given speed point.
 void warn_shortfalls(const Trajectory& trajectory, const std::string& actor,
                      std::span<const ScriptPoint> points, Diagnostics& diagnostics);
+
+// The most speed a reactive lane follower (LaneFollower) of class `body` starts `path` at: from
+// it, every bend ahead can be taken within the class's comfortable lateral acceleration, braking
+// at its comfortable deceleration; no more than its top speed.
+double reactive_start_limit(const Polyline& path, const ActorClass& body);
+
+// A warning at `start` when `initial_speed` is above reactive_start_limit: the actor starts at
+// that limit instead, which the warning names.
+void warn_reactive_start(const Polyline& path, const ActorClass& body, double initial_speed,
+                         const std::string& actor, const ScriptPoint& start,
+                         Diagnostics& diagnostics);
 
 }  // namespace scenfuzz

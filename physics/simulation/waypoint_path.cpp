@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include "physics/actors/trajectory.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/lane_route.hpp"
+#include "physics/map/lane_segment_index.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/planning/path_planner.hpp"
 
@@ -20,6 +22,8 @@ namespace scenfuzz {
 namespace {
 
 constexpr double kMaxHeadingOffLane = std::numbers::pi / 3;
+// m beyond a lane's edge where a waypoint still counts as drifted out of it (waypoint_heading).
+constexpr double kBesideLaneMargin = 1;
 // A lane route longer than this many times the straight distance, plus the allowance, is a
 // detour the waypoints did not ask for.
 constexpr double kDetourFactor = 3;
@@ -174,6 +178,33 @@ void append_leg(WaypointPath& path, double& s, const std::vector<MapPoint>& poin
 }
 
 }  // namespace
+
+double waypoint_heading(const RoadMap& map, MapPoint from, MapPoint at, double lane_heading) {
+  if (distance(from, at) < 1e-9) return lane_heading;
+  const double bearing = std::atan2(at.y - from.y, at.x - from.x);
+  if (std::abs(angle_difference(lane_heading, bearing)) <= std::numbers::pi / 2)
+    return lane_heading;
+  // Only beside a lane running the actor's way: on a ring, a waypoint far round it may well lie
+  // against the bearing from the one before, and its lane's direction is the right one.
+  constexpr double kSearchRadius = 8;  // m: a wide lane's half width and the margin, with room
+  std::optional<double> best_heading;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const LaneSegmentReference& segment :
+       map.segment_index().segments_in_box({at.x - kSearchRadius, at.y - kSearchRadius},
+                                           {at.x + kSearchRadius, at.y + kSearchRadius})) {
+    const Polyline& centre_line = map.lane(segment.lane).centre_line;
+    const PolylineProjection p = centre_line.project_to_segment(at, segment.segment);
+    const double heading = centre_line.heading_at(p.s);
+    if (std::abs(angle_difference(heading, bearing)) > kMaxHeadingOffLane) continue;
+    const double half_width = p.lateral >= 0 ? lane_left_width_at(map, segment.lane, p.s)
+                                             : lane_right_width_at(map, segment.lane, p.s);
+    if (std::abs(p.lateral) > half_width + kBesideLaneMargin || p.distance >= best_distance)
+      continue;
+    best_distance = p.distance;
+    best_heading = heading;
+  }
+  return best_heading.value_or(lane_heading);
+}
 
 double waypoint_lane_change_length(double speed, double width,
                                    double comfortable_lateral_acceleration) {

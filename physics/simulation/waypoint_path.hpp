@@ -51,6 +51,14 @@ struct WaypointPath {
 // naming the leg by its place in the whole path.
 WaypointPath waypoint_path(const RoadMap& map, const WaypointPathRequest& request);
 
+// The heading of a waypoint whose script gives none, at `at` with `lane_heading` the direction of
+// the lane it lies in, reached from `from`: that direction, unless it runs against the way the
+// actor comes (more than 90 degrees from the bearing from `from`) and the point lies in or within
+// 1 m of a lane running the actor's way (within 60 degrees of the bearing), as when a car drifts
+// across the centre line into the oncoming lane: facing that lane's way, it would have to loop
+// round. Then that lane's direction.
+double waypoint_heading(const RoadMap& map, MapPoint from, MapPoint at, double lane_heading);
+
 // Metres a lane change of `width` metres takes at `speed` (the rule above, before fitting it into
 // a leg).
 double waypoint_lane_change_length(double speed, double width,

@@ -478,7 +478,9 @@ TEST(ManoeuvreTest, ReverseTowardsAndAwayEndAtTheirGap) {
 }
 
 TEST(ManoeuvreTest, AReverseCutOutChangesLaneBackwards) {
-  // From the middle lane, out to the left lane while backing up at 2 m/s over 3 s.
+  // From the middle lane, out to the left lane while backing up at 2 m/s over 3 s. 3.5 m sideways
+  // within 6 m of travel is tighter than full lock: the move is drawn over the distance the lock
+  // allows (sqrt(5.77 x 3.5 m x 5.5 m), about 10.5 m, 5.3 s at 2 m/s) and finishes after the phase.
   ScenarioTemplate scenario = three_lane_road(20, 10);
   scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Reverser",
                                           relative_state("Ego", "FSL", 150, 0),
@@ -488,13 +490,13 @@ TEST(ManoeuvreTest, AReverseCutOutChangesLaneBackwards) {
   const Trace& trace = *run.trace;
   const TraceActor& reverser = actor_named(trace, "Reverser");
   RoadMap map = scenario_map(scenario);
-  const std::size_t end = sample_at(trace, 3.05);
+  const std::size_t end = sample_at(trace, 6.0);
   EXPECT_EQ(reverser.lane[end], static_cast<std::int32_t>(*map.find_lane("east_2")));
   EXPECT_NEAR(reverser.y[end], -1.75, 0.01);
   EXPECT_NEAR(reverser.speed[end], 2, 0.05);
   EXPECT_EQ(reverser.reversing[end], 1);
   // Half-way, backing to the left: the rear leads, so the nose points right of the lane.
-  const std::size_t middle = sample_at(trace, 1.5);
+  const std::size_t middle = sample_at(trace, 2.6);
   EXPECT_GT(reverser.y[middle], -5.0);
   EXPECT_LT(reverser.heading[middle], -0.01);
   EXPECT_LT(reverser.x[end], reverser.x[0]);
