@@ -9,6 +9,7 @@
 #include <functional>
 #include <numbers>
 
+#include "oracle/judge.hpp"
 #include "oracle/rss_distances.hpp"
 #include "physics/collision/footprint.hpp"
 #include "physics/map/builtin_maps.hpp"
@@ -348,6 +349,30 @@ TEST(ResponsibilityTest, EveryCollisionOfTheEgoIsJudgedAndOthersAreNot) {
   ASSERT_EQ(all.size(), 1u);
   EXPECT_EQ(all[0].collision, 0u);
   EXPECT_EQ(all[0].other, 1u);
+}
+
+TEST(ResponsibilityTest, TheCollisionOracleCountsOnlyCollisionsTheEgoIsResponsibleFor) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(10);
+  add_crossroads_lights(trace);
+  const double ego_x = -16.5 - kCarLength / 2;
+  move(trace, map, trace.actors[0], standing(ego_x, -1.75));
+  move(trace, map, trace.actors[1], cruise_east(ego_x - 60, -1.75, 10));
+  end_at_contact(trace);
+  const ScenarioTemplate no_specs;
+  const SourceFile file("inline.avu", "");
+  const std::vector<SpecVerdict> excused = judge_trace(no_specs, {}, trace, map, file);
+  ASSERT_EQ(excused.size(), 1u);
+  EXPECT_FALSE(excused[0].violated()) << "rear-ended at a red light: not the ego's fault";
+  EXPECT_GE(excused[0].robustness, 0);
+  EXPECT_LT(excused[0].robustness, 0.6) << "the clearance just before the contact";
+  EXPECT_EQ(excused[0].atom_text,
+            "the ego and npc (not counted: a collision not the ego's fault with npc)");
+  JudgeOptions all;
+  all.all_collisions = true;
+  const std::vector<SpecVerdict> counted = judge_trace(no_specs, {}, trace, map, file, all);
+  EXPECT_TRUE(counted[0].violated());
+  EXPECT_EQ(counted[0].atom_text, "the ego and npc");
 }
 
 TEST(RssParametersTest, DefaultsAreAdRssLibsAndNamesOverrideThem) {
