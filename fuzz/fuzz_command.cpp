@@ -44,6 +44,7 @@ std::optional<ScenarioEvaluator> make_evaluator(const FuzzCommandOptions& option
   try {
     std::vector<fs::path> map_paths(flags.map_paths.begin(), flags.map_paths.end());
     evaluator.emplace(input.file, input.scenario, map_search_path(map_paths), simulation);
+    evaluator->set_judge_options(judge_options(flags));
   } catch (const MapError& error) {
     err << "scenfuzz: error: " << error.what() << "\n";
     return std::nullopt;

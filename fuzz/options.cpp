@@ -241,7 +241,17 @@ SimulationOptions simulation_options(const SimulationCommandOptions& options) {
   return simulation;
 }
 
+JudgeOptions judge_options(const SimulationCommandOptions& options) {
+  JudgeOptions judge;
+  judge.all_collisions = options.all_collisions;
+  if (const RssParametersOrError rss = parse_rss_parameters(options.rss); rss.parameters)
+    judge.rss = *rss.parameters;
+  return judge;
+}
+
 std::optional<std::string> check_simulation_options(const SimulationCommandOptions& options) {
+  if (const RssParametersOrError rss = parse_rss_parameters(options.rss); !rss.parameters)
+    return "--rss: " + rss.error;
   if (!options.duration) return std::nullopt;
   return check_step_count(*options.duration, options.dt,
                           "--duration " + format_number(*options.duration));

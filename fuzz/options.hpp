@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fuzz/commands.hpp"
+#include "oracle/judge.hpp"
 #include "physics/simulation/simulation.hpp"
 #include "physics/simulation/simulation_limits.hpp"
 
@@ -92,6 +93,9 @@ std::optional<std::string> check_step_count(double duration, double dt,
 
 // What the simulation is asked for by the command line's options (the seed apart).
 SimulationOptions simulation_options(const SimulationCommandOptions& options);
+
+// How the oracle judges collisions by the command line's options (--rss already checked).
+JudgeOptions judge_options(const SimulationCommandOptions& options);
 
 // The checks of the simulation options together, once each has passed its own: nullopt, or the
 // reason for an error message.

@@ -17,6 +17,7 @@
 #include "fuzz/scenario_language.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/judge.hpp"
+#include "oracle/responsibility.hpp"
 #include "oracle/robustness.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/map/map_source.hpp"
@@ -46,6 +47,45 @@ std::string describe_collision(const Trace& trace, const Collision& collision) {
          std::string(body_side_name(collision.second_side)) + " at (" +
          format_number(std::round(collision.point.x * 100) / 100) + ", " +
          format_number(std::round(collision.point.y * 100) / 100) + ")";
+}
+
+// "  responsibility: other: hit from behind while stopped" and the triage numbers on a line each.
+std::string describe_responsibility(const Trace& trace, const CollisionResponsibility& r) {
+  const CollisionTriage& t = r.triage;
+  const auto tenths = [](double value) { return format_number(std::round(value * 10) / 10); };
+  std::string text = "  responsibility: " + std::string(responsibility_name(r.responsibility)) +
+                     ": " + r.reason + "\n";
+  text += "  triage: ego at " + tenths(t.ego_speed) + " m/s, " + tenths(t.ego_acceleration) +
+          " m/s^2" +
+          (t.ego_stationary         ? " (stationary)"
+           : t.ego_braking_at_limit ? " (braking at its limit)"
+                                    : "") +
+          "; relative speed " + tenths(t.relative_speed) + " m/s, impact angle " +
+          tenths(t.impact_angle) + " deg";
+  if (t.entry) {
+    text += "; " + trace.actors[r.other].name + " in the ego's path from " + tenths(t.entry->time) +
+            " s, gap " + tenths(t.entry->gap) + " m";
+    if (std::isfinite(t.entry->time_to_collision))
+      text += ", TTC " + tenths(t.entry->time_to_collision) + " s, needing " +
+              tenths(t.entry->required_deceleration) + " m/s^2";
+  }
+  return text;
+}
+
+nlohmann::json responsibility_json(const CollisionResponsibility& r) {
+  const CollisionTriage& t = r.triage;
+  nlohmann::json triage = {
+      {"ego_speed", t.ego_speed},           {"ego_acceleration", t.ego_acceleration},
+      {"relative_speed", t.relative_speed}, {"impact_angle", t.impact_angle},
+      {"ego_stationary", t.ego_stationary}, {"ego_braking_at_limit", t.ego_braking_at_limit}};
+  if (t.entry)
+    triage["entry"] = {{"time", t.entry->time},
+                       {"gap", t.entry->gap},
+                       {"closing_speed", t.entry->closing_speed},
+                       {"time_to_collision", robustness_json(t.entry->time_to_collision)},
+                       {"required_deceleration", robustness_json(t.entry->required_deceleration)},
+                       {"from_start", t.entry->from_start}};
+  return triage;
 }
 
 std::string place_of(const SourceFile& file, const SourceLocation& location) {
@@ -144,6 +184,7 @@ nlohmann::json audit_json(const TraceAudit& audit) {
 
 nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
                             const std::vector<double>& values,
+                            const std::vector<CollisionResponsibility>& responsibilities,
                             const std::vector<std::string>& files) {
   nlohmann::json summary;
   summary["map"] = trace.map_name;
@@ -164,6 +205,12 @@ nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
                           {"first_side", std::string(body_side_name(c.first_side))},
                           {"second_side", std::string(body_side_name(c.second_side))},
                           {"point", {c.point.x, c.point.y}}});
+  for (const CollisionResponsibility& r : responsibilities) {
+    nlohmann::json& entry = collisions[r.collision];
+    entry["responsibility"] = std::string(responsibility_name(r.responsibility));
+    entry["reason"] = r.reason;
+    entry["triage"] = responsibility_json(r);
+  }
   summary["collisions"] = collisions;
   if (const std::optional<EgoFailureReport> failure = ego_failure_report(trace))
     summary["ego_failure"] = ego_failure_json(*failure);
@@ -225,11 +272,16 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     return kExitBadInput;
   }
 
+  const JudgeOptions judge = judge_options(options.simulation);
+  // Whose fault each collision of the ego is (oracle/responsibility.hpp).
+  const std::vector<CollisionResponsibility> responsibilities =
+      trace.sample_count() > 0 ? ego_collision_responsibilities(trace, *map, judge.rss)
+                               : std::vector<CollisionResponsibility>{};
   std::vector<SpecVerdict> verdicts;
   // A plugin that crashed or hung before the first sample leaves no trace to judge.
   if (trace.sample_count() > 0) {
     try {
-      verdicts = judge_trace(scenario, values, trace, *map, file);
+      verdicts = judge_trace(scenario, values, trace, *map, file, judge);
     } catch (const OracleError& error) {
       Diagnostics oracle_diagnostics;
       oracle_diagnostics.error(error.location(), error.what());
@@ -276,7 +328,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   }
 
   if (options.json) {
-    nlohmann::json summary = summary_json(trace, space, values, written);
+    nlohmann::json summary = summary_json(trace, space, values, responsibilities, written);
     summary["specs"] = verdicts_json(file, verdicts);
     summary["audit"] = audit_json(audit);
     out << summary.dump(2) << "\n";
@@ -289,8 +341,11 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   double simulated = trace.time.empty() ? 0.0 : trace.time.back();
   out << "simulated " << format_number(std::round(simulated * 1000) / 1000)
       << " s, ended: " << end_reason_name(trace.end) << "\n";
-  for (const Collision& collision : trace.collisions)
-    out << describe_collision(trace, collision) << "\n";
+  for (std::size_t i = 0; i < trace.collisions.size(); ++i) {
+    out << describe_collision(trace, trace.collisions[i]) << "\n";
+    for (const CollisionResponsibility& r : responsibilities)
+      if (r.collision == i) out << describe_responsibility(trace, r) << "\n";
+  }
   if (trace.collisions.empty()) out << "no collision\n";
   for (const AuditIssue& issue : audit.issues) out << describe_audit_issue(issue) << "\n";
   if (audit.clean()) out << "audit: every actor drove plausibly\n";

@@ -157,7 +157,7 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
     run.failure = ego_failure_reason(*run.trace);
     return run;
   }
-  run.verdicts = judge_trace(scenario_, run.values, *run.trace, *run.map, file_);
+  run.verdicts = judge_trace(scenario_, run.values, *run.trace, *run.map, file_, judge_options_);
   return run;
 }
 

@@ -59,6 +59,10 @@ class ScenarioEvaluator : public Evaluator {
 
   const ParameterSpace& space() const { return space_; }
 
+  // How the verdicts treat collisions (--rss, --all-collisions); the defaults until set.
+  void set_judge_options(JudgeOptions options) { judge_options_ = std::move(options); }
+  const JudgeOptions& judge_options() const { return judge_options_; }
+
  private:
   // The map and the setup at run.values; nullopt with run.infeasible set when they fail.
   std::optional<SimulationSetup> set_up(ScenarioRun& run, std::uint64_t seed,
@@ -69,6 +73,7 @@ class ScenarioEvaluator : public Evaluator {
   ParameterSpace space_;
   MapSearchPath search_path_;
   SimulationOptions simulation_;
+  JudgeOptions judge_options_;
   std::shared_ptr<const RoadMap> fixed_map_;
 };
 

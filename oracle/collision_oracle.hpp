@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "physics/trace/trace.hpp"
@@ -21,5 +22,10 @@ struct CollisionVerdict {
 };
 
 CollisionVerdict collision_verdict(const Trace& trace);
+
+// The same, but body k counts only before sample excused_from[k] (one entry per actor; the ego's
+// is ignored): from its collision with the ego on, a body that collision was not the ego's fault
+// for is left out, so the verdict is the ego's clearance up to that contact (>= 0).
+CollisionVerdict collision_verdict(const Trace& trace, std::span<const std::size_t> excused_from);
 
 }  // namespace scenfuzz

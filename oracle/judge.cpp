@@ -1,5 +1,8 @@
 #include "oracle/judge.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "oracle/collision_oracle.hpp"
 #include "oracle/robustness.hpp"
 #include "oracle/search_guide.hpp"
@@ -13,8 +16,27 @@ double time_of_sample(const Trace& trace, std::size_t sample) {
   return sample < trace.time.size() ? trace.time[sample] : 0.0;
 }
 
-SpecVerdict no_collision_verdict(const Trace& trace) {
-  const CollisionVerdict collision = collision_verdict(trace);
+// Per actor, the sample from which the collision oracle leaves it out: its first collision with
+// the ego that was not the ego's fault (RSS, oracle/responsibility); never with --all-collisions.
+std::vector<std::size_t> excused_from(const Trace& trace, const RoadMap& map,
+                                      const JudgeOptions& options, std::string& excused) {
+  std::vector<std::size_t> from(trace.actors.size(), trace.sample_count());
+  if (options.all_collisions || trace.sample_count() == 0) return from;
+  for (const CollisionResponsibility& r : ego_collision_responsibilities(trace, map, options.rss)) {
+    if (ego_responsible(r.responsibility) || from[r.other] < trace.sample_count()) continue;
+    from[r.other] = std::min(
+        trace.sample_count() - 1,
+        static_cast<std::size_t>(std::llround(trace.collisions[r.collision].time / trace.dt)));
+    excused += (excused.empty() ? "" : ", ") + trace.actors[r.other].name;
+  }
+  return from;
+}
+
+SpecVerdict no_collision_verdict(const Trace& trace, const RoadMap& map,
+                                 const JudgeOptions& options) {
+  std::string excused;
+  const std::vector<std::size_t> from = excused_from(trace, map, options, excused);
+  const CollisionVerdict collision = collision_verdict(trace, from);
   SpecVerdict verdict;
   verdict.name = kNoCollisionSpec;
   verdict.robustness = collision.robustness;
@@ -22,6 +44,8 @@ SpecVerdict no_collision_verdict(const Trace& trace) {
   verdict.time = time_of_sample(trace, collision.sample);
   verdict.atom_text = collision.other == kEgo ? "the ego is alone"
                                               : "the ego and " + trace.actors[collision.other].name;
+  if (!excused.empty())
+    verdict.atom_text += " (not counted: a collision not the ego's fault with " + excused + ")";
   return verdict;
 }
 
@@ -29,8 +53,9 @@ SpecVerdict no_collision_verdict(const Trace& trace) {
 
 std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
                                      std::span<const double> parameters, const Trace& trace,
-                                     const RoadMap& map, const SourceFile& file) {
-  if (scenario.specs.empty()) return {no_collision_verdict(trace)};
+                                     const RoadMap& map, const SourceFile& file,
+                                     const JudgeOptions& options) {
+  if (scenario.specs.empty()) return {no_collision_verdict(trace, map, options)};
   const TraceSignals signals(trace, scenario, parameters, map);
   const SignalSource source = signals.source();
   std::vector<SpecVerdict> verdicts;

@@ -8,6 +8,8 @@
 
 #include "lang/scenario.hpp"
 #include "lang/source_file.hpp"
+#include "oracle/responsibility.hpp"
+#include "oracle/rss_parameters.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/trace/trace.hpp"
 
@@ -31,11 +33,18 @@ struct SpecVerdict {
   bool violated() const { return robustness < 0; }
 };
 
+// How the collision oracle treats collisions that are not the ego's fault (oracle/responsibility).
+struct JudgeOptions {
+  RssParameters rss;
+  bool all_collisions = false;  // --all-collisions: count them too
+};
+
 // One verdict per spec of `scenario`, in file order, or one from the collision oracle when it has
 // none. `file` is the scenario's source, for the atoms' text. Throws OracleError for a spec the
 // trace cannot answer (e.g. a law signal the oracle does not compute).
 std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
                                      std::span<const double> parameters, const Trace& trace,
-                                     const RoadMap& map, const SourceFile& file);
+                                     const RoadMap& map, const SourceFile& file,
+                                     const JudgeOptions& options = {});
 
 }  // namespace scenfuzz

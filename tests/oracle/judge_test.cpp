@@ -150,8 +150,11 @@ scenario = CreateScenario{load("straight"); ego; {npc}; {}; {};};
   ASSERT_EQ(crash.verdicts.size(), 1u);
   EXPECT_EQ(crash.verdicts[0].name, kNoCollisionSpec);
   EXPECT_FALSE(crash.trace->collisions.empty());
-  EXPECT_LE(crash.verdicts[0].robustness, 0.0);
-  EXPECT_EQ(crash.verdicts[0].atom_text, "the ego and npc");
+  // Placed 0.3 s from impact at t = 0, braking at its limit: not the ego's fault (RSS), so the
+  // oracle leaves the collision out (--all-collisions counts it: responsibility_test.cpp).
+  EXPECT_GE(crash.verdicts[0].robustness, 0.0);
+  EXPECT_EQ(crash.verdicts[0].atom_text,
+            "the ego and npc (not counted: a collision not the ego's fault with npc)");
 
   const JudgedRun safe = judge_text(R"(
 ego = AV((("east_0" -> 20.0), , 20.0), (("east_0" -> 400.0), , ));

@@ -1,0 +1,415 @@
+// The responsibility rules, tried in order (docs/oracle.md, "Responsibility"): an obstacle cannot
+// be at fault; a broken light or stop sign, then missing priority at a junction, decides a
+// crossing; an ego standing still is not at fault; a pedestrian or a crossing road user is judged
+// by when it entered the other's path; road users along the same road by RSS's dangerous time and
+// proper response.
+#include "oracle/responsibility.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+#include "lang/demand.hpp"
+#include "lang/number_format.hpp"
+#include "oracle/pair_geometry.hpp"
+#include "oracle/right_of_way.hpp"
+#include "oracle/rss_distances.hpp"
+#include "oracle/rss_response.hpp"
+
+namespace scenfuzz {
+
+namespace {
+
+// How far back lights and signs crossed still bear on a collision (s).
+constexpr double kRightOfWayMemory = 20;
+// Headings within this of each other are one direction, within it of opposite ones oncoming (deg).
+constexpr double kAlongRoad = 30;
+// A stop line this close ahead is what the ego stopped for (m).
+constexpr double kStoppedForControl = 30;
+// "Braking at its limit": this share of the class's full braking.
+constexpr double kAtLimit = 0.95;
+
+struct Verdict {
+  Responsibility responsibility = Responsibility::ego;
+  std::string reason;
+};
+
+std::string tenths(double value) { return format_number(std::round(value * 10) / 10); }
+
+std::size_t sample_of(const Trace& trace, double time) {
+  const auto i = static_cast<std::size_t>(std::llround(time / trace.dt));
+  return std::min(i, trace.sample_count() - 1);
+}
+
+// "a car", "a cyclist", "a pedestrian", "an obstacle".
+std::string described(const TraceActor& actor) {
+  if (actor.kind == TraceActorKind::obstacle) return "an obstacle";
+  if (actor.kind == TraceActorKind::pedestrian) return "a pedestrian";
+  switch (actor.category) {
+    case ActorCategory::bicycle: return "a cyclist";
+    case ActorCategory::motorbicycle: return "a motorcyclist";
+    case ActorCategory::pedestrian: return "a pedestrian";
+    default: return "a " + std::string(actor_class(actor.category).name);
+  }
+}
+
+// "the car" from "a car".
+std::string definite(const std::string& indefinite) {
+  return "the " + indefinite.substr(indefinite.find(' ') + 1);
+}
+
+bool is_vehicle(const TraceActor& actor) {
+  return actor.kind == TraceActorKind::ego || actor.kind == TraceActorKind::vehicle;
+}
+
+double impact_angle(const Trace& trace, ActorId other, std::size_t k) {
+  const double a = trace.actors[kEgo].heading[k];
+  const double b = trace.actors[other].heading[k];
+  return std::abs(wrap_angle(b - a)) * 180 / std::numbers::pi;
+}
+
+CollisionTriage triage(const Trace& trace, const RoadMap& map, ActorId other, std::size_t k) {
+  const TraceActor& ego = trace.actors[kEgo];
+  const TraceActor& o = trace.actors[other];
+  CollisionTriage t;
+  t.ego_speed = ego.speed[k];
+  t.ego_acceleration = ego.acceleration[k];
+  const double ve = longitudinal_velocity_at(ego.speed, ego.reversing, k);
+  const double vo = longitudinal_velocity_at(o.speed, o.reversing, k);
+  const double dvx = ve * std::cos(ego.heading[k]) - vo * std::cos(o.heading[k]);
+  const double dvy = ve * std::sin(ego.heading[k]) - vo * std::sin(o.heading[k]);
+  t.relative_speed = std::hypot(dvx, dvy);
+  t.impact_angle = impact_angle(trace, other, k);
+  t.ego_stationary = ego.speed[k] <= kStandstillSpeed;
+  t.ego_braking_at_limit =
+      -ego.acceleration[k] >= kAtLimit * actor_class(ego.category).max_deceleration;
+  t.entry = path_entry(trace, map, kEgo, other, k);
+  return t;
+}
+
+// ---- what RSS leaves to the map: lights, stop signs, priority ----
+
+std::optional<CrossedControl> first_violation(const std::vector<CrossedControl>& crossed) {
+  for (const CrossedControl& control : crossed)
+    if (control_violated(control)) return control;
+  return std::nullopt;
+}
+
+std::optional<CrossedControl> first_sign(const std::vector<CrossedControl>& crossed) {
+  for (const CrossedControl& control : crossed)
+    if (control.kind != FeatureKind::traffic_light) return control;
+  return std::nullopt;
+}
+
+std::string violation_text(const Trace& trace, const RoadMap& map, const CrossedControl& control,
+                           std::size_t k) {
+  const std::string before =
+      tenths(trace.time[k] - trace.time[control.sample]) + " s before impact";
+  if (control.kind == FeatureKind::traffic_light)
+    return "ran a red light (" + control_id(map, control) + ") " + before;
+  return "passed the stop sign " + control_id(map, control) + " without stopping, " + before;
+}
+
+// Whether `vehicle`, once `other` was in its path, failed to brake at brake_min after its
+// response time (right of way is given, not taken). False for a vehicle `other` never got in front
+// of, and for a road user that is not a vehicle.
+bool failed_to_respond(const Trace& trace, const RoadMap& map, ActorId vehicle, ActorId other,
+                       std::size_t k, const RssParameters& rss) {
+  if (!is_vehicle(trace.actors[vehicle])) return false;
+  const std::optional<PathEntry> entry = path_entry(trace, map, vehicle, other, k);
+  return entry && !braked_properly(trace, vehicle, entry->sample, k, rss.brake_min, rss);
+}
+
+std::string no_response_text(ActorId party, const RssParameters& rss) {
+  const std::string who = party == kEgo ? "the ego" : "the other";
+  return who + " did not brake at " + format_number(rss.brake_min) + " m/s^2 once " +
+         (party == kEgo ? "the other" : "the ego") + " was in its path";
+}
+
+// One party at fault by the map; the other shares it when it did not respond.
+Verdict map_fault(const Trace& trace, const RoadMap& map, ActorId culprit, ActorId other,
+                  std::size_t k, std::string what, const RssParameters& rss) {
+  const ActorId victim = culprit == kEgo ? other : kEgo;
+  const std::string subject = culprit == kEgo ? "" : "the other ";
+  Verdict verdict{culprit == kEgo ? Responsibility::ego : Responsibility::other, subject + what};
+  if (failed_to_respond(trace, map, victim, culprit, k, rss)) {
+    verdict.responsibility = Responsibility::shared;
+    verdict.reason += ", and " + no_response_text(victim, rss);
+  }
+  return verdict;
+}
+
+std::optional<Verdict> map_rule(const Trace& trace, const RoadMap& map, ActorId other,
+                                std::size_t k, const RssParameters& rss) {
+  if (impact_angle(trace, other, k) < kAlongRoad) return std::nullopt;  // one road, RSS decides
+  if (!is_vehicle(trace.actors[other])) return std::nullopt;
+  const auto memory = static_cast<std::size_t>(kRightOfWayMemory / trace.dt);
+  const std::size_t first = k > memory ? k - memory : 0;
+  const std::vector<CrossedControl> ego_crossed = controls_crossed(trace, map, kEgo, first, k);
+  const std::vector<CrossedControl> other_crossed = controls_crossed(trace, map, other, first, k);
+  const std::optional<CrossedControl> ego_broke = first_violation(ego_crossed);
+  const std::optional<CrossedControl> other_broke = first_violation(other_crossed);
+  if (ego_broke && other_broke)
+    return Verdict{Responsibility::shared, "both broke the right of way: the ego " +
+                                               violation_text(trace, map, *ego_broke, k) +
+                                               ", the other " +
+                                               violation_text(trace, map, *other_broke, k)};
+  if (ego_broke)
+    return map_fault(trace, map, kEgo, other, k, violation_text(trace, map, *ego_broke, k), rss);
+  if (other_broke)
+    return map_fault(trace, map, other, other, k, violation_text(trace, map, *other_broke, k), rss);
+  // Priority: a stop or yield sign gives way to a road without one.
+  const std::optional<CrossedControl> ego_sign = first_sign(ego_crossed);
+  const std::optional<CrossedControl> other_sign = first_sign(other_crossed);
+  if (ego_sign.has_value() == other_sign.has_value()) return std::nullopt;
+  const CrossedControl& sign = ego_sign ? *ego_sign : *other_sign;
+  const std::string what = "did not give way at the " +
+                           std::string(sign.kind == FeatureKind::stop_sign ? "stop" : "yield") +
+                           " sign " + control_id(map, sign) + " to traffic with priority";
+  return map_fault(trace, map, ego_sign ? kEgo : other, other, k, what, rss);
+}
+
+// ---- an ego standing still ----
+
+std::optional<Verdict> stationary_rule(const Trace& trace, const RoadMap& map,
+                                       const Collision& collision, ActorId other, std::size_t k) {
+  const TraceActor& ego = trace.actors[kEgo];
+  if (ego.speed[k] > kStandstillSpeed || (k > 0 && ego.speed[k - 1] > kStandstillSpeed))
+    return std::nullopt;
+  const BodySide side = collision.first == kEgo ? collision.first_side : collision.second_side;
+  if (trace.actors[other].kind == TraceActorKind::pedestrian)
+    return Verdict{Responsibility::other, "a pedestrian walked into the " +
+                                              std::string(body_side_name(side)) +
+                                              " of the stopped ego"};
+  if (side != BodySide::rear)
+    return Verdict{Responsibility::other, "hit on its " + std::string(body_side_name(side)) +
+                                              " by " + described(trace.actors[other]) +
+                                              " while stopped"};
+  const ControlAhead ahead = control_ahead(trace, map, kEgo, k, kStoppedForControl);
+  const std::string where = ahead.red_light   ? " at a red light"
+                            : ahead.stop_sign ? " at a stop sign"
+                                              : "";
+  return Verdict{Responsibility::other, "hit from behind while stopped" + where};
+}
+
+// ---- entering a path: pedestrians and crossing traffic ----
+
+// "the other entered the ego's path 1.1 s before impact, less than the ego's stopping time at
+// 8 m/s^2 (1.5 s)", or with the gap and the safe distance when there was time to stop.
+std::string entry_text(const Trace& trace, const std::string& who, const std::string& where,
+                       const PathEntry& entry, std::size_t k, double safe_distance,
+                       const RssParameters& rss) {
+  const double before = trace.time[k] - entry.time;
+  const double stopping = trace.actors[kEgo].speed[entry.sample] / rss.brake_max;
+  std::string text =
+      who + " entered the ego's " + where + " " + tenths(before) + " s before impact";
+  if (entry.from_start)
+    text = who + " was in the ego's " + where + " from the start, " + tenths(before) +
+           " s before impact";
+  if (before < stopping)
+    return text + ", less than the ego's stopping time at " + format_number(rss.brake_max) +
+           " m/s^2 (" + tenths(stopping) + " s)";
+  return text + ", " + tenths(entry.gap) + " m ahead, within the ego's safe distance of " +
+         tenths(safe_distance) + " m";
+}
+
+double safe_distance_at_entry(const Trace& trace, const PathEntry& entry,
+                              const RssParameters& rss) {
+  const double ego_speed = trace.actors[kEgo].speed[entry.sample];
+  return rss_safe_longitudinal_same(ego_speed, ego_speed - entry.closing_speed,
+                                    rss.response_time_ego, rss);
+}
+
+// The other came into the ego's path (or the ego into the other's): the entrant is at fault when
+// it left less than the RSS safe distance; the one whose path it was when it then did not brake.
+std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorId other,
+                                  std::size_t k, const RssParameters& rss) {
+  const std::string other_name = described(trace.actors[other]);
+  const std::optional<PathEntry> into_ego = path_entry(trace, map, kEgo, other, k);
+  const bool ego_responded =
+      !into_ego || braked_properly(trace, kEgo, into_ego->sample, k, rss.brake_min, rss);
+  bool other_unsafe = false;
+  double safe = 0;
+  if (into_ego) {
+    safe = safe_distance_at_entry(trace, *into_ego, rss);
+    other_unsafe = into_ego->gap < safe || into_ego->from_start;
+  }
+  // The ego coming into a vehicle's path too close.
+  bool ego_unsafe = false;
+  if (is_vehicle(trace.actors[other]))
+    if (const std::optional<PathEntry> into_other = path_entry(trace, map, other, kEgo, k)) {
+      const double speed = trace.actors[other].speed[into_other->sample];
+      ego_unsafe =
+          !into_other->from_start &&
+          into_other->gap < rss_safe_longitudinal_same(speed, speed - into_other->closing_speed,
+                                                       rss.response_time_other, rss);
+    }
+  if (!into_ego && !ego_unsafe) {
+    if (trace.actors[other].kind != TraceActorKind::pedestrian) return std::nullopt;
+    return Verdict{Responsibility::other, "a pedestrian walked into the side of the moving ego"};
+  }
+  const std::string no_brake = "the ego did not brake at " + format_number(rss.brake_min) +
+                               " m/s^2 once " + definite(other_name) + " was in its path";
+  const bool ego_at_fault = !ego_responded || ego_unsafe;
+  const bool other_at_fault = other_unsafe;
+  std::string ego_part =
+      ego_unsafe ? "the ego pulled into the path of " + other_name + " that could not stop"
+                 : no_brake;
+  if (ego_at_fault && other_at_fault)
+    return Verdict{Responsibility::shared,
+                   entry_text(trace, definite(other_name), "path", *into_ego, k, safe, rss) +
+                       ", and " + ego_part};
+  if (ego_at_fault) {
+    if (!ego_unsafe)
+      ego_part = "hit " + other_name + " that entered its path " +
+                 tenths(trace.time[k] - into_ego->time) + " s before impact, " +
+                 tenths(into_ego->gap) + " m ahead (safe distance " + tenths(safe) +
+                 " m), without braking at " + format_number(rss.brake_min) + " m/s^2";
+    return Verdict{Responsibility::ego, ego_part};
+  }
+  if (!into_ego) return std::nullopt;
+  return Verdict{Responsibility::other,
+                 entry_text(trace, definite(other_name), "path", *into_ego, k, safe, rss)};
+}
+
+// ---- along one road: RSS ----
+
+std::string ego_fault_text(const Trace& trace, const ResponseViolation& v, const BlameTime& blame,
+                           ActorId other, bool opposite, std::size_t k) {
+  const std::string other_name = described(trace.actors[other]);
+  const std::string since = tenths(trace.time[k] - trace.time[blame.sample]) + " s before impact";
+  switch (v.fault) {
+    case ResponseFault::did_not_brake:
+      return (opposite ? "met " + other_name + " head-on" : "ran into " + other_name) +
+             ": braked at " + tenths(v.value) + " m/s^2 where RSS owes " + format_number(v.limit) +
+             " m/s^2 once the gap became unsafe, " + since;
+    case ResponseFault::accelerated:
+      return "accelerated at " + tenths(v.value) + " m/s^2 towards " + other_name +
+             " while the gap was unsafe";
+    case ResponseFault::braked_hard:
+      return "braked at " + tenths(v.value) + " m/s^2, harder than RSS's " +
+             format_number(v.limit) + " m/s^2, in front of " + other_name;
+    case ResponseFault::reversed: return "reversed into " + other_name;
+    case ResponseFault::moved_sideways: {
+      // Into the lane the other is on: a lane change, not a drift within its own lane.
+      const std::int32_t from = trace.actors[kEgo].lane[blame.sample];
+      const std::int32_t into = trace.actors[other].lane[k];
+      const bool changed_lane = from >= 0 && into >= 0 && from != into;
+      return (changed_lane ? "changed lane into " : "moved sideways into ") + other_name +
+             " alongside";
+    }
+  }
+  return "";
+}
+
+std::string other_fault_text(const Trace& trace, const ResponseViolation& v,
+                             const CollisionTriage& t, const std::string& other_name, bool opposite,
+                             std::size_t k, const RssParameters& rss) {
+  const std::string the = definite(other_name);
+  switch (v.fault) {
+    case ResponseFault::did_not_brake:
+      return std::string(opposite ? "met head-on by " : "hit from behind by ") + other_name +
+             " that braked at " + tenths(v.value) + " m/s^2 where RSS owes " +
+             format_number(v.limit) + " m/s^2";
+    case ResponseFault::accelerated:
+      return the + " accelerated at " + tenths(v.value) + " m/s^2 towards the ego while too close";
+    case ResponseFault::braked_hard:
+      return the + " ahead braked at " + tenths(v.value) + " m/s^2, harder than RSS's " +
+             format_number(v.limit) + " m/s^2";
+    case ResponseFault::reversed: return the + " ahead reversed into the ego";
+    case ResponseFault::moved_sideways:
+      if (t.entry && !t.entry->from_start && t.entry->gap > 0)
+        return entry_text(trace, the, "lane", *t.entry, k,
+                          safe_distance_at_entry(trace, *t.entry, rss), rss);
+      return the + " moved sideways into the ego";
+  }
+  return "";
+}
+
+Verdict rss_rule(const Trace& trace, const RoadMap& map, ActorId other, std::size_t k,
+                 const CollisionTriage& t, const RssParameters& rss) {
+  const BlameTime blame = rss_blame_time(trace, map, other, k, rss);
+  const std::vector<ResponseViolation> faults =
+      rss_improper_responses(trace, map, other, blame, k, rss);
+  const std::string other_name = described(trace.actors[other]);
+  const bool opposite = opposite_directions(trace, map, other, blame.sample);
+  const auto ego_fault = std::find_if(faults.begin(), faults.end(),
+                                      [](const ResponseViolation& v) { return v.actor == kEgo; });
+  const auto other_fault = std::find_if(faults.begin(), faults.end(),
+                                        [](const ResponseViolation& v) { return v.actor != kEgo; });
+  const bool ego = ego_fault != faults.end();
+  const bool them = other_fault != faults.end();
+  if (ego && them)
+    return {Responsibility::shared,
+            ego_fault_text(trace, *ego_fault, blame, other, opposite, k) + ", and " +
+                other_fault_text(trace, *other_fault, t, other_name, opposite, k, rss)};
+  if (ego)
+    return {Responsibility::ego, ego_fault_text(trace, *ego_fault, blame, other, opposite, k)};
+  if (them)
+    return {Responsibility::other,
+            other_fault_text(trace, *other_fault, t, other_name, opposite, k, rss)};
+  // Nobody broke the proper response: the danger was there from the start or came from what RSS
+  // does not see; the ego did what it owed.
+  if (t.entry)
+    return {Responsibility::other, entry_text(trace, definite(other_name), "path", *t.entry, k,
+                                              safe_distance_at_entry(trace, *t.entry, rss), rss) +
+                                       "; the ego responded as RSS requires"};
+  return {Responsibility::other, "the ego responded as RSS requires to " + other_name};
+}
+
+Verdict decide(const Trace& trace, const RoadMap& map, const Collision& collision, ActorId other,
+               std::size_t k, const CollisionTriage& t, const RssParameters& rss) {
+  const TraceActor& o = trace.actors[other];
+  if (o.kind == TraceActorKind::obstacle)
+    return {Responsibility::ego, "drove into a stationary obstacle (" + o.name + ")"};
+  if (std::optional<Verdict> verdict = map_rule(trace, map, other, k, rss)) return *verdict;
+  if (std::optional<Verdict> verdict = stationary_rule(trace, map, collision, other, k))
+    return *verdict;
+  const double angle = t.impact_angle;
+  const bool crossing = angle >= kAlongRoad && angle <= 180 - kAlongRoad;
+  if (o.kind == TraceActorKind::pedestrian || crossing)
+    if (std::optional<Verdict> verdict = entry_rule(trace, map, other, k, rss)) return *verdict;
+  return rss_rule(trace, map, other, k, t, rss);
+}
+
+}  // namespace
+
+std::string_view responsibility_name(Responsibility responsibility) {
+  switch (responsibility) {
+    case Responsibility::ego: return "ego";
+    case Responsibility::other: return "other";
+    case Responsibility::shared: return "shared";
+  }
+  return "ego";
+}
+
+CollisionResponsibility collision_responsibility(const Trace& trace, const RoadMap& map,
+                                                 std::size_t index, const RssParameters& rss) {
+  SCENFUZZ_DEMAND(index < trace.collisions.size());
+  const Collision& collision = trace.collisions[index];
+  SCENFUZZ_DEMAND(collision.first == kEgo && "the responsibility of a collision with the ego");
+  SCENFUZZ_DEMAND(trace.sample_count() > 0);
+  const ActorId other = collision.second;
+  const std::size_t k = sample_of(trace, collision.time);
+  CollisionResponsibility result;
+  result.collision = index;
+  result.other = other;
+  result.triage = triage(trace, map, other, k);
+  Verdict verdict = decide(trace, map, collision, other, k, result.triage, rss);
+  result.responsibility = verdict.responsibility;
+  result.reason = std::move(verdict.reason);
+  return result;
+}
+
+std::vector<CollisionResponsibility> ego_collision_responsibilities(const Trace& trace,
+                                                                    const RoadMap& map,
+                                                                    const RssParameters& rss) {
+  std::vector<CollisionResponsibility> out;
+  for (std::size_t i = 0; i < trace.collisions.size(); ++i)
+    if (trace.collisions[i].first == kEgo)
+      out.push_back(collision_responsibility(trace, map, i, rss));
+  return out;
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,419 @@
+// The responsibility oracle on traces built by hand on built-in maps: who is to blame for a
+// collision with the ego, why in words, and the triage numbers. Each trace ends at the first
+// contact, as a simulation does, with that contact recorded.
+#include "oracle/responsibility.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+#include "oracle/judge.hpp"
+#include "oracle/rss_distances.hpp"
+#include "physics/collision/footprint.hpp"
+#include "physics/map/builtin_maps.hpp"
+#include "physics/map/lane_queries.hpp"
+#include "physics/trace/trace_footprint.hpp"
+#include "tests/oracle/trace_fixtures.hpp"
+
+namespace scenfuzz {
+namespace {
+
+using test::empty_trace;
+using test::still_actor;
+
+constexpr double kDt = 0.05;
+constexpr double kCarLength = 4.6;
+constexpr double kCarWidth = 1.85;
+
+RoadMap builtin(const char* name) { return build_road_map(generate_builtin_map(name, {})); }
+
+// Where an actor is at time t: position, and its velocity (heading and speed follow from it).
+struct State {
+  double x = 0;
+  double y = 0;
+  double vx = 0;
+  double vy = 0;
+};
+using Motion = std::function<State(double t)>;
+
+// Fills an actor's columns from `motion`: heading along the velocity (kept when standing),
+// accelerations and yaw rates as the rates over the step ending at each sample, lanes from the
+// map.
+void move(const Trace& trace, const RoadMap& map, TraceActor& actor, const Motion& motion,
+          double standing_heading = 0) {
+  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+    const State s = motion(trace.time[i]);
+    actor.x[i] = s.x;
+    actor.y[i] = s.y;
+    actor.speed[i] = std::hypot(s.vx, s.vy);
+    actor.heading[i] = actor.speed[i] > 1e-9 ? std::atan2(s.vy, s.vx)
+                       : i > 0               ? actor.heading[i - 1]
+                                             : standing_heading;
+    if (i > 0) {
+      actor.acceleration[i] = (actor.speed[i] - actor.speed[i - 1]) / trace.dt;
+      actor.yaw_rate[i] = (actor.heading[i] - actor.heading[i - 1]) / trace.dt;
+    }
+    if (actor.kind == TraceActorKind::obstacle) continue;
+    const auto lane = project_to_lane(map, {s.x, s.y}, actor.heading[i]);
+    actor.lane[i] = lane && lane->inside ? static_cast<std::int32_t>(lane->lane) : -1;
+    actor.s[i] = lane && lane->inside ? lane->s : 0;
+  }
+}
+
+// Cuts the trace at the first contact of the ego with actor 1 and records it there.
+void end_at_contact(Trace& trace) {
+  std::size_t k = 0;
+  while (k < trace.sample_count() &&
+         signed_distance(footprint_at(trace, kEgo, k), footprint_at(trace, 1, k)) >= 0)
+    ++k;
+  ASSERT_LT(k, trace.sample_count()) << "the actors never touch";
+  const std::size_t n = k + 1;
+  trace.time.resize(n);
+  for (TraceActor& actor : trace.actors) {
+    for (auto* column : {&actor.x, &actor.y, &actor.heading, &actor.speed, &actor.acceleration,
+                         &actor.yaw_rate, &actor.s})
+      column->resize(n);
+    actor.lane.resize(n);
+  }
+  for (TraceLight& light : trace.lights) light.colour.resize(n);
+  const Footprint ego = footprint_at(trace, kEgo, k);
+  const Footprint other = footprint_at(trace, 1, k);
+  const MapPoint contact{(ego.centre.x + other.centre.x) / 2, (ego.centre.y + other.centre.y) / 2};
+  trace.collisions.push_back(
+      {trace.time[k], kEgo, 1, contact, side_of(ego, contact), side_of(other, contact)});
+  trace.events.push_back({TraceEventKind::collision, trace.time[k], 0, ""});
+  trace.end = EndReason::collision;
+}
+
+Trace two_actor_trace(double seconds, TraceActorKind other_kind = TraceActorKind::vehicle) {
+  Trace trace = empty_trace(static_cast<std::size_t>(seconds / kDt) + 1, kDt);
+  trace.actors.push_back(
+      still_actor(trace, "ego", TraceActorKind::ego, BodyShape::box, kCarLength, kCarWidth, 0, 0));
+  if (other_kind == TraceActorKind::pedestrian) {
+    trace.actors.push_back(
+        still_actor(trace, "ped", other_kind, BodyShape::cylinder, 0.6, 0.6, 0, 0));
+    trace.actors.back().category = ActorCategory::pedestrian;
+  } else {
+    trace.actors.push_back(
+        still_actor(trace, "npc", other_kind, BodyShape::box, kCarLength, kCarWidth, 0, 0));
+  }
+  return trace;
+}
+
+// The crossroads' lights as its plan shows them (north-south green 0-25 s, east-west red 0-30 s).
+void add_crossroads_lights(Trace& trace) {
+  for (const char* id : {"light_north", "light_south"}) {
+    TraceLight light{id, {}};
+    for (double t : trace.time)
+      light.colour.push_back(t < 25   ? SignalColour::green
+                             : t < 28 ? SignalColour::yellow
+                                      : SignalColour::red);
+    trace.lights.push_back(light);
+  }
+  for (const char* id : {"light_east", "light_west"})
+    trace.lights.push_back(
+        {id, std::vector<SignalColour>(trace.sample_count(), SignalColour::red)});
+}
+
+Motion cruise_east(double x0, double y, double speed) {
+  return [=](double t) { return State{x0 + speed * t, y, speed, 0}; };
+}
+
+Motion standing(double x, double y) {
+  return [=](double) { return State{x, y, 0, 0}; };
+}
+
+// Along +x from x0 at v0; from `from` braking at `decel` to a stop.
+Motion braking_east(double x0, double y, double v0, double from, double decel) {
+  return [=](double t) {
+    if (t <= from) return State{x0 + v0 * t, y, v0, 0};
+    const double tb = std::min(t - from, v0 / decel);
+    return State{x0 + v0 * from + v0 * tb - decel * tb * tb / 2, y, v0 - decel * tb, 0};
+  };
+}
+
+// Along +x at `speed` from x0, moving sideways from y0 by `shift` (sign: direction) from `from`:
+// lateral acceleration `a` up to `v_lat`, then steady.
+Motion sidestep_east(double x0, double y0, double speed, double from, double a, double v_lat,
+                     double shift) {
+  return [=](double t) {
+    const double dir = shift >= 0 ? 1 : -1;
+    double lateral = 0;
+    double v = 0;
+    if (t > from) {
+      const double ramp = v_lat / a;
+      const double u = t - from;
+      if (u <= ramp) {
+        lateral = a * u * u / 2;
+        v = a * u;
+      } else {
+        lateral = a * ramp * ramp / 2 + v_lat * (u - ramp);
+        v = v_lat;
+      }
+      if (lateral >= std::abs(shift)) {
+        lateral = std::abs(shift);
+        v = 0;
+      }
+    }
+    return State{x0 + speed * t, y0 + dir * lateral, speed, dir * v};
+  };
+}
+
+CollisionResponsibility judge(const Trace& trace, const RoadMap& map) {
+  return collision_responsibility(trace, map, 0, RssParameters{});
+}
+
+// On `straight`, east_1 runs along y = -1.75 and east_0 along y = -5.25.
+constexpr double kEast1 = -1.75;
+constexpr double kEast0 = -5.25;
+
+TEST(ResponsibilityTest, EgoStoppedAtARedLightAndRearEndedIsNotAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(10);
+  add_crossroads_lights(trace);
+  // west_in_1 along y = -1.75 eastwards, its stop line at x = -16; the ego's front 0.5 m before.
+  const double ego_x = -16.5 - kCarLength / 2;
+  move(trace, map, trace.actors[0], standing(ego_x, -1.75));
+  move(trace, map, trace.actors[1], cruise_east(ego_x - 60, -1.75, 10));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other);
+  EXPECT_EQ(r.reason, "hit from behind while stopped at a red light");
+  EXPECT_TRUE(r.triage.ego_stationary);
+  EXPECT_NEAR(r.triage.relative_speed, 10, 1e-9);
+  EXPECT_NEAR(r.triage.impact_angle, 0, 1e-9);
+  EXPECT_FALSE(r.triage.entry) << "the ego was hit from behind: nothing came into its path";
+}
+
+TEST(ResponsibilityTest, EgoRearEndingACarThatBrakesGentlyAfterASafeGapIsAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(20);
+  // 55 m apart at 15 m/s: more than RSS's 45.5 m, so the gap is safe until the lead brakes.
+  const double gap = 55 + kCarLength;
+  ASSERT_GT(55, rss_safe_longitudinal_same(15, 15, 1, RssParameters{}));
+  move(trace, map, trace.actors[0], cruise_east(10, kEast1, 15));
+  move(trace, map, trace.actors[1], braking_east(10 + gap, kEast1, 15, 2, 3));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason.rfind("ran into a car: braked at 0 m/s^2 where RSS owes 4 m/s^2", 0), 0u)
+      << r.reason;
+  EXPECT_NEAR(r.triage.ego_speed, 15, 1e-9);
+  EXPECT_FALSE(r.triage.ego_stationary);
+  ASSERT_TRUE(r.triage.entry);
+  EXPECT_TRUE(r.triage.entry->from_start) << "the car ahead was in the ego's lane all along";
+}
+
+TEST(ResponsibilityTest, ACarRearEndingTheEgoThatBrakesGentlyIsAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(20);
+  // The npc 90 m behind at 15 m/s (RSS's safe distance with rho 2 s is 83.4 m), never braking;
+  // the ego brakes at 1 m/s^2 from 2 s, well within RSS's 8 m/s^2, and is still moving at impact.
+  ASSERT_LT(rss_safe_longitudinal_same(15, 15, 2, RssParameters{}), 90);
+  move(trace, map, trace.actors[0], braking_east(100 + kCarLength, kEast1, 15, 2, 1));
+  move(trace, map, trace.actors[1], cruise_east(10, kEast1, 15));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason, "hit from behind by a car that braked at 0 m/s^2 where RSS owes 4 m/s^2");
+  EXPECT_FALSE(r.triage.ego_stationary);
+  EXPECT_FALSE(r.triage.ego_braking_at_limit);
+}
+
+TEST(ResponsibilityTest, ACutterEnteringTheEgosLaneJustBeforeImpactIsAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(12);
+  move(trace, map, trace.actors[0], cruise_east(10, kEast1, 12));
+  // Ahead on east_0 at 10 m/s; from 2.5 s it moves left into east_1.
+  move(trace, map, trace.actors[1], sidestep_east(24.7, kEast0, 10, 2.5, 1.5, 1.5, 3.5));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason,
+            "the car entered the ego's lane 1.1 s before impact, less than the ego's stopping "
+            "time at 8 m/s^2 (1.5 s)");
+  ASSERT_TRUE(r.triage.entry);
+  EXPECT_FALSE(r.triage.entry->from_start);
+  EXPECT_NEAR(trace.time.back() - r.triage.entry->time, 1.1, 0.05);
+  EXPECT_GT(r.triage.entry->gap, 0);
+  EXPECT_NEAR(r.triage.entry->closing_speed, 2, 0.1);
+  EXPECT_NEAR(r.triage.entry->time_to_collision,
+              r.triage.entry->gap / r.triage.entry->closing_speed, 1e-9);
+  EXPECT_NEAR(r.triage.entry->required_deceleration, 4 / (2 * r.triage.entry->gap), 0.2);
+}
+
+TEST(ResponsibilityTest, EgoChangingLaneIntoACarAlongsideIsAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10);
+  move(trace, map, trace.actors[0], sidestep_east(10, kEast1, 10, 1, 1, 1, -3.5));
+  move(trace, map, trace.actors[1], cruise_east(12, kEast0, 10));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason, "changed lane into a car alongside");
+}
+
+TEST(ResponsibilityTest, BothChangingLaneIntoEachOtherShareIt) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10);
+  move(trace, map, trace.actors[0], sidestep_east(10, kEast1, 10, 1, 1, 1, -3.5));
+  move(trace, map, trace.actors[1], sidestep_east(12, kEast0, 10, 1, 1, 1, 3.5));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::shared) << r.reason;
+  EXPECT_EQ(r.reason, "changed lane into a car alongside, and the car moved sideways into the ego");
+  EXPECT_TRUE(ego_responsible(r.responsibility));
+}
+
+TEST(ResponsibilityTest, EgoRunningARedLightIntoCrossingTrafficIsAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(8);
+  add_crossroads_lights(trace);
+  // The ego eastwards on west_in_1 (red), the npc northwards on south_in_1 (green); their paths
+  // cross at (1.75, -1.75), the ego there at 3 s, the npc 0.2 s later.
+  move(trace, map, trace.actors[0], cruise_east(1.75 - 36, -1.75, 12));
+  move(trace, map, trace.actors[1], [](double t) {
+    return State{1.75, -1.75 - 10 * 3.2 + 10 * t, 0, 10};
+  });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason.rfind("ran a red light (light_west) ", 0), 0u) << r.reason;
+  EXPECT_NEAR(r.triage.impact_angle, 90, 1e-9);
+}
+
+TEST(ResponsibilityTest, ARedLightRunnerHittingTheEgoIsAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(8);
+  add_crossroads_lights(trace);
+  // Now the npc comes from the west on red, the ego from the south on green, just ahead of it.
+  move(trace, map, trace.actors[1], cruise_east(1.75 - 36, -1.75, 12));
+  move(trace, map, trace.actors[0], [](double t) {
+    return State{1.75, -1.75 - 10 * 2.8 + 10 * t, 0, 10};
+  });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason.rfind("the other ran a red light (light_west) ", 0), 0u) << r.reason;
+}
+
+TEST(ResponsibilityTest, APedestrianWalkingIntoTheSideOfAStationaryEgoIsAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10, TraceActorKind::pedestrian);
+  move(trace, map, trace.actors[0], standing(50, kEast1));
+  move(trace, map, trace.actors[1], [](double t) { return State{50, -8 + 1.4 * t, 0, 1.4}; });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason, "a pedestrian walked into the right of the stopped ego");
+}
+
+TEST(ResponsibilityTest, EgoHittingAPedestrianItHadRoomToStopForIsAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10, TraceActorKind::pedestrian);
+  // The pedestrian is in the ego's lane from 1 s, 40 m ahead of an ego at 10 m/s that never
+  // brakes (RSS's safe distance: 34.5 m).
+  move(trace, map, trace.actors[0], cruise_east(0, kEast1, 10));
+  move(trace, map, trace.actors[1], [](double t) {
+    const double y = std::min(-4.5 + 2 * t, -1.75);
+    return State{60, y, 0, y < -1.75 ? 2.0 : 0.0};
+  });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason.rfind("hit a pedestrian that entered its path", 0), 0u) << r.reason;
+}
+
+TEST(ResponsibilityTest, DrivingIntoAnObstacleIsTheEgos) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10, TraceActorKind::obstacle);
+  move(trace, map, trace.actors[0], cruise_east(0, kEast1, 10));
+  move(trace, map, trace.actors[1], standing(40, kEast1));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego);
+  EXPECT_EQ(r.reason, "drove into a stationary obstacle (npc)");
+}
+
+TEST(ResponsibilityTest, EveryCollisionOfTheEgoIsJudgedAndOthersAreNot) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10, TraceActorKind::obstacle);
+  move(trace, map, trace.actors[0], cruise_east(0, kEast1, 10));
+  move(trace, map, trace.actors[1], standing(40, kEast1));
+  end_at_contact(trace);
+  trace.collisions.push_back({trace.time.back(), 1, 2, {}, BodySide::front, BodySide::rear});
+  const std::vector<CollisionResponsibility> all =
+      ego_collision_responsibilities(trace, map, RssParameters{});
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0].collision, 0u);
+  EXPECT_EQ(all[0].other, 1u);
+}
+
+TEST(ResponsibilityTest, TheCollisionOracleCountsOnlyCollisionsTheEgoIsResponsibleFor) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(10);
+  add_crossroads_lights(trace);
+  const double ego_x = -16.5 - kCarLength / 2;
+  move(trace, map, trace.actors[0], standing(ego_x, -1.75));
+  move(trace, map, trace.actors[1], cruise_east(ego_x - 60, -1.75, 10));
+  end_at_contact(trace);
+  const ScenarioTemplate no_specs;
+  const SourceFile file("inline.avu", "");
+  const std::vector<SpecVerdict> excused = judge_trace(no_specs, {}, trace, map, file);
+  ASSERT_EQ(excused.size(), 1u);
+  EXPECT_FALSE(excused[0].violated()) << "rear-ended at a red light: not the ego's fault";
+  EXPECT_GE(excused[0].robustness, 0);
+  EXPECT_LT(excused[0].robustness, 0.6) << "the clearance just before the contact";
+  EXPECT_EQ(excused[0].atom_text,
+            "the ego and npc (not counted: a collision not the ego's fault with npc)");
+  JudgeOptions all;
+  all.all_collisions = true;
+  const std::vector<SpecVerdict> counted = judge_trace(no_specs, {}, trace, map, file, all);
+  EXPECT_TRUE(counted[0].violated());
+  EXPECT_EQ(counted[0].atom_text, "the ego and npc");
+}
+
+TEST(RssParametersTest, DefaultsAreAdRssLibsAndNamesOverrideThem) {
+  const RssParameters defaults;
+  EXPECT_EQ(defaults.response_time_ego, 1);
+  EXPECT_EQ(defaults.response_time_other, 2);
+  EXPECT_EQ(defaults.accel_max, 3.5);
+  EXPECT_EQ(defaults.brake_min, 4);
+  EXPECT_EQ(defaults.brake_max, 8);
+  EXPECT_EQ(defaults.brake_min_correct, 3);
+  EXPECT_EQ(defaults.lateral_accel_max, 0.2);
+  EXPECT_EQ(defaults.lateral_brake_min, 0.8);
+  EXPECT_EQ(defaults.lateral_fluctuation_margin, 0.1);
+  const RssParametersOrError parsed =
+      parse_rss_parameters({"brake_min=3", "response_time_ego=0.5"});
+  ASSERT_TRUE(parsed.parameters) << parsed.error;
+  EXPECT_EQ(parsed.parameters->brake_min, 3);
+  EXPECT_EQ(parsed.parameters->response_time_ego, 0.5);
+  EXPECT_EQ(parse_rss_parameters({"brake_mid=3"}).error,
+            "'brake_mid' is not an RSS parameter (one of response_time_ego, response_time_other, "
+            "accel_max, brake_min, brake_max, brake_min_correct, lateral_accel_max, "
+            "lateral_brake_min, lateral_fluctuation_margin)");
+  EXPECT_EQ(parse_rss_parameters({"brake_min=0"}).error,
+            "'brake_min=0': the value must be a number > 0");
+  EXPECT_EQ(parse_rss_parameters({"brake_min"}).error, "'brake_min' is not NAME=VALUE");
+  EXPECT_TRUE(parse_rss_parameters({"lateral_fluctuation_margin=0"}).parameters);
+}
+
+TEST(RssDistancesTest, SafeDistancesAreThePapers) {
+  const RssParameters rss;
+  // 10 m/s behind 10 m/s, rho 1: 10 + 1.75 + 13.5^2/8 - 100/16.
+  EXPECT_NEAR(rss_safe_longitudinal_same(10, 10, 1, rss), 10 + 1.75 + 13.5 * 13.5 / 8 - 6.25,
+              1e-12);
+  EXPECT_EQ(rss_safe_longitudinal_same(0, 30, 1, rss), 0) << "never negative";
+  // Neither moving sideways: the margin plus what each may drift within its response time.
+  const double drift_ego = 0.5 * 0.2 * 1 + 0.2 * 0.2 / 1.6;
+  const double drift_other = 0.5 * 0.2 * 4 + 0.4 * 0.4 / 1.6;
+  EXPECT_NEAR(rss_safe_lateral(0, 1, 0, 2, rss), 0.1 + drift_ego + drift_other, 1e-12);
+  // Moving apart fast enough: only the margin.
+  EXPECT_NEAR(rss_safe_lateral(-3, 1, -3, 2, rss), 0.1, 1e-12);
+}
+
+}  // namespace
+}  // namespace scenfuzz
