@@ -36,6 +36,8 @@ nlohmann::json search_identity(const FuzzCommandOptions& options, const SourceFi
           {"dt", simulation.dt},
           {"continue_after_collision", simulation.continue_after_collision},
           {"npc_behaviour", simulation.npc_behaviour},
+          {"all_collisions", simulation.all_collisions},
+          {"rss", simulation.rss},
           {"ego_step_timeout", simulation.ego_step_timeout},
           {"ego_start_timeout", simulation.ego_start_timeout}};
 }

@@ -46,6 +46,8 @@ std::string simulation_flags(const SimulationCommandOptions& options) {
   if (options.dt != defaults.dt) flags += " --dt " + format_number(options.dt);
   if (options.continue_after_collision) flags += " --continue-after-collision";
   if (!options.npc_behaviour.empty()) flags += " --npc-behaviour " + options.npc_behaviour;
+  if (options.all_collisions) flags += " --all-collisions";
+  for (const std::string& setting : options.rss) flags += " --rss " + shell_quote(setting);
   if (options.ego_step_timeout != defaults.ego_step_timeout)
     flags += " --ego-step-timeout " + format_number(options.ego_step_timeout);
   if (options.ego_start_timeout != defaults.ego_start_timeout)

@@ -71,6 +71,8 @@ TEST_F(WmgFuzzTest, TheCutInYieldsFindingsThatReplay) {
   std::smatch replay;
   ASSERT_TRUE(
       std::regex_search(text, replay, std::regex("# replay: scenfuzz run (\\S+) --seed (\\d+)")));
+  // The replay judges as the search did.
+  EXPECT_NE(text.find("--all-collisions"), std::string::npos) << text;
   const Outcome replayed = scenfuzz({"run", scenario, "--seed", replay[2].str(), "--all-collisions",
                                      "--json", "--out", (dir_ / "replay").string()});
   ASSERT_EQ(replayed.exit_code, 1) << replayed.err;
