@@ -28,6 +28,8 @@ constexpr double legend_key = 26;
 constexpr double max_picture_aspect = 3;
 constexpr double min_legend_width = 300;  // the narrowest room beside the inset it goes into
 constexpr std::size_t max_collision_labels = 4;
+constexpr double min_time_label_spacing = 14;  // pixels between the times along one path
+constexpr double min_ghost_movement = 0.3;     // m an actor must move for a faint body of its own
 
 constexpr TextFont title_font{17, true};
 constexpr TextFont summary_font{13, false};
@@ -440,15 +442,32 @@ void append_main_view(std::string& out, std::string& labels, const Picture& pict
                   trace.actors[id].name, name_font, picture.styles[id].colour);
   if (trace.ego_target)
     place_label(labels, placer, panel, *trace.ego_target, 9, "target", name_font, text_colour);
-  // Times beside the bodies of the ego and the other party, as room allows.
+  // Times beside the bodies of the ego and the other party, as room allows; one for a body
+  // that stood where an earlier labelled one is (a standing car would pile them up).
   for (const std::size_t id : label_order(picture)) {
     if (id != kEgo && !(picture.moment && picture.moment->other == id)) continue;
-    for (const std::size_t sample : snapshots)
-      if (sample > 0 && drawn_at(trace, id, sample))
-        place_label(labels, placer, panel, position(trace.actors[id], sample),
-                    body_clearance(panel, trace.actors[id]),
-                    number_text(trace.time[sample], 1) + " s", time_font, detail_colour);
+    std::vector<std::pair<double, double>> labelled;
+    for (const std::size_t sample : snapshots) {
+      if (sample == 0 || !drawn_at(trace, id, sample)) continue;
+      const MapPoint at = position(trace.actors[id], sample);
+      const auto [x, y] = panel.pixel(at);
+      if (std::any_of(labelled.begin(), labelled.end(), [&](const auto& p) {
+            return std::hypot(p.first - x, p.second - y) < min_time_label_spacing;
+          }))
+        continue;
+      labelled.emplace_back(x, y);
+      place_label(labels, placer, panel, at, body_clearance(panel, trace.actors[id]),
+                  number_text(trace.time[sample], 1) + " s", time_font, detail_colour);
+    }
   }
+}
+
+// Whether actor id stood still from sample `earlier` to `later` (its faint body would lie under
+// the later one, saying nothing).
+bool stood_still(const Trace& trace, std::size_t id, std::size_t earlier, std::size_t later) {
+  return drawn_at(trace, id, later) &&
+         distance(position(trace.actors[id], earlier), position(trace.actors[id], later)) <
+             min_ghost_movement;
 }
 
 void append_inset_view(std::string& out, std::string& labels, const Picture& picture,
@@ -473,6 +492,9 @@ void append_inset_view(std::string& out, std::string& labels, const Picture& pic
       const std::optional<std::size_t> sample = sample_before(trace, moment.sample, back);
       if (!sample || !drawn_at(trace, id, *sample) ||
           !panel.shows(position(trace.actors[id], *sample)))
+        continue;
+      if (back > 0 &&
+          stood_still(trace, id, *sample, *sample_before(trace, moment.sample, back - 1)))
         continue;
       any = true;
       append_body(back > 0 ? out : event_bodies, panel, trace.actors[id], *sample,
@@ -518,7 +540,8 @@ void append_inset_view(std::string& out, std::string& labels, const Picture& pic
     if (id != kEgo && moment.other != id) continue;
     for (int back = 1; back <= static_cast<int>(kInsetLookBack); ++back) {
       const std::optional<std::size_t> sample = sample_before(trace, moment.sample, back);
-      if (sample && drawn_at(trace, id, *sample))
+      if (sample && drawn_at(trace, id, *sample) &&
+          !stood_still(trace, id, *sample, *sample_before(trace, moment.sample, back - 1)))
         place_label(labels, placer, panel, position(trace.actors[id], *sample),
                     body_clearance(panel, trace.actors[id]), "-" + std::to_string(back) + " s",
                     time_font, detail_colour);
