@@ -1,5 +1,6 @@
 // `scenfuzz run FILE`: simulate one concrete scenario (or one point of a logical one) and report
 // what happened; write the trace (CSV, JSON), a bird's-eye SVG and the concrete scenario.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -312,11 +313,18 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     std::vector<std::pair<std::string, std::string>> outputs = {
         {"scenario" + concrete_extension(file.path()),
          print_concrete_scenario(file, scenario, values)}};
+    // The picture's title names the worst spec (responsibility is not decided here yet).
+    TraceSvgOptions picture;
+    const auto worst = std::min_element(
+        verdicts.begin(), verdicts.end(),
+        [](const SpecVerdict& a, const SpecVerdict& b) { return a.robustness < b.robustness; });
+    if (worst != verdicts.end())
+      picture.caption = {worst->name, worst->robustness, worst->time, worst->atom_text, "", ""};
     // An ego that failed before the first sample leaves no trace to write.
     if (trace.sample_count() > 0)
       outputs.insert(outputs.begin(), {{"trace.csv", trace_csv(trace, lane_ids)},
                                        {"trace.json", trace_json(trace)},
-                                       {"trace.svg", render_trace_svg(*map, trace)}});
+                                       {"trace.svg", render_trace_svg(*map, trace, picture)}});
     for (const auto& [name, content] : outputs) {
       std::string failure = write_file_atomically(dir / name, content);
       if (!failure.empty()) {

@@ -207,7 +207,14 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
     std::vector<std::string> lane_ids;
     for (const Lane& lane : run.map->lanes()) lane_ids.push_back(lane.id);
     files.emplace_back(finding_path(finding, ".csv"), trace_csv(*run.trace, lane_ids));
-    files.emplace_back(finding_path(finding, ".svg"), render_trace_svg(*run.map, *run.trace));
+    TraceSvgOptions picture;  // the title names the finding's spec; ego failures have no verdict
+    picture.caption.spec = finding.objective_name;
+    if (!finding.ego_failure()) {
+      const SpecVerdict& verdict = run.verdicts[finding.objective];
+      picture.caption = {verdict.name, verdict.robustness, verdict.time, verdict.atom_text, "", ""};
+    }
+    files.emplace_back(finding_path(finding, ".svg"),
+                       render_trace_svg(*run.map, *run.trace, picture));
   }
   if (finding.ego_failure() && !run.trace->ego_failure->last_observation.empty())
     files.emplace_back(finding_path(finding, ".observation.json"),

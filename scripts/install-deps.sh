@@ -12,6 +12,7 @@ packages=(
   libprotobuf-dev protobuf-compiler              # Apollo HD maps
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  librsvg2-bin                                   # rsvg-convert: tests render every trace picture
 )
 
 missing=()

@@ -259,8 +259,12 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     truth[k - 1].width = trace.actors[k].width;
   }
 
-  Perception perception(degraded(options.perception, setup.conditions),
-                        options.seed ^ kPerceptionStream, dt);
+  const PerceptionSettings sensing = degraded(options.perception, setup.conditions);
+  Perception perception(sensing, options.seed ^ kPerceptionStream, dt);
+  trace.sensing = {sensing.vehicle_range, sensing.pedestrian_range,
+                   sensing.vehicle_range < options.perception.vehicle_range ||
+                       sensing.pedestrian_range < options.perception.pedestrian_range};
+  if (setup.ego_target) trace.ego_target = setup.ego_target->position;
   RouteTracker route(map, setup.ego_route, setup.speed_limits, options.driver.default_speed_limit);
   ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver);
   TrafficSignals signals(map, setup.lights);

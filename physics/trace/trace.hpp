@@ -130,6 +130,14 @@ struct EgoFailure {
   std::string last_observation;  // the last observation handed to the plugin (JSON); empty at 0
 };
 
+// How far the ego's perception reached in this run (perception.hpp's settings degraded by the
+// scenario's weather and darkness, which hold for the whole run).
+struct TraceSensing {
+  double vehicle_range = 0;     // m; 0: not recorded
+  double pedestrian_range = 0;  // m
+  bool limited = false;         // shorter than in clear daylight, by weather or darkness
+};
+
 struct Trace {
   std::string map_name;
   std::uint64_t seed = 0;
@@ -142,6 +150,8 @@ struct Trace {
   std::vector<TraceEvent> events;  // in time order
   EndReason end = EndReason::duration;
   std::optional<EgoFailure> ego_failure;  // set exactly when end is EndReason::ego_failure
+  std::optional<MapPoint> ego_target;     // where the ego was to go, when it had a target
+  TraceSensing sensing;
 
   std::size_t sample_count() const { return time.size(); }
   // The actor named `name`, or nullopt.

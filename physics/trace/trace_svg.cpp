@@ -1,585 +1,783 @@
-// render_trace_svg. The roads are render_map_svg_layer's drawing of the map in the picture's own
-// frame, and the trace is drawn over them in the same coordinates. Sizes of marks and text are
-// given in pixels and converted to metres, so they read the same at any scale.
+// render_trace_svg: lays the picture out in pixels (title block, main view, inset with its
+// caption, legend), then draws each view as a nested <svg> in map metres over one shared drawing
+// of the roads, and places every label with a LabelPlacer so that none clips or overlaps.
 #include "physics/trace/trace_svg.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
-#include <numbers>
 #include <set>
-#include <span>
 #include <string_view>
 #include <vector>
 
 #include "physics/collision/body_side.hpp"
 #include "physics/map/map_svg.hpp"
+#include "physics/trace/picture_regions.hpp"
+#include "physics/trace/svg_writing.hpp"
+#include "physics/trace/trace_moment.hpp"
+#include "physics/trace/trace_svg_parts.hpp"
 
 namespace scenfuzz {
 namespace {
 
-constexpr double default_image_pixels = 1600;  // the longer side, when no scale is asked for
-constexpr double min_margin = 10;              // metres around the actors
-constexpr double margin_fraction = 0.1;        // of the region's longer side
-constexpr int path_shades = 12;                // time slices per path, light to dark
+constexpr double main_fit_pixels = 1000;  // the main view's longer side, without a scale
+constexpr double inset_fit_pixels = 440;  // the inset's longer side
+constexpr double padding = 14;
+constexpr double gap = 18;
+constexpr double legend_row = 22;
+constexpr double legend_key = 26;
+constexpr double max_picture_aspect = 3;
+constexpr double min_legend_width = 300;  // the narrowest room beside the inset it goes into
+constexpr std::size_t max_collision_labels = 4;
+constexpr double min_time_label_spacing = 14;  // pixels between the times along one path
+constexpr double min_ghost_movement = 0.3;     // m an actor must move for a faint body of its own
 
-// Pixel sizes, converted to metres with the drawing's scale.
-constexpr double path_width_pixels = 3.5;
-constexpr double box_stroke_pixels = 1.2;
-constexpr double name_font_pixels = 13;
-constexpr double time_font_pixels = 10;
-constexpr double collision_font_pixels = 12;
-constexpr double collision_star_pixels = 9;
-constexpr double halo_pixels = 3;
+constexpr TextFont title_font{17, true};
+constexpr TextFont summary_font{13, false};
+constexpr TextFont emphasis_font{13, true};
+constexpr TextFont detail_font{12, false};
+constexpr TextFont name_font{13, true};
+constexpr TextFont time_font{11, false};
+constexpr TextFont speed_font{12, true};
+constexpr TextFont legend_font{12, false};
 
-// The legend strip below the drawing is laid out directly in pixels.
-constexpr double legend_padding = 8;
-constexpr double legend_title_height = 22;
-constexpr double legend_row_height = 20;
-constexpr double legend_key_length = 24;
-constexpr double legend_character_width = 7;  // of the 12 px legend font, roughly
+constexpr std::string_view text_colour = "#000";
+constexpr std::string_view detail_colour = "#404040";
+constexpr std::string_view collision_colour = "#b00000";
 
-constexpr std::string_view ego_colour = "#1565c0";
-constexpr std::string_view obstacle_colour = "#505050";
-constexpr std::array other_colours{std::string_view("#e07000"), std::string_view("#2a9d3a"),
-                                   std::string_view("#8e44ad"), std::string_view("#8b5a2b"),
-                                   std::string_view("#0097a7"), std::string_view("#c2185b"),
-                                   std::string_view("#7f8c00"), std::string_view("#d4a017")};
+std::string seconds(double t) { return fixed_text(t, 2) + " s"; }
 
-// `count` pixels in metres, the drawing's unit.
-double pixels(const SvgFrame& frame, double count) { return count * frame.metres_per_pixel; }
-
-void append_escaped(std::string& out, std::string_view text) {
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
+std::string actor_name(const Trace& trace, std::size_t id) {
+  return id < trace.actors.size() ? trace.actors[id].name : "actor " + std::to_string(id);
 }
 
-// Millimetres, without trailing zeros.
-void append_number(std::string& out, double value, int decimals = 3) {
-  if (!std::isfinite(value)) {
-    out += '0';
-    return;
-  }
-  const double scale = std::pow(10.0, decimals);
-  const double rounded = std::round(value * scale) / scale;
-  std::array<char, 48> buffer{};
-  const auto [end, error] =
-      std::to_chars(buffer.data(), buffer.data() + buffer.size(), rounded == 0 ? 0.0 : rounded,
-                    std::chars_format::fixed, decimals);
-  if (error != std::errc()) {
-    out += '0';
-    return;
-  }
-  std::string_view text(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
-  if (text.find('.') != std::string_view::npos) {
-    while (text.ends_with('0')) text.remove_suffix(1);
-    if (text.ends_with('.')) text.remove_suffix(1);
-  }
-  out += text;
+MapPoint position(const TraceActor& actor, std::size_t i) { return {actor.x[i], actor.y[i]}; }
+
+double speed_at(const TraceActor& actor, std::size_t i) {
+  const MapPoint v = velocity_at(actor, i);
+  return std::hypot(v.x, v.y);
 }
 
-// With its trailing zeros, as people write times: "7.00 s".
-std::string fixed_text(double value, int decimals) {
-  std::array<char, 48> buffer{};
-  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                          std::chars_format::fixed, decimals);
-  return error == std::errc() ? std::string(buffer.data(), end) : std::string("?");
+// The sample `seconds` before sample i, if the run had started by then.
+std::optional<std::size_t> sample_before(const Trace& trace, std::size_t i, double seconds) {
+  const double steps = std::round(seconds / std::max(trace.dt, 1e-6));
+  if (steps > static_cast<double>(i)) return std::nullopt;
+  return i - static_cast<std::size_t>(steps);
 }
 
-std::string number_text(double value, int decimals) {
+// ---- what the title block says ----
+
+struct TextLine {
   std::string text;
-  append_number(text, value, decimals);
-  return text;
-}
-
-void append_point(std::string& out, const SvgFrame& frame, MapPoint point) {
-  append_number(out, point.x - frame.origin.x);
-  out += ',';
-  append_number(out, frame.origin.y - point.y);
-}
-
-void append_attribute(std::string& out, std::string_view name, double value) {
-  out += ' ';
-  out += name;
-  out += "=\"";
-  append_number(out, value);
-  out += '"';
-}
-
-// A five-pointed star centred at (x, y) in drawing coordinates (y down).
-void append_star(std::string& out, double x, double y, double radius) {
-  out += "<polygon class=\"trace-collision\" points=\"";
-  for (int i = 0; i < 10; ++i) {
-    const double reach = i % 2 == 0 ? radius : radius * 0.45;
-    const double angle = -std::numbers::pi / 2 + i * std::numbers::pi / 5;
-    if (i > 0) out += ' ';
-    append_number(out, x + reach * std::cos(angle));
-    out += ',';
-    append_number(out, y + reach * std::sin(angle));
-  }
-  out += "\"/>\n";
-}
-
-bool finite(MapPoint point) { return std::isfinite(point.x) && std::isfinite(point.y); }
-
-MapPoint position(const TraceActor& actor, std::size_t sample) {
-  return {actor.x[sample], actor.y[sample]};
-}
-
-// Whether sample i of the actor is drawn: it is on the map then (background traffic comes and
-// goes) at a finite position.
-bool drawn(const TraceActor& actor, std::size_t i) {
-  return present_at(actor, i) && finite(position(actor, i));
-}
-
-bool round_body(const TraceActor& actor) {
-  return actor.kind == TraceActorKind::pedestrian ||
-         (actor.kind == TraceActorKind::obstacle && actor.shape != BodyShape::box);
-}
-
-std::string_view actor_colour(const Trace& trace, std::size_t id) {
-  if (trace.actors[id].kind == TraceActorKind::ego) return ego_colour;
-  if (trace.actors[id].kind == TraceActorKind::obstacle) return obstacle_colour;
-  return other_colours[(id - 1) % other_colours.size()];
-}
-
-// ---- the region ----
-
-MapBounds visited_region(const RoadMap& map, const Trace& trace) {
-  MapBounds bounds;
-  double largest_body = 0;
-  for (const TraceActor& actor : trace.actors) {
-    bool seen = false;
-    for (std::size_t i = 0; i < actor.x.size(); ++i) {
-      if (!drawn(actor, i)) continue;
-      bounds.include(position(actor, i));
-      seen = true;
-    }
-    if (seen) largest_body = std::max(largest_body, std::hypot(actor.length, actor.width));
-  }
-  for (const Collision& collision : trace.collisions)
-    if (finite(collision.point)) bounds.include(collision.point);
-  if (bounds.empty()) bounds = map.bounds();
-  if (bounds.empty()) bounds.include({0, 0});
-  const double extent = std::max(bounds.max.x - bounds.min.x, bounds.max.y - bounds.min.y);
-  const double margin = std::max(min_margin, margin_fraction * extent) + largest_body / 2;
-  bounds.include({bounds.min.x - margin, bounds.min.y - margin});
-  bounds.include({bounds.max.x + margin, bounds.max.y + margin});
-  return bounds;
-}
-
-// ---- the legend's layout, in pixels ----
-
-struct LegendEntry {
-  std::string text;
-  std::string_view colour;  // empty: the collision star
+  TextFont font;
+  std::string_view colour = text_colour;
 };
 
-struct LegendLayout {
-  std::vector<std::pair<double, double>> positions;  // left and middle of each entry
-  double height = 0;
-};
-
-double entry_width(const LegendEntry& entry) {
-  return legend_key_length + 6 + static_cast<double>(entry.text.size()) * legend_character_width +
-         16;
-}
-
-LegendLayout legend_layout(const std::vector<LegendEntry>& entries, double width_pixels) {
-  LegendLayout layout;
-  double x = legend_padding;
-  double row = 0;
-  for (const LegendEntry& entry : entries) {
-    const double width = entry_width(entry);
-    if (x > legend_padding && x + width > width_pixels - legend_padding) {
-      x = legend_padding;
-      ++row;
-    }
-    layout.positions.emplace_back(
-        x, legend_padding + legend_title_height + (row + 0.5) * legend_row_height);
-    x += width;
+std::string title_line(const Trace& trace, const TraceCaption& caption) {
+  if (caption.spec.empty())
+    return "Trace on " + (trace.map_name.empty() ? std::string("a map") : trace.map_name) +
+           " (seed " + std::to_string(trace.seed) + ")";
+  std::string title = "Spec " + caption.spec;
+  if (caption.robustness) {
+    title += *caption.robustness < 0 ? " violated" : " satisfied";
+    title += ", robustness " + number_text(*caption.robustness, 4);
   }
-  layout.height = 2 * legend_padding + legend_title_height + (row + 1) * legend_row_height;
-  return layout;
-}
-
-std::string duration_text(const Trace& trace) {
-  const double duration = trace.time.empty() ? 0 : trace.time.back();
-  return fixed_text(duration, 2) + " s";
-}
-
-std::string title_text(const Trace& trace) {
-  std::string title = "Trace on " + (trace.map_name.empty() ? "a map" : trace.map_name) +
-                      " (seed " + std::to_string(trace.seed) + "): ended by " +
-                      std::string(end_reason_name(trace.end)) + " after " + duration_text(trace);
+  if (caption.time) title += " at " + seconds(*caption.time);
   return title;
 }
 
-void append_legend(std::string& out, const SvgFrame& frame, const std::vector<LegendEntry>& entries,
-                   const LegendLayout& layout, const std::string& title) {
-  out += "<g class=\"trace-legend\" transform=\"translate(0 ";
-  append_number(out, frame.height);
-  out += ") scale(";
-  std::array<char, 32> buffer{};
-  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
-                                          frame.metres_per_pixel, std::chars_format::general, 6);
-  out += error == std::errc() ? std::string_view(buffer.data(), end) : std::string_view("1");
-  out += ")\">\n<rect class=\"trace-legend-background\" x=\"0\" y=\"0\"";
-  append_attribute(out, "width", frame.width / frame.metres_per_pixel);
-  append_attribute(out, "height", layout.height);
-  out += "/>\n<text class=\"trace-legend-title\"";
-  append_attribute(out, "x", legend_padding);
-  append_attribute(out, "y", legend_padding + legend_title_height / 2);
-  out += '>';
-  append_escaped(out, title);
-  out += "</text>\n";
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const auto [x, y] = layout.positions[i];
-    if (entries[i].colour.empty()) {
-      append_star(out, x + legend_key_length / 2, y, 7);
-    } else {
-      out += "<line class=\"trace-legend-key\" stroke=\"";
-      out += entries[i].colour;
-      out += '"';
+std::string event_line(const Trace& trace, const TraceMoment& moment) {
+  const TraceActor& ego = trace.actors[kEgo];
+  const std::size_t i = moment.sample;
+  const auto speeds = [&](ActorId other) {
+    const TraceActor& them = trace.actors[other];
+    const MapPoint a = velocity_at(ego, i), b = velocity_at(them, i);
+    return "; " + ego.name + " at " + number_text(speed_at(ego, i), 1) + " m/s, " + them.name +
+           " at " + number_text(speed_at(them, i), 1) + " m/s (closing " +
+           number_text(std::hypot(a.x - b.x, a.y - b.y), 1) + " m/s)";
+  };
+  if (moment.collision) {
+    const Collision& c = trace.collisions[*moment.collision];
+    const bool ego_first = c.first == kEgo;
+    const ActorId other = ego_first ? c.second : c.first;
+    return "Collision at " + seconds(c.time) + ": " + ego.name + "'s " +
+           std::string(body_side_name(ego_first ? c.first_side : c.second_side)) + " with " +
+           actor_name(trace, other) + "'s " +
+           std::string(body_side_name(ego_first ? c.second_side : c.first_side)) + speeds(other);
+  }
+  std::string when = moment.kind == MomentKind::verdict            ? "the verdict's time"
+                     : moment.kind == MomentKind::nearest_approach ? "the nearest approach"
+                                                                   : "the end of the run";
+  if (!moment.other)
+    return "No collision with " + ego.name + "; shown at " + when + ", " + seconds(moment.time);
+  const double gap_metres = std::max(0.0, gap_to_ego(trace, *moment.other, i));
+  return "No collision with " + ego.name + "; at " + when + ", " + seconds(moment.time) + ", " +
+         trace.actors[*moment.other].name + " is nearest (about " + number_text(gap_metres, 1) +
+         " m between bodies)" + speeds(*moment.other);
+}
+
+std::vector<TextLine> title_block(const Trace& trace, const std::optional<TraceMoment>& moment,
+                                  const TraceCaption& caption) {
+  std::vector<TextLine> lines{{title_line(trace, caption), title_font}};
+  if (moment) lines.push_back({event_line(trace, *moment), summary_font});
+  if (!caption.responsibility.empty())
+    lines.push_back({"Responsibility: " + caption.responsibility +
+                         (caption.reason.empty() ? "" : " - " + caption.reason),
+                     emphasis_font});
+  else if (!caption.reason.empty())
+    lines.push_back({"Reason: " + caption.reason, emphasis_font});
+  std::string details = (trace.map_name.empty() ? std::string("map") : trace.map_name) + ", seed " +
+                        std::to_string(trace.seed) + "; ended by " +
+                        std::string(end_reason_name(trace.end)) + " after " +
+                        seconds(trace.time.empty() ? 0 : trace.time.back());
+  if (!caption.atom.empty()) details += "; atom " + caption.atom;
+  lines.push_back({details, detail_font, detail_colour});
+  return lines;
+}
+
+// The lines wrapped to `width`, each keeping its font.
+std::vector<TextLine> wrapped_lines(const std::vector<TextLine>& lines, double width) {
+  std::vector<TextLine> out;
+  for (const TextLine& line : lines)
+    for (std::string& part : wrapped(line.text, line.font, width))
+      out.push_back({std::move(part), line.font, line.colour});
+  return out;
+}
+
+// One line's height: its text's box (with the halo) and a pixel between lines.
+double line_height(const TextFont& font) { return label_at(0, 0, "", font).box.height() + 1; }
+
+double lines_height(const std::vector<TextLine>& lines) {
+  double height = 0;
+  for (const TextLine& line : lines) height += line_height(line.font);
+  return height;
+}
+
+// Each line's text from its top-left corner down.
+void append_lines(std::string& out, const std::vector<TextLine>& lines, double left, double top) {
+  for (const TextLine& line : lines) {
+    const PlacedLabel label = label_at(left, top, line.text, line.font);
+    append_text(out, label, line.text, line.font, line.colour);
+    top += line_height(line.font);
+  }
+}
+
+std::string inset_caption(const Trace& trace, const TraceMoment& moment) {
+  std::string what = moment.collision                     ? "the collision"
+                     : moment.kind == MomentKind::verdict ? "the verdict's time"
+                     : moment.kind == MomentKind::nearest_approach
+                         ? "the nearest approach to " + actor_name(trace, *moment.other)
+                         : "the end";
+  return "Zoomed on " + what + " at " + seconds(moment.time) +
+         ": bodies then (bold) and 1, 2, 3 s before (faint); arrows show speed, 1 s of travel";
+}
+
+// ---- the legend ----
+
+enum class LegendKey { line, star, target, lights, perception_vehicles, perception_pedestrians };
+
+struct LegendEntry {
+  std::string text;
+  LegendKey key = LegendKey::line;
+  std::string_view colour;
+};
+
+struct LegendPlace {
+  double left = 0;
+  double middle = 0;  // of its row
+};
+
+double legend_entry_width(const LegendEntry& entry, double available) {
+  return legend_key + 6 +
+         std::min(estimated_text_width(entry.text, legend_font), available - legend_key - 10) + 18;
+}
+
+// Rows of entries within `width`; the legend's height.
+double legend_places(const std::vector<LegendEntry>& entries, double width,
+                     std::vector<LegendPlace>& places) {
+  double x = 0;
+  int row = 0;
+  for (const LegendEntry& entry : entries) {
+    const double entry_width = legend_entry_width(entry, width);
+    if (x > 0 && x + entry_width > width) {
+      x = 0;
+      ++row;
+    }
+    places.push_back({x, (row + 0.5) * legend_row});
+    x += entry_width;
+  }
+  return entries.empty() ? 0 : (row + 1) * legend_row;
+}
+
+void append_legend_key(std::string& out, const LegendEntry& entry, double x, double y) {
+  switch (entry.key) {
+    case LegendKey::line:
+      out += "<line class=\"trace-legend-key\"";
+      append_attribute(out, "stroke", entry.colour);
       append_attribute(out, "x1", x);
       append_attribute(out, "y1", y);
-      append_attribute(out, "x2", x + legend_key_length);
+      append_attribute(out, "x2", x + legend_key);
       append_attribute(out, "y2", y);
       out += "/>\n";
-    }
-    out += "<text class=\"trace-legend-text\"";
-    append_attribute(out, "x", x + legend_key_length + 6);
-    append_attribute(out, "y", y);
-    out += '>';
-    append_escaped(out, entries[i].text);
-    out += "</text>\n";
+      return;
+    case LegendKey::star: append_star(out, x + legend_key / 2, y, 8); return;
+    case LegendKey::target:
+      out += "<g class=\"trace-target\" stroke-width=\"2\"><circle class=\"trace-target-ring\"";
+      append_attribute(out, "cx", x + legend_key / 2);
+      append_attribute(out, "cy", y);
+      out += " r=\"7\"/><circle class=\"trace-target-ring\"";
+      append_attribute(out, "cx", x + legend_key / 2);
+      append_attribute(out, "cy", y);
+      out += " r=\"3\"/></g>\n";
+      return;
+    case LegendKey::lights:
+      for (int k = 0; k < 3; ++k) {
+        out += "<circle class=\"trace-light\" stroke-width=\"1\" r=\"4\"";
+        append_attribute(out, "cx", x + 4 + 9 * k);
+        append_attribute(out, "cy", y);
+        append_attribute(out, "fill", k == 0 ? "#e00000" : k == 1 ? "#ffc400" : "#00b050");
+        out += "/>\n";
+      }
+      return;
+    case LegendKey::perception_vehicles:
+    case LegendKey::perception_pedestrians:
+      out += "<line class=\"trace-perception\" stroke-width=\"2\"";
+      append_attribute(out, "stroke-dasharray",
+                       entry.key == LegendKey::perception_vehicles ? "8 5" : "2 4");
+      append_attribute(out, "x1", x);
+      append_attribute(out, "y1", y);
+      append_attribute(out, "x2", x + legend_key);
+      append_attribute(out, "y2", y);
+      out += "/>\n";
+      return;
+  }
+}
+
+void append_legend(std::string& out, const std::vector<LegendEntry>& entries,
+                   const std::vector<LegendPlace>& places, double left, double top, double width) {
+  out += "<g class=\"trace-legend\">\n";
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const double x = left + places[k].left, y = top + places[k].middle;
+    append_legend_key(out, entries[k], x, y);
+    const std::string text = fitted(entries[k].text, legend_font, width - legend_key - 10);
+    const PlacedLabel probe = label_at(0, 0, text, legend_font);
+    append_text(out, label_at(x + legend_key + 6, y - probe.box.height() / 2, text, legend_font),
+                text, legend_font, text_colour);
   }
   out += "</g>\n";
 }
 
-// ---- the actors ----
+// ---- the views ----
 
-// Light early, dark late: the fraction of the run elapsed at `time`.
-double elapsed_fraction(const Trace& trace, double time) {
-  if (trace.time.size() < 2) return 1;
-  const double span = trace.time.back() - trace.time.front();
-  return span > 0 ? std::clamp((time - trace.time.front()) / span, 0.0, 1.0) : 1;
-}
-
-// The casings of all paths go below all the coloured lines, or each slice's casing would cut
-// into the end of the slice before it.
-struct PathDrawing {
-  std::string casings;
-  std::string lines;
+struct Picture {
+  const RoadMap& map;
+  const Trace& trace;
+  const TraceSvgOptions& options;
+  std::optional<TraceMoment> moment;
+  std::vector<ActorStyle> styles;
 };
 
-void append_path_points(std::string& out, const SvgFrame& frame, std::span<const MapPoint> points) {
-  out += " points=\"";
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i > 0) out += ' ';
-    append_point(out, frame, points[i]);
-  }
-  out += "\"/>\n";
+// The sample where an actor's body is drawn as in the event: the moment's, for everyone.
+BodyEmphasis emphasis_at(const Picture& picture, std::size_t id, std::size_t sample) {
+  for (const Collision& c : picture.trace.collisions)
+    if ((c.first == id || c.second == id) && sample_at(picture.trace, c.time) == sample)
+      return BodyEmphasis::colliding;
+  if (picture.moment && sample == picture.moment->sample) return BodyEmphasis::event;
+  return BodyEmphasis::normal;
 }
 
-void flush_path(PathDrawing& drawing, const SvgFrame& frame, std::vector<MapPoint>& points,
-                std::string_view colour, double opacity) {
-  if (points.size() >= 2) {
-    // A pale casing keeps the path visible over lane lines of its own colour.
-    drawing.casings += "<polyline class=\"trace-path-casing\"";
-    append_path_points(drawing.casings, frame, points);
-    drawing.lines += "<polyline class=\"trace-path\" stroke=\"";
-    drawing.lines += colour;
-    drawing.lines += "\" stroke-opacity=\"";
-    append_number(drawing.lines, opacity, 2);
-    drawing.lines += '"';
-    append_path_points(drawing.lines, frame, points);
-  }
-  points.clear();
-}
-
-// The path in path_shades slices of the run's time, each one more opaque; a gap in the samples
-// (NaN, or the actor off the map) breaks it.
-void append_path(PathDrawing& drawing, const SvgFrame& frame, const Trace& trace, std::size_t id) {
-  const TraceActor& actor = trace.actors[id];
-  const std::string_view colour = actor_colour(trace, id);
-  constexpr double min_step = 0.01;  // metres: a standing actor adds no points
-  std::vector<MapPoint> points;
-  int shade = 0;
-  auto opacity = [](int slice) { return 0.3 + 0.7 * (slice + 1) / path_shades; };
-  for (std::size_t i = 0; i < actor.x.size() && i < trace.time.size(); ++i) {
-    const MapPoint point = position(actor, i);
-    if (!drawn(actor, i)) {
-      flush_path(drawing, frame, points, colour, opacity(shade));
-      continue;
-    }
-    const int slice = std::min(
-        path_shades - 1, static_cast<int>(elapsed_fraction(trace, trace.time[i]) * path_shades));
-    if (slice != shade) {
-      if (!points.empty()) points.push_back(point);
-      flush_path(drawing, frame, points, colour, opacity(shade));
-      shade = slice;
-    }
-    if (points.empty() || distance(points.back(), point) >= min_step) points.push_back(point);
-  }
-  flush_path(drawing, frame, points, colour, opacity(shade));
-}
-
-// Where bodies are drawn: the first and last samples, one every `interval` seconds, and the
-// sample at or just after each collision.
-std::size_t sample_at(const Trace& trace, double time) {
-  const auto at = std::lower_bound(trace.time.begin(), trace.time.end(), time - 1e-9);
-  return std::min(static_cast<std::size_t>(at - trace.time.begin()), trace.time.size() - 1);
-}
-
-std::vector<std::size_t> snapshot_samples(const Trace& trace, double interval) {
-  const std::vector<double>& time = trace.time;
-  if (time.empty()) return {};
-  std::set<std::size_t> samples{0, time.size() - 1};
+// Bodies along the paths: the first and last samples, one every interval, each collision's and
+// the event's.
+std::vector<std::size_t> snapshot_samples(const Picture& picture) {
+  const Trace& trace = picture.trace;
+  if (trace.time.empty()) return {};
+  std::set<std::size_t> samples{0, trace.time.size() - 1};
+  const double interval = picture.options.snapshot_interval;
   if (interval > 0)
-    for (double next = time.front() + interval; next < time.back(); next += interval)
+    for (double next = trace.time.front() + interval; next < trace.time.back(); next += interval)
       samples.insert(sample_at(trace, next));
   for (const Collision& collision : trace.collisions)
     samples.insert(sample_at(trace, collision.time));
+  if (picture.moment) samples.insert(picture.moment->sample);
   return {samples.begin(), samples.end()};
 }
 
-MapPoint offset(MapPoint point, double heading, double ahead, double left) {
-  return {point.x + ahead * std::cos(heading) - left * std::sin(heading),
-          point.y + ahead * std::sin(heading) + left * std::cos(heading)};
+void open_view(std::string& out, std::string_view id, const Panel& panel) {
+  out += "<svg class=\"trace-view\"";
+  append_attribute(out, "id", id);
+  append_attribute(out, "x", panel.box.left);
+  append_attribute(out, "y", panel.box.top);
+  append_attribute(out, "width", panel.box.width());
+  append_attribute(out, "height", panel.box.height());
+  out += " viewBox=\"";
+  append_number(out, panel.u(panel.region.min));
+  out += ' ';
+  append_number(out, panel.v(panel.region.max));
+  out += ' ';
+  append_number(out, panel.region.max.x - panel.region.min.x);
+  out += ' ';
+  append_number(out, panel.region.max.y - panel.region.min.y);
+  out += "\" preserveAspectRatio=\"none\">\n<use xlink:href=\"#trace-roads\"/>\n";
 }
 
-void append_body(std::string& out, const SvgFrame& frame, const TraceActor& actor,
-                 std::size_t sample, std::string_view colour, double fraction, bool colliding) {
-  const MapPoint centre = position(actor, sample);
-  if (!finite(centre)) return;
-  const double heading = sample < actor.heading.size() && std::isfinite(actor.heading[sample])
-                             ? actor.heading[sample]
-                             : 0;
-  const std::string_view css_class = colliding ? "trace-box trace-box-collision" : "trace-box";
-  const auto append_paint = [&] {
-    out += " fill=\"";
-    out += colour;
-    out += "\" stroke=\"";
-    out += colour;
-    out += "\" fill-opacity=\"";
-    append_number(out, 0.15 + 0.35 * fraction, 2);
-    out += '"';
-  };
-  if (round_body(actor)) {
-    out += "<circle class=\"";
-    out += css_class;
-    out += '"';
-    append_paint();
-    append_attribute(out, "cx", centre.x - frame.origin.x);
-    append_attribute(out, "cy", frame.origin.y - centre.y);
-    append_attribute(out, "r", std::max(actor.length, actor.width) / 2);
+void close_view(std::string& out, const Panel& panel) {
+  out += "</svg>\n<rect class=\"trace-view-frame\"";
+  append_attribute(out, "x", panel.box.left);
+  append_attribute(out, "y", panel.box.top);
+  append_attribute(out, "width", panel.box.width());
+  append_attribute(out, "height", panel.box.height());
+  out += "/>\n";
+}
+
+// The picture's pixels a body covers (its bounding circle's box), so labels keep off it.
+PixelBox body_pixels(const Panel& panel, const TraceActor& actor, MapPoint at) {
+  const auto [x, y] = panel.pixel(at);
+  const double r =
+      std::max(std::hypot(actor.length, actor.width) / 2 / panel.metres_per_pixel, 3.0);
+  return {x - r, y - r, x + r, y + r};
+}
+
+double body_clearance(const Panel& panel, const TraceActor& actor) {
+  return std::max(std::hypot(actor.length, actor.width) / 2 / panel.metres_per_pixel, 4.0);
+}
+
+// A label for something at `at` in the panel, when a free place is found; with a leader line
+// when it had to go far.
+void place_label(std::string& labels, LabelPlacer& placer, const Panel& panel, MapPoint at,
+                 double clearance, const std::string& text, const TextFont& font,
+                 std::string_view colour) {
+  if (!panel.shows(at)) return;
+  const auto [x, y] = panel.pixel(at);
+  const std::optional<PlacedLabel> label = placer.place(x, y, clearance, text, font);
+  if (!label) return;
+  append_leader(labels, x, y, label->box);
+  append_text(labels, *label, text, font, colour);
+}
+
+void append_collision_marks(std::string& out, std::string& labels, LabelPlacer& placer,
+                            const Panel& panel, const Trace& trace) {
+  std::size_t labelled = 0;
+  for (const Collision& collision : trace.collisions) {
+    if (!std::isfinite(collision.point.x) || !std::isfinite(collision.point.y) ||
+        !panel.shows(collision.point))
+      continue;
+    append_star(out, panel.u(collision.point), panel.v(collision.point), panel.metres(10));
+    const auto [x, y] = panel.pixel(collision.point);
+    placer.block({x - 10, y - 10, x + 10, y + 10});
+    if (labelled++ < max_collision_labels)
+      place_label(labels, placer, panel, collision.point, 10,
+                  "collision " + seconds(collision.time), speed_font, collision_colour);
+  }
+}
+
+// Where an actor's name goes: at its body at the event, else where it first shows in the view.
+std::optional<MapPoint> name_anchor(const Picture& picture, const Panel& panel, std::size_t id) {
+  const Trace& trace = picture.trace;
+  if (picture.moment && drawn_at(trace, id, picture.moment->sample) &&
+      panel.shows(position(trace.actors[id], picture.moment->sample)))
+    return position(trace.actors[id], picture.moment->sample);
+  for (std::size_t i = 0; i < trace.sample_count(); ++i)
+    if (drawn_at(trace, id, i) && panel.shows(position(trace.actors[id], i)))
+      return position(trace.actors[id], i);
+  return std::nullopt;
+}
+
+// The listed actors, the ego and the other party first.
+std::vector<std::size_t> label_order(const Picture& picture) {
+  std::vector<std::size_t> order;
+  if (!picture.styles.empty() && picture.styles[kEgo].ever_drawn) order.push_back(kEgo);
+  if (picture.moment && picture.moment->other) order.push_back(*picture.moment->other);
+  for (std::size_t id = 1; id < picture.styles.size(); ++id)
+    if (picture.styles[id].listed && std::find(order.begin(), order.end(), id) == order.end())
+      order.push_back(id);
+  return order;
+}
+
+void append_main_view(std::string& out, std::string& labels, const Picture& picture,
+                      const Panel& panel, const std::optional<Panel>& inset) {
+  const Trace& trace = picture.trace;
+  open_view(out, "main-view", panel);
+  const std::size_t event_sample =
+      picture.moment ? picture.moment->sample : (trace.time.empty() ? 0 : trace.time.size() - 1);
+  append_lights(out, panel, picture.map, trace, event_sample);
+  if (picture.moment && trace.sensing.limited)
+    append_perception(out, panel, trace.sensing, position(trace.actors[kEgo], event_sample));
+  append_paths(out, panel, trace, picture.styles, 3.5);
+
+  LabelPlacer placer(
+      {panel.box.left + 1, panel.box.top + 1, panel.box.right - 1, panel.box.bottom - 1});
+  out += "<g class=\"trace-bodies\">\n";
+  const std::vector<std::size_t> snapshots = snapshot_samples(picture);
+  for (std::size_t id = 0; id < trace.actors.size(); ++id)
+    for (const std::size_t sample : snapshots) {
+      if (!drawn_at(trace, id, sample)) continue;
+      const BodyEmphasis emphasis = emphasis_at(picture, id, sample);
+      append_body(out, panel, trace.actors[id], sample, picture.styles[id].colour,
+                  picture.styles[id].listed ? emphasis : BodyEmphasis::faint);
+      if (emphasis != BodyEmphasis::normal && panel.shows(position(trace.actors[id], sample)))
+        placer.block(body_pixels(panel, trace.actors[id], position(trace.actors[id], sample)));
+    }
+  out += "</g>\n";
+  if (trace.ego_target && panel.shows(*trace.ego_target)) {
+    append_target(out, panel, *trace.ego_target);
+    const auto [x, y] = panel.pixel(*trace.ego_target);
+    placer.block({x - 9, y - 9, x + 9, y + 9});
+  }
+  append_collision_marks(out, labels, placer, panel, trace);
+  if (inset) {
+    out += "<rect class=\"trace-inset-outline\"";
+    append_attribute(out, "x", panel.u(inset->region.min));
+    append_attribute(out, "y", panel.v(inset->region.max));
+    append_attribute(out, "width", inset->region.max.x - inset->region.min.x);
+    append_attribute(out, "height", inset->region.max.y - inset->region.min.y);
+    append_attribute(out, "stroke-width", panel.metres(1.5));
+    append_attribute(out, "stroke-dasharray",
+                     number_text(panel.metres(6), 3) + " " + number_text(panel.metres(4), 3));
     out += "/>\n";
-    return;
   }
-  const double half_length = actor.length / 2;
-  const double half_width = actor.width / 2;
-  out += "<polygon class=\"";
-  out += css_class;
-  out += '"';
-  append_paint();
-  out += " points=\"";
-  append_point(out, frame, offset(centre, heading, half_length, half_width));
-  out += ' ';
-  append_point(out, frame, offset(centre, heading, -half_length, half_width));
-  out += ' ';
-  append_point(out, frame, offset(centre, heading, -half_length, -half_width));
-  out += ' ';
-  append_point(out, frame, offset(centre, heading, half_length, -half_width));
-  out += "\"/>\n";
-  // A tick from the centre to the front says which way the body faces.
-  out += "<polyline class=\"trace-front\" stroke=\"";
-  out += colour;
-  out += "\" points=\"";
-  append_point(out, frame, centre);
-  out += ' ';
-  append_point(out, frame, offset(centre, heading, half_length, 0));
-  out += "\"/>\n";
-}
+  close_view(out, panel);
 
-void append_text(std::string& out, const SvgFrame& frame, std::string_view css_class, MapPoint at,
-                 double dx_pixels, double dy_pixels, std::string_view text,
-                 std::string_view colour = {}) {
-  out += "<text class=\"";
-  out += css_class;
-  out += '"';
-  if (!colour.empty()) {
-    out += " fill=\"";
-    out += colour;
-    out += '"';
-  }
-  append_attribute(out, "x", at.x - frame.origin.x + pixels(frame, dx_pixels));
-  append_attribute(out, "y", frame.origin.y - at.y + pixels(frame, dy_pixels));
-  out += '>';
-  append_escaped(out, text);
-  out += "</text>\n";
-}
-
-std::string actor_name(const Trace& trace, ActorId id) {
-  return id < trace.actors.size() ? trace.actors[id].name : "actor " + std::to_string(id);
-}
-
-std::string collision_label(const Trace& trace, const Collision& collision) {
-  return "t=" + fixed_text(collision.time, 2) + " s " + actor_name(trace, collision.first) + " " +
-         std::string(body_side_name(collision.first_side)) + " / " +
-         actor_name(trace, collision.second) + " " +
-         std::string(body_side_name(collision.second_side));
-}
-
-void append_collisions(std::string& out, const SvgFrame& frame, const Trace& trace) {
-  const double line_height = pixels(frame, collision_font_pixels * 1.3);
-  for (std::size_t i = 0; i < trace.collisions.size(); ++i) {
-    const Collision& collision = trace.collisions[i];
-    if (!finite(collision.point)) continue;
-    append_star(out, collision.point.x - frame.origin.x, frame.origin.y - collision.point.y,
-                pixels(frame, collision_star_pixels));
-    // Labels of collisions at nearly the same place stack instead of overprinting.
-    int earlier_nearby = 0;
-    for (std::size_t j = 0; j < i; ++j)
-      if (distance(trace.collisions[j].point, collision.point) < pixels(frame, 40))
-        ++earlier_nearby;
-    append_text(out, frame, "trace-collision-label", collision.point, collision_star_pixels + 3,
-                collision_font_pixels / 2 + earlier_nearby * line_height / frame.metres_per_pixel,
-                collision_label(trace, collision));
+  for (const std::size_t id : label_order(picture))
+    if (const std::optional<MapPoint> at = name_anchor(picture, panel, id))
+      place_label(labels, placer, panel, *at, body_clearance(panel, trace.actors[id]),
+                  trace.actors[id].name, name_font, picture.styles[id].colour);
+  if (trace.ego_target)
+    place_label(labels, placer, panel, *trace.ego_target, 9, "target", name_font, text_colour);
+  // Times beside the bodies of the ego and the other party, as room allows; one for a body
+  // that stood where an earlier labelled one is (a standing car would pile them up).
+  for (const std::size_t id : label_order(picture)) {
+    if (id != kEgo && !(picture.moment && picture.moment->other == id)) continue;
+    std::vector<std::pair<double, double>> labelled;
+    for (const std::size_t sample : snapshots) {
+      if (sample == 0 || !drawn_at(trace, id, sample)) continue;
+      const MapPoint at = position(trace.actors[id], sample);
+      const auto [x, y] = panel.pixel(at);
+      if (std::any_of(labelled.begin(), labelled.end(), [&](const auto& p) {
+            return std::hypot(p.first - x, p.second - y) < min_time_label_spacing;
+          }))
+        continue;
+      labelled.emplace_back(x, y);
+      place_label(labels, placer, panel, at, body_clearance(panel, trace.actors[id]),
+                  number_text(trace.time[sample], 1) + " s", time_font, detail_colour);
+    }
   }
 }
 
-void append_style(std::string& out, const SvgFrame& frame) {
-  const auto metres = [&](double pixel_count) {
-    return number_text(pixels(frame, pixel_count), 4);
-  };
-  const std::string halo =
-      "paint-order:stroke;stroke:#fff;stroke-linejoin:round;stroke-width:" + metres(halo_pixels) +
-      "px";
+// Whether actor id stood still from sample `earlier` to `later` (its faint body would lie under
+// the later one, saying nothing).
+bool stood_still(const Trace& trace, std::size_t id, std::size_t earlier, std::size_t later) {
+  return drawn_at(trace, id, later) &&
+         distance(position(trace.actors[id], earlier), position(trace.actors[id], later)) <
+             min_ghost_movement;
+}
+
+void append_inset_view(std::string& out, std::string& labels, const Picture& picture,
+                       const Panel& panel) {
+  const Trace& trace = picture.trace;
+  const TraceMoment& moment = *picture.moment;
+  open_view(out, "inset-view", panel);
+  append_lights(out, panel, picture.map, trace, moment.sample);
+  if (trace.sensing.limited)
+    append_perception(out, panel, trace.sensing, position(trace.actors[kEgo], moment.sample));
+  append_paths(out, panel, trace, picture.styles, 2);
+  LabelPlacer placer(
+      {panel.box.left + 1, panel.box.top + 1, panel.box.right - 1, panel.box.bottom - 1});
+  // Which actors show: those whose body at the event or in the seconds before is in the view.
+  // The faint bodies first, then the collision's star, then the bodies at the event over it.
+  std::vector<std::size_t> shown;
+  std::string event_bodies;
+  out += "<g class=\"trace-bodies\">\n";
+  for (std::size_t id = 0; id < trace.actors.size(); ++id) {
+    bool any = false;
+    for (int back = static_cast<int>(kInsetLookBack); back >= 0; --back) {
+      const std::optional<std::size_t> sample = sample_before(trace, moment.sample, back);
+      if (!sample || !drawn_at(trace, id, *sample) ||
+          !panel.shows(position(trace.actors[id], *sample)))
+        continue;
+      if (back > 0 &&
+          stood_still(trace, id, *sample, *sample_before(trace, moment.sample, back - 1)))
+        continue;
+      any = true;
+      append_body(back > 0 ? out : event_bodies, panel, trace.actors[id], *sample,
+                  picture.styles[id].colour,
+                  back > 0 ? BodyEmphasis::faint : emphasis_at(picture, id, *sample));
+      placer.block(body_pixels(panel, trace.actors[id], position(trace.actors[id], *sample)));
+    }
+    if (any) shown.push_back(id);
+  }
+  append_collision_marks(out, labels, placer, panel, trace);
+  out += event_bodies;
+  out += "</g>\n";
+  // Speed arrows at the event, one second of travel long.
+  for (const std::size_t id : shown) {
+    if (!drawn_at(trace, id, moment.sample)) continue;
+    const MapPoint from = position(trace.actors[id], moment.sample);
+    const MapPoint v = velocity_at(trace.actors[id], moment.sample);
+    if (std::hypot(v.x, v.y) < 0.2) continue;
+    const MapPoint tip{from.x + v.x, from.y + v.y};
+    append_arrow(out, panel, from, tip, picture.styles[id].colour);
+    const auto [x, y] = panel.pixel(tip);
+    placer.block({x - 8, y - 8, x + 8, y + 8});
+  }
+  if (trace.ego_target && panel.shows(*trace.ego_target))
+    append_target(out, panel, *trace.ego_target);
+  close_view(out, panel);
+
+  // Names and speeds of the ego and the other party first, then of the others shown.
+  std::vector<std::size_t> order;
+  for (const std::size_t id : label_order(picture))
+    if (std::find(shown.begin(), shown.end(), id) != shown.end()) order.push_back(id);
+  for (const std::size_t id : order) {
+    if (!drawn_at(trace, id, moment.sample)) continue;
+    const TraceActor& actor = trace.actors[id];
+    const MapPoint at = position(actor, moment.sample);
+    const double speed = speed_at(actor, moment.sample);
+    place_label(labels, placer, panel, at, body_clearance(panel, actor),
+                actor.name + ", " + number_text(speed, 1) + " m/s", name_font,
+                picture.styles[id].colour);
+  }
+  // When each faint body was, for the ego and the other party.
+  for (const std::size_t id : order) {
+    if (id != kEgo && moment.other != id) continue;
+    for (int back = 1; back <= static_cast<int>(kInsetLookBack); ++back) {
+      const std::optional<std::size_t> sample = sample_before(trace, moment.sample, back);
+      if (sample && drawn_at(trace, id, *sample) &&
+          !stood_still(trace, id, *sample, *sample_before(trace, moment.sample, back - 1)))
+        place_label(labels, placer, panel, position(trace.actors[id], *sample),
+                    body_clearance(panel, trace.actors[id]), "-" + std::to_string(back) + " s",
+                    time_font, detail_colour);
+    }
+  }
+}
+
+std::vector<LegendEntry> legend_entries(const Picture& picture, bool lights_shown) {
+  const Trace& trace = picture.trace;
+  std::vector<LegendEntry> entries;
+  bool background = false;
+  for (const std::size_t id : label_order(picture))
+    entries.push_back({trace.actors[id].name + " (" +
+                           std::string(trace_actor_kind_name(trace.actors[id].kind)) + ")",
+                       LegendKey::line, picture.styles[id].colour});
+  for (const ActorStyle& style : picture.styles)
+    background = background || (style.in_view && !style.listed);
+  if (background) entries.push_back({"other road users", LegendKey::line, kBackgroundColour});
+  if (!trace.collisions.empty()) entries.push_back({"collision", LegendKey::star, {}});
+  if (trace.ego_target) entries.push_back({"the ego's target", LegendKey::target, {}});
+  if (lights_shown)
+    entries.push_back({"traffic lights as they were at the event", LegendKey::lights, {}});
+  if (picture.moment && trace.sensing.limited) {
+    entries.push_back({"ego's perception range (weather, darkness): vehicles " +
+                           number_text(trace.sensing.vehicle_range, 0) + " m",
+                       LegendKey::perception_vehicles,
+                       {}});
+    if (std::abs(trace.sensing.pedestrian_range - trace.sensing.vehicle_range) > 0.5)
+      entries.push_back({"pedestrians " + number_text(trace.sensing.pedestrian_range, 0) + " m",
+                         LegendKey::perception_pedestrians,
+                         {}});
+  }
+  entries.push_back({"paths darken with time; bodies every " +
+                         number_text(picture.options.snapshot_interval, 2) + " s and at the event",
+                     LegendKey::line, "#b0b0b0"});
+  return entries;
+}
+
+bool shows_a_light(const RoadMap& map, const Panel& panel) {
+  for (const TrafficLight& light : map.traffic_lights())
+    for (const MapPoint head : light.heads)
+      if (panel.shows(head)) return true;
+  return false;
+}
+
+void append_style(std::string& out) {
   out += "<defs>\n<style>\n";
-  out += ".trace-path{fill:none;stroke-linecap:butt;stroke-linejoin:round;stroke-width:" +
-         metres(path_width_pixels) + "}\n";
   out +=
+      ".trace-text{font-family:'DejaVu Sans',Verdana,sans-serif;paint-order:stroke;stroke:#fff;"
+      "stroke-width:3px;stroke-linejoin:round}\n"
+      ".trace-background{fill:#fff}\n"
+      ".trace-view-frame{fill:none;stroke:#707070;stroke-width:1}\n"
+      ".trace-path{fill:none;stroke-linecap:butt;stroke-linejoin:round}\n"
       ".trace-path-casing{fill:none;stroke:#fff;stroke-opacity:.6;stroke-linecap:round;"
-      "stroke-linejoin:round;stroke-width:" +
-      metres(path_width_pixels + 3) + "}\n";
-  out += ".trace-box{stroke-width:" + metres(box_stroke_pixels) + "}\n";
-  out +=
-      ".trace-box-collision{stroke:#d00000;stroke-width:" + metres(2 * box_stroke_pixels) + "}\n";
-  out += ".trace-front{fill:none;stroke-width:" + metres(box_stroke_pixels) + "}\n";
-  out +=
-      ".trace-name{font-family:sans-serif;font-weight:bold;font-size:" + metres(name_font_pixels) +
-      "px;" + halo + "}\n";
-  out += ".trace-time{font-family:sans-serif;fill:#303030;font-size:" + metres(time_font_pixels) +
-         "px;" + halo + "}\n";
-  out += ".trace-collision{fill:#e00000;stroke:#600000;stroke-width:" + metres(1) + "}\n";
-  out += ".trace-collision-label{font-family:sans-serif;font-weight:bold;fill:#a00000;font-size:" +
-         metres(collision_font_pixels) + "px;" + halo + "}\n";
-  // The legend is drawn in pixels (its group scales them to metres).
-  out += ".trace-legend-background{fill:#fff;stroke:#808080;stroke-width:1}\n";
-  out +=
-      ".trace-legend-title{font-family:sans-serif;font-weight:bold;font-size:15px;"
-      "dominant-baseline:central}\n";
-  out += ".trace-legend-text{font-family:sans-serif;font-size:12px;dominant-baseline:central}\n";
-  out += ".trace-legend-key{stroke-width:4}\n";
-  out += "</style>\n</defs>\n";
+      "stroke-linejoin:round}\n"
+      ".trace-front{fill:none}\n"
+      ".trace-collision{fill:#e00000;stroke:#600000}\n"
+      ".trace-speed polyline{fill:none;stroke-linecap:round}\n"
+      ".trace-speed-casing{stroke:#fff;stroke-opacity:.85}\n"
+      ".trace-target{fill:none;stroke:#111}\n"
+      ".trace-target-ring{fill:#fff;fill-opacity:.4}\n"
+      ".trace-light{stroke:#202020}\n"
+      ".trace-perception{fill:none;stroke:#7b1fa2;stroke-opacity:.85}\n"
+      ".trace-inset-outline{fill:none;stroke:#000}\n"
+      ".trace-leader{stroke:#505050;stroke-width:.8}\n"
+      ".trace-legend-key{stroke-width:4}\n";
+  out += "</style>\n";
+}
+
+// Pixel sizes of the views and where they go.
+struct Layout {
+  double width = 0, height = 0;
+  double header_top = padding;
+  std::vector<TextLine> header;
+  Panel main;
+  std::optional<Panel> inset;
+  std::vector<TextLine> inset_caption;
+  double inset_caption_top = 0;
+  std::vector<LegendEntry> legend;
+  std::vector<LegendPlace> legend_places;
+  double legend_left = 0, legend_top = 0, legend_width = 0;
+};
+
+Panel sized_panel(const MapBounds& region, MapPoint origin, double metres_per_pixel) {
+  Panel panel;
+  panel.origin = origin;
+  panel.region = region;
+  panel.metres_per_pixel = metres_per_pixel;
+  panel.box = {0, 0, (region.max.x - region.min.x) / metres_per_pixel,
+               (region.max.y - region.min.y) / metres_per_pixel};
+  return panel;
+}
+
+void move_to(Panel& panel, double left, double top) {
+  const double width = panel.box.width(), height = panel.box.height();
+  panel.box = {left, top, left + width, top + height};
+}
+
+double aspect_distance(double width, double height) { return std::abs(std::log(width / height)); }
+
+Layout lay_out(Picture& picture) {
+  const Trace& trace = picture.trace;
+  Layout layout;
+  std::optional<MapBounds> inset_bounds;
+  if (picture.moment) inset_bounds = inset_region(trace, *picture.moment);
+  const MapBounds main_bounds = main_region(picture.map, trace, picture.moment, inset_bounds);
+  picture.styles = actor_styles(trace, picture.moment, main_bounds);
+  const MapPoint origin{main_bounds.min.x, main_bounds.max.y};
+  const double longer =
+      std::max(main_bounds.max.x - main_bounds.min.x, main_bounds.max.y - main_bounds.min.y);
+  const double main_scale = picture.options.pixels_per_metre > 0
+                                ? 1 / picture.options.pixels_per_metre
+                                : std::max(longer, 1.0) / main_fit_pixels;
+  layout.main = sized_panel(main_bounds, origin, main_scale);
+  const double main_width = layout.main.box.width(), main_height = layout.main.box.height();
+
+  double inset_width = 0, inset_height = 0, caption_height = 0;
+  if (inset_bounds) {
+    const double inset_longer = std::max(inset_bounds->max.x - inset_bounds->min.x,
+                                         inset_bounds->max.y - inset_bounds->min.y);
+    layout.inset = sized_panel(*inset_bounds, origin, inset_longer / inset_fit_pixels);
+    inset_width = layout.inset->box.width();
+    inset_height = layout.inset->box.height();
+    layout.inset_caption = wrapped_lines(
+        {{inset_caption(trace, *picture.moment), detail_font, detail_colour}}, inset_width);
+    caption_height = lines_height(layout.inset_caption) + 4;
+  }
+  // The inset beside the main view or below it, whichever makes the picture squarer.
+  const double side_width = main_width + (inset_bounds ? gap + inset_width : 0);
+  const double side_height = std::max(main_height, caption_height + inset_height);
+  const double below_width = std::max(main_width, inset_width);
+  const double below_height =
+      main_height + (inset_bounds ? gap + caption_height + inset_height : 0);
+  const bool beside =
+      aspect_distance(side_width, side_height) <= aspect_distance(below_width, below_height);
+  const double content_width = beside ? side_width : below_width;
+  const double content_height = beside ? side_height : below_height;
+
+  layout.width = std::max(content_width + 2 * padding, 480.0);
+  const double text_width = layout.width - 2 * padding;
+  layout.header =
+      wrapped_lines(title_block(trace, picture.moment, picture.options.caption), text_width);
+  const double content_top = padding + lines_height(layout.header) + gap / 2;
+  move_to(layout.main, padding, content_top);
+  if (layout.inset) {
+    const double left = beside ? padding + main_width + gap : padding;
+    layout.inset_caption_top = beside ? content_top : content_top + main_height + gap;
+    move_to(*layout.inset, left, layout.inset_caption_top + caption_height);
+  }
+  layout.legend = legend_entries(picture, shows_a_light(picture.map, layout.main));
+  // The legend goes into the room the inset leaves beside or under it when it fits there, else
+  // below everything.
+  PixelBox room;
+  if (layout.inset && beside)
+    room = {layout.inset->box.left, layout.inset->box.bottom + gap, layout.inset->box.right,
+            content_top + content_height};
+  else if (layout.inset)
+    room = {layout.inset->box.right + gap, layout.inset_caption_top, padding + content_width,
+            content_top + content_height};
+  std::vector<LegendPlace> in_room;
+  if (room.width() >= min_legend_width &&
+      legend_places(layout.legend, room.width(), in_room) <= room.height()) {
+    layout.legend_places = std::move(in_room);
+    layout.legend_left = room.left;
+    layout.legend_width = room.width();
+    layout.legend_top = room.top;
+    layout.height = content_top + content_height + padding;
+  } else {
+    layout.legend_left = padding;
+    layout.legend_width = text_width;
+    layout.legend_top = content_top + content_height + gap;
+    layout.height = layout.legend_top +
+                    legend_places(layout.legend, text_width, layout.legend_places) + padding;
+  }
+  // Whitespace keeps the sides within 1:3 should the text ever make the picture a strip.
+  layout.height = std::max(layout.height, layout.width / max_picture_aspect);
+  layout.width = std::max(layout.width, layout.height / max_picture_aspect);
+  return layout;
+}
+
+std::string document_title(const Trace& trace, const TraceCaption& caption) {
+  std::string title =
+      "Trace on " + (trace.map_name.empty() ? std::string("a map") : trace.map_name) + " (seed " +
+      std::to_string(trace.seed) + "): ended by " + std::string(end_reason_name(trace.end)) +
+      " after " + seconds(trace.time.empty() ? 0 : trace.time.back());
+  if (!caption.spec.empty()) title += "; " + title_line(trace, caption);
+  return title;
 }
 
 }  // namespace
 
 std::string render_trace_svg(const RoadMap& map, const Trace& trace,
                              const TraceSvgOptions& options) {
-  const SvgFrame frame =
-      map_svg_frame(visited_region(map, trace), 0, options.pixels_per_metre, default_image_pixels);
-
-  std::vector<LegendEntry> entries;
-  for (std::size_t id = 0; id < trace.actors.size(); ++id) {
-    // A flow vehicle that never got onto the map is not drawn, so it has no entry either.
-    if (trace.actors[id].present_from >=
-            std::min(trace.actors[id].present_until, trace.sample_count()) &&
-        trace.sample_count() > 0)
-      continue;
-    entries.push_back({trace.actors[id].name + " (" +
-                           std::string(trace_actor_kind_name(trace.actors[id].kind)) + ")",
-                       actor_colour(trace, id)});
-  }
-  if (!trace.collisions.empty()) entries.push_back({"collision", {}});
-  entries.push_back(
-      {"paths darken with time; bodies every " + number_text(options.snapshot_interval, 2) + " s",
-       "#b0b0b0"});
-  const LegendLayout legend = legend_layout(entries, frame.width / frame.metres_per_pixel);
-  const double total_height = frame.height + pixels(frame, legend.height);
-  const std::string title = title_text(trace);
+  Picture picture{map, trace, options, key_moment(trace, options.caption.time), {}};
+  const Layout layout = lay_out(picture);
+  const Panel& main = layout.main;
+  SvgFrame frame;
+  frame.origin = main.origin;
+  frame.width = main.region.max.x - main.region.min.x;
+  frame.height = main.region.max.y - main.region.min.y;
+  frame.metres_per_pixel = main.metres_per_pixel;
 
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-  out += std::to_string(std::max(1L, std::lround(frame.width / frame.metres_per_pixel)));
-  out += "\" height=\"";
-  out += std::to_string(std::max(1L, std::lround(total_height / frame.metres_per_pixel)));
-  out += "\" viewBox=\"0 0 ";
-  append_number(out, frame.width);
-  out += ' ';
-  append_number(out, total_height);
-  out += "\">\n<title>";
-  append_escaped(out, title);
-  out += "</title>\n<desc>scenfuzz trace: one unit is a metre; map x = ";
+  out +=
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
+      "width=\"";
+  const long width = std::lround(std::ceil(layout.width));
+  const long height = std::lround(std::ceil(layout.height));
+  out += std::to_string(width) + "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " +
+         std::to_string(width) + " " + std::to_string(height) + "\">\n<title>";
+  append_escaped(out, document_title(trace, options.caption));
+  out +=
+      "</title>\n<desc>scenfuzz trace picture, in pixels; its views are nested svg elements in "
+      "map metres: map x = ";
   append_number(out, frame.origin.x);
-  out += " + svg x, map y = ";
+  out += " + u, map y = ";
   append_number(out, frame.origin.y);
-  out += " - svg y</desc>\n";
-  append_style(out, frame);
+  out += " - v for their viewBox coordinates (u, v)</desc>\n";
+  append_style(out);
+  // The roads once, in the main view's coordinates; both views show them through <use>.
+  out += "<g id=\"trace-roads\">\n";
   out += render_map_svg_layer(map, frame, {.labels = options.lane_labels});
+  out +=
+      "</g>\n</defs>\n<rect class=\"trace-background\" x=\"0\" y=\"0\" width=\"100%\" "
+      "height=\"100%\"/>\n";
 
-  // Painter's order: paths, then bodies over them, then collisions and text on top.
-  out += "<g class=\"trace-paths\">\n";
-  PathDrawing paths;
-  for (std::size_t id = 0; id < trace.actors.size(); ++id) append_path(paths, frame, trace, id);
-  out += paths.casings;
-  out += paths.lines;
-  out += "</g>\n<g class=\"trace-bodies\">\n";
-  // (sample, actor) pairs whose body is drawn as in a collision.
-  std::set<std::pair<std::size_t, std::size_t>> colliding;
-  if (!trace.time.empty())
-    for (const Collision& collision : trace.collisions) {
-      colliding.emplace(sample_at(trace, collision.time), collision.first);
-      colliding.emplace(sample_at(trace, collision.time), collision.second);
-    }
-  const std::vector<std::size_t> snapshots = snapshot_samples(trace, options.snapshot_interval);
-  std::string time_labels;
-  for (std::size_t id = 0; id < trace.actors.size(); ++id) {
-    const TraceActor& actor = trace.actors[id];
-    for (const std::size_t sample : snapshots) {
-      if (sample >= actor.x.size() || !present_at(actor, sample)) continue;
-      append_body(out, frame, actor, sample, actor_colour(trace, id),
-                  elapsed_fraction(trace, trace.time[sample]), colliding.contains({sample, id}));
-      if (sample > 0 && finite(position(actor, sample)))
-        append_text(time_labels, frame, "trace-time", position(actor, sample), 6, -6,
-                    number_text(trace.time[sample], 1) + " s");
-    }
+  std::string labels;
+  append_lines(out, layout.header, padding, layout.header_top);
+  append_main_view(out, labels, picture, main, layout.inset);
+  if (layout.inset) {
+    append_lines(out, layout.inset_caption, layout.inset->box.left, layout.inset_caption_top);
+    append_inset_view(out, labels, picture, *layout.inset);
   }
-  out += "</g>\n<g class=\"trace-labels\">\n";
-  out += time_labels;
-  for (std::size_t id = 0; id < trace.actors.size(); ++id) {
-    const TraceActor& actor = trace.actors[id];
-    std::size_t first = 0;
-    while (first < actor.x.size() && !drawn(actor, first)) ++first;
-    if (first == actor.x.size()) continue;
-    append_text(out, frame, "trace-name", position(actor, first), -8, -10, actor.name,
-                actor_colour(trace, id));
-  }
-  out += "</g>\n<g class=\"trace-collisions\">\n";
-  append_collisions(out, frame, trace);
-  out += "</g>\n";
-  append_legend(out, frame, entries, legend, title);
+  out += "<g class=\"trace-labels\">\n" + labels + "</g>\n";
+  append_legend(out, layout.legend, layout.legend_places, layout.legend_left, layout.legend_top,
+                layout.legend_width);
   out += "</svg>\n";
   return out;
 }
