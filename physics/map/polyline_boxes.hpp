@@ -3,6 +3,7 @@
 // segment of the run, so none of them needs projecting to know it is out of reach.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -19,11 +20,19 @@ class PolylineBoxes {
   PolylineBoxes() = default;
   explicit PolylineBoxes(const Polyline& path);
 
-  // Whether `point` lies farther than `reach` from every segment `first`, first + 1, ... of
-  // `path` that starts at or before arc length `until` (with room for rounding: true means every
-  // projection onto those segments measures more than `reach`).
-  bool all_beyond(const Polyline& path, MapPoint point, std::size_t first, double until,
-                  double reach) const;
+  std::size_t size() const { return boxes_.size(); }
+  MapPoint low(std::size_t box) const { return boxes_[box].low; }
+  MapPoint high(std::size_t box) const { return boxes_[box].high; }
+
+  // The squared distance from `point` to box `box` (0 inside it): at most the squared distance
+  // to any of the segments box * kRun ... box * kRun + kRun - 1 (up to rounding, about 1e-12 of
+  // the coordinates).
+  double distance_squared(std::size_t box, MapPoint point) const {
+    const Box& b = boxes_[box];
+    const double dx = std::max({b.low.x - point.x, 0.0, point.x - b.high.x});
+    const double dy = std::max({b.low.y - point.y, 0.0, point.y - b.high.y});
+    return dx * dx + dy * dy;
+  }
 
  private:
   struct Box {

@@ -28,22 +28,43 @@ class SegmentFrames {
 
   // Polyline::project_to_segment(point, segment) of the polyline these frames were made from.
   PolylineProjection project(const Polyline& path, MapPoint point, std::size_t segment) const {
+    const Offset offset = offset_from(path, point, segment);
+    PolylineProjection projection;
+    projection.s = path.arc_lengths()[segment] + offset.along;
+    projection.lateral = offset.lateral;
+    projection.distance = std::sqrt(offset.squared);
+    projection.segment = segment;
+    return projection;
+  }
+
+  // project(path, point, segment).distance squared, without the root (and without the arc length
+  // and lateral offset): for finding the nearest segment, comparing squares first.
+  double distance_squared(const Polyline& path, MapPoint point, std::size_t segment) const {
+    return offset_from(path, point, segment).squared;
+  }
+
+ private:
+  struct Offset {
+    double along = 0;    // m from the segment's start to the foot, clamped to the segment
+    double lateral = 0;  // m left of the segment's line
+    double squared = 0;  // m^2 from the foot to the point
+  };
+
+  // One computation for project and distance_squared, so that their answers agree bit for bit.
+  Offset offset_from(const Polyline& path, MapPoint point, std::size_t segment) const {
     const MapPoint& a = path.points()[segment];
     const double segment_length = path.arc_lengths()[segment + 1] - path.arc_lengths()[segment];
     const double ux = directions_[segment].x, uy = directions_[segment].y;
     const double px = point.x - a.x;
     const double py = point.y - a.y;
-    const double along = std::clamp(px * ux + py * uy, 0.0, segment_length);
-    PolylineProjection projection;
-    projection.s = path.arc_lengths()[segment] + along;
-    projection.lateral = ux * py - uy * px;
-    const double off_x = px - along * ux, off_y = py - along * uy;
-    projection.distance = std::sqrt(off_x * off_x + off_y * off_y);
-    projection.segment = segment;
-    return projection;
+    Offset offset;
+    offset.along = std::clamp(px * ux + py * uy, 0.0, segment_length);
+    offset.lateral = ux * py - uy * px;
+    const double off_x = px - offset.along * ux, off_y = py - offset.along * uy;
+    offset.squared = off_x * off_x + off_y * off_y;
+    return offset;
   }
 
- private:
   std::vector<MapPoint> directions_;  // unit vector along each segment
 };
 

@@ -10,8 +10,10 @@
 
 #include "lang/demand.hpp"
 #include "physics/actors/path_pose.hpp"
+#include "physics/map/nearest_on_path.hpp"
 #include "physics/map/polygon.hpp"
 #include "physics/map/segment_walk.hpp"
+#include "physics/simulation/predicted_points.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -24,9 +26,6 @@ constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower tha
 constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term finite
 constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
 constexpr double kScanInterval = 0.2;        // s between looks at every actor (see find_leader)
-// m: far above the rounding of a distance between map points (about 1e-12 m), far below anything
-// that matters; a segment surely farther than the nearest found by more is not projected.
-constexpr double kRoundingMargin = 1e-6;
 
 double fourth_power(double x) {
   double squared = x * x;
@@ -177,8 +176,6 @@ double LaneFollower::idm(const Stop& stop) const {
 }
 
 // Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
-// leader. A vehicle coming the other way counts as standing.
-// Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
 // leader. Every actor is looked at every scan interval, as a driver's glance goes round; between
 // scans only the leader is followed (its gap and speed every step).
 void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
@@ -188,17 +185,50 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
     next_scan_ = world.time + kScanInterval;
     leader_ = -1;
     double best_gap = kInfinity;
-    for (std::uint32_t k = 0; k < world.states.size(); ++k) {
-      if (k == self || !present_in(world, k)) continue;
+    auto look_at = [&](std::uint32_t k) {
+      if (k == self || !present_in(world, k)) return;
       auto stop = in_path(world, k);
       if (stop && stop->gap < best_gap) {
         best_gap = stop->gap;
         leader_ = static_cast<std::int64_t>(k);
       }
+    };
+    // In ascending order either way, so that of equal gaps the same actor leads.
+    if (near_path(world, candidates_)) {
+      for (std::uint32_t k : candidates_) look_at(k);
+    } else {
+      for (std::uint32_t k = 0; k < world.states.size(); ++k) look_at(k);
     }
   }
   if (leader_ < 0 || !present_in(world, static_cast<std::uint32_t>(leader_))) return;
   if (auto stop = in_path(world, static_cast<std::uint32_t>(leader_))) stops.push_back(*stop);
+}
+
+// The actors that in_path could find in the path ahead, from the world's grid: those with a point
+// within reach of the boxes of the path it watches (in_path looks no farther). False when the
+// world has no grid, or predicts for another horizon than this follower (then every actor is
+// looked at).
+bool LaneFollower::near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const {
+  if (world.grid == nullptr || world.predicted.size() != world.states.size() ||
+      world.prediction_time != settings_.prediction_time)
+    return false;
+  const double until =
+      s_ + std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  // in_path's boxes run from the one holding this actor's segment to the last starting by
+  // `until`; every point of them is at most `along` metres of path, so as many in a straight
+  // line, from this actor, which is on the path at s_.
+  const auto& arc = path_.arc_lengths();
+  constexpr std::size_t run = PolylineBoxes::kRun;
+  std::size_t last = segment_ / run;
+  while (last + 1 < boxes_.size() && arc[(last + 1) * run] <= until) ++last;
+  const double along = std::max(s_ - arc[segment_ / run * run],
+                                arc[std::min((last + 1) * run, path_.segment_count())] - s_);
+  // Beyond that, the most any actor's reach (in_path's) can be, and a margin far above rounding.
+  const double reach =
+      along + body_.width / 2 + world.grid->largest_half_extent() + settings_.path_margin + 1e-3;
+  const MapPoint at{state_.x, state_.y};
+  world.grid->near({at.x - reach, at.y - reach}, {at.x + reach, at.y + reach}, actors);
+  return true;
 }
 
 // Actor k as something to stop behind: where it is, or where it will be within the prediction
@@ -215,19 +245,27 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   // Behind this actor's front it is in nobody's way ahead (paths do not turn back within the
   // lookahead), wherever it moves in the next seconds.
   const double ahead = dx * facing_.x + dy * facing_.y;
-  const double tau = other.speed > 0.1 ? settings_.prediction_time : 0;
+  const bool moving = other.speed > kPredictedMinSpeed;
+  const double tau = moving ? settings_.prediction_time : 0;
   if (ahead < -(world.lengths[k] + other.speed * tau)) return std::nullopt;
   const double velocity = longitudinal_velocity(other);
-  const MapPoint points[] = {{other.x, other.y},
-                             {other.x + std::cos(other.heading) * velocity * tau,
-                              other.y + std::sin(other.heading) * velocity * tau}};
+  // Where it will be: the simulation's prediction for every follower of the step when it made one
+  // for this horizon, else the same computed here.
+  MapPoint predicted{other.x, other.y};
+  if (moving)
+    predicted = world.predicted.size() == world.states.size() &&
+                        world.prediction_time == settings_.prediction_time
+                    ? world.predicted[k]
+                    : predicted_point(other, tau);
+  const MapPoint points[] = {{other.x, other.y}, predicted};
   const double half_width = body_.width / 2;
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
   const std::size_t first = segment_;
   std::optional<Stop> best;
   for (int which = 0; which < (tau > 0 ? 2 : 1); ++which) {
-    PolylineProjection nearest = nearest_ahead(points[which], first, s_ + lookahead, reach);
+    PolylineProjection nearest =
+        nearest_on_path(path_, boxes_, frames_, points[which], first, s_ + lookahead, reach);
     if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
     double relative = angle_difference(other.heading, headings_[nearest.segment]);
     double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
@@ -247,38 +285,6 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
                                                              : FollowerReason::leader};
   }
   return best;
-}
-
-// The nearest point of the path between segment `first` and arc length `until` to `point`, if
-// one lies within `reach` (else its distance is infinite). A path point d metres away is at least
-// d - reach metres of path from any point within reach, so the scan jumps that far ahead.
-PolylineProjection LaneFollower::nearest_ahead(MapPoint point, std::size_t first, double until,
-                                               double reach) const {
-  PolylineProjection nearest;
-  nearest.distance = kInfinity;
-  // Most actors a scan looks at are nowhere near the path ahead: a few box tests tell, where the
-  // scan below would take a square root and a jump for every few metres of path.
-  if (boxes_.all_beyond(path_, point, first, until, reach)) return nearest;
-  const auto& arc = path_.arc_lengths();
-  for (std::size_t seg = first; seg < path_.segment_count() && arc[seg] <= until;) {
-    const double to_vertex = distance(point, path_.points()[seg]);
-    const double beyond = arc[seg] + to_vertex - reach;
-    if (arc[seg + 1] < beyond) {  // this segment, and all up to `beyond`, are out of reach
-      seg = first_segment_reaching(path_, seg, beyond);
-      continue;
-    }
-    // No point of the segment is nearer than its start's distance less its length: farther than
-    // the nearest found, its projection could not replace it (ties keep the first found).
-    if (to_vertex - (arc[seg + 1] - arc[seg]) > nearest.distance + kRoundingMargin) {
-      ++seg;
-      continue;
-    }
-    PolylineProjection p = frames_.project(path_, point, seg);
-    if (p.distance < nearest.distance) nearest = p;
-    ++seg;
-  }
-  if (nearest.distance > reach) nearest.distance = kInfinity;
-  return nearest;
 }
 
 void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,

@@ -87,9 +87,8 @@ class LaneFollower {
   double choose_acceleration(const WorldSnapshot& world, std::uint32_t self, double dt);
   double bend_acceleration() const;
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
+  bool near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const;
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k) const;
-  PolylineProjection nearest_ahead(MapPoint point, std::size_t first, double until,
-                                   double reach) const;
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
   bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
@@ -104,16 +103,17 @@ class LaneFollower {
   LaneRoute route_;
   Polyline path_;
   std::vector<double> headings_;  // of each path segment
-  PolylineBoxes boxes_;           // of runs of path segments, for nearest_ahead
-  SegmentFrames frames_;          // of path segments, for nearest_ahead's projections
+  PolylineBoxes boxes_;           // of runs of path segments, for nearest_on_path
+  SegmentFrames frames_;          // of path segments, for nearest_on_path's projections
   std::vector<double> envelope_;  // at each vertex: the most speed from which the bends ahead
                                   // can be taken at comfortable deceleration
   std::vector<Feature> features_;
-  std::size_t next_feature_ = 0;  // the first not yet passed
-  std::vector<Stop> stops_;       // this step's, kept to reuse its memory
-  double next_scan_ = 0;          // s: when every actor is looked at again
-  bool scanning_ = false;         // this step is a scan
-  std::int64_t leader_ = -1;      // the actor followed between scans, or -1
+  std::size_t next_feature_ = 0;           // the first not yet passed
+  std::vector<Stop> stops_;                // this step's, kept to reuse its memory
+  std::vector<std::uint32_t> candidates_;  // the actors a scan looks at (near_path)
+  double next_scan_ = 0;                   // s: when every actor is looked at again
+  bool scanning_ = false;                  // this step is a scan
+  std::int64_t leader_ = -1;               // the actor followed between scans, or -1
   ActorClass body_;
   double desired_speed_ = 0;
   bool leaves_at_end_ = false;

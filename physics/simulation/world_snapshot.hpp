@@ -9,6 +9,7 @@
 #include "physics/actors/kinematics.hpp"
 #include "physics/map/map_description.hpp"
 #include "physics/map/road_map.hpp"
+#include "physics/simulation/actor_grid.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
 #include "physics/trace/trace.hpp"
@@ -32,6 +33,13 @@ struct WorldSnapshot {
   // every actor is, as without background traffic. An absent actor's state is a parked pose that
   // nobody may see.
   std::span<const std::uint8_t> present;
+  // By actor id, predict_points(states, prediction_time): where each actor will be, for the lane
+  // followers' scans; empty when not computed (followers then compute their own).
+  std::span<const MapPoint> predicted;
+  double prediction_time = 0;  // s
+  // The actors' positions and predicted points on a grid, for the lane followers' scans; null
+  // when not built (followers then look at every actor).
+  const ActorGrid* grid = nullptr;
 };
 
 inline bool present_in(const WorldSnapshot& world, std::uint32_t actor) {

@@ -1,9 +1,11 @@
 // The look-ups the simulation uses in place of Polyline::segment_at and full projections must
-// give exactly their answers: segment walks from a hint, galloping jumps, and box rejections.
+// give exactly their answers: segment walks from a hint, galloping jumps, box bounds and the
+// projections onto precomputed segment frames.
 #include "physics/map/segment_walk.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -60,44 +62,54 @@ TEST(SegmentWalk, FirstSegmentReachingIsTheLinearScan) {
     }
 }
 
-TEST(PolylineBoxes, AllBeyondOnlyWhenEveryProjectionIsBeyond) {
+TEST(PolylineBoxes, BoxDistanceIsAtMostEverySegmentsOfItsRun) {
   std::mt19937_64 random(13);
   Polyline path = wiggly_path(random, 150);
   PolylineBoxes boxes(path);
+  ASSERT_EQ(boxes.size(), (path.segment_count() + PolylineBoxes::kRun - 1) / PolylineBoxes::kRun);
   std::uniform_int_distribution<std::size_t> vertex(0, path.points().size() - 1);
-  std::uniform_real_distribution<double> offset(-12, 12), reach(0.5, 8);
-  int rejected = 0, kept = 0;
+  std::uniform_real_distribution<double> offset(-12, 12);
+  int outside = 0;
   for (int i = 0; i < 3000; ++i) {
     const MapPoint& near_vertex = path.points()[vertex(random)];
     MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
-    std::size_t first = static_cast<std::size_t>(i) % path.segment_count();
-    double until = path.arc_lengths()[first] + 40;
-    double r = reach(random);
-    bool near = false;
-    for (std::size_t seg = first; seg < path.segment_count() && path.arc_lengths()[seg] <= until;
-         ++seg)
-      near = near || path.project_to_segment(point, seg).distance <= r;
-    bool beyond = boxes.all_beyond(path, point, first, until, r);
-    EXPECT_FALSE(beyond && near) << "point " << i;
-    (beyond ? rejected : kept)++;
+    for (std::size_t box = 0; box < boxes.size(); ++box) {
+      const double bound = std::sqrt(boxes.distance_squared(box, point));
+      outside += bound > 0;
+      for (std::size_t seg = box * PolylineBoxes::kRun;
+           seg < std::min(path.segment_count(), (box + 1) * PolylineBoxes::kRun); ++seg)
+        EXPECT_LE(bound, path.project_to_segment(point, seg).distance + 1e-9)
+            << "point " << i << " box " << box << " segment " << seg;
+    }
   }
-  // The test means something only if both answers occur often.
-  EXPECT_GT(rejected, 300);
-  EXPECT_GT(kept, 100);
+  EXPECT_GT(outside, 1000);  // the bound is not trivially 0
 }
 
-TEST(PolylineBoxes, OnlySegmentsStartingByUntilCount) {
+TEST(PolylineBoxes, ABoxHoldsItsRunsVertices) {
   std::vector<MapPoint> straight;
-  for (int i = 0; i <= 20; ++i) straight.push_back({static_cast<double>(i), 0});
+  for (int i = 0; i <= 20; ++i) straight.push_back({static_cast<double>(i), 0.5 * i});
   Polyline path(straight);
   PolylineBoxes boxes(path);
-  EXPECT_FALSE(boxes.all_beyond(path, {18.5, 0.1}, 0, 30, 0.5));
-  EXPECT_TRUE(boxes.all_beyond(path, {18.5, 5}, 0, 30, 0.5));
-  // Segments starting beyond `until` are not looked at; a box's segments all are, or none.
-  EXPECT_TRUE(boxes.all_beyond(path, {18.5, 0.1}, 0, 7.5, 0.5));
-  EXPECT_FALSE(boxes.all_beyond(path, {18.5, 0.1}, 0, 16, 0.5));
-  // Nor are the boxes wholly before `first`.
-  EXPECT_TRUE(boxes.all_beyond(path, {2, 0}, 16, 30, 0.5));
+  ASSERT_EQ(boxes.size(), 3u);  // segments 0-7, 8-15, 16-19
+  EXPECT_EQ(boxes.low(1).x, 8);
+  EXPECT_EQ(boxes.high(1).x, 16);
+  EXPECT_EQ(boxes.high(2).y, 10);
+  EXPECT_EQ(boxes.distance_squared(1, {12, 5}), 0);
+  EXPECT_EQ(boxes.distance_squared(1, {12, 9}), 1);
+}
+
+TEST(SegmentFrames, DistanceSquaredIsTheProjectionsSquareBitForBit) {
+  std::mt19937_64 random(19);
+  Polyline path = wiggly_path(random, 60);
+  SegmentFrames frames(path);
+  std::uniform_real_distribution<double> offset(-15, 15);
+  for (int i = 0; i < 1000; ++i) {
+    const MapPoint& near_vertex = path.points()[static_cast<std::size_t>(i) % 60];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    std::size_t segment = static_cast<std::size_t>(i * 7) % path.segment_count();
+    EXPECT_EQ(std::sqrt(frames.distance_squared(path, point, segment)),
+              frames.project(path, point, segment).distance);
+  }
 }
 
 TEST(SegmentFrames, ProjectionIsPolylinesBitForBit) {

@@ -1,0 +1,53 @@
+// The nearest point of a stretch of path within a reach (see nearest_on_path.hpp).
+#include "physics/map/nearest_on_path.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace scenfuzz {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// m added to a bound before a box rules its segments out: far above the rounding of a distance
+// between map points (about 1e-9 m at UTM coordinates), far below anything that matters.
+constexpr double kRoundingMargin = 1e-6;
+
+}  // namespace
+
+PolylineProjection nearest_on_path(const Polyline& path, const PolylineBoxes& boxes,
+                                   const SegmentFrames& frames, MapPoint point, std::size_t first,
+                                   double until, double reach) {
+  const auto& arc = path.arc_lengths();
+  const std::size_t count = path.segment_count();
+  constexpr std::size_t run = PolylineBoxes::kRun;
+  std::size_t best = count;
+  double best_squared = kInfinity, best_distance = kInfinity;
+  // A box farther than this holds no segment within reach, nor one nearer than the best found.
+  double bound = reach + kRoundingMargin;
+  double bound_squared = bound * bound;
+  for (std::size_t box = first / run; box < boxes.size() && arc[box * run] <= until; ++box) {
+    if (boxes.distance_squared(box, point) > bound_squared) continue;
+    const std::size_t end = std::min(box * run + run, count);
+    for (std::size_t seg = std::max(first, box * run); seg < end && arc[seg] <= until; ++seg) {
+      const double squared = frames.distance_squared(path, point, seg);
+      // The root does not decrease as its argument grows: a larger square is no nearer.
+      if (squared > best_squared) continue;
+      const double distance = std::sqrt(squared);
+      if (!(distance < best_distance)) continue;  // equally near: the first found stays
+      best = seg;
+      best_squared = squared;
+      best_distance = distance;
+      bound = std::min(reach, distance) + kRoundingMargin;
+      bound_squared = bound * bound;
+    }
+  }
+  if (best == count || best_distance > reach) {
+    PolylineProjection none;
+    none.distance = kInfinity;
+    return none;
+  }
+  return frames.project(path, point, best);
+}
+
+}  // namespace scenfuzz

@@ -1,0 +1,110 @@
+// nearest_on_path, what a lane follower asks of its path for every actor it looks at, must give
+// exactly the answer of projecting onto every segment of the stretch: the nearest within reach,
+// the first of equally near ones, bit for bit.
+#include "physics/map/nearest_on_path.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace scenfuzz {
+namespace {
+
+// A wiggly path of uneven segments (0.2 m to 3 m) at UTM-like coordinates, turning back on itself
+// now and then, so that far stretches of path come near again.
+Polyline winding_path(std::mt19937_64& random, std::size_t points) {
+  std::uniform_real_distribution<double> step(0.2, 3.0), turn(-0.5, 0.5);
+  std::vector<MapPoint> vertices{{552000.5, 4182000.25}};
+  double heading = 0.3;
+  for (std::size_t i = 1; i < points; ++i) {
+    heading += turn(random);
+    double length = step(random);
+    vertices.push_back({vertices.back().x + length * std::cos(heading),
+                        vertices.back().y + length * std::sin(heading)});
+  }
+  return Polyline(vertices);
+}
+
+// The definition: every segment from `first` that starts by `until` projected, the smallest
+// distance (the first of equal ones) if within reach.
+PolylineProjection every_segment(const Polyline& path, const SegmentFrames& frames, MapPoint point,
+                                 std::size_t first, double until, double reach) {
+  PolylineProjection nearest;
+  nearest.distance = std::numeric_limits<double>::infinity();
+  for (std::size_t seg = first; seg < path.segment_count() && path.arc_lengths()[seg] <= until;
+       ++seg) {
+    PolylineProjection p = frames.project(path, point, seg);
+    if (p.distance < nearest.distance) nearest = p;
+  }
+  if (nearest.distance > reach) nearest.distance = std::numeric_limits<double>::infinity();
+  return nearest;
+}
+
+TEST(NearestOnPath, IsTheNearestOfEverySegmentBitForBit) {
+  std::mt19937_64 random(23);
+  Polyline path = winding_path(random, 400);
+  PolylineBoxes boxes(path);
+  SegmentFrames frames(path);
+  std::uniform_int_distribution<std::size_t> start(0, path.segment_count() - 1), later(0, 60);
+  std::uniform_real_distribution<double> offset(-10, 10), reach(0.5, 6), ahead(5, 120);
+  int found = 0, none = 0;
+  for (int i = 0; i < 20000; ++i) {
+    std::size_t first = start(random);
+    // Mostly near the stretch looked at, sometimes behind it or far beyond.
+    const MapPoint& near_vertex =
+        path.points()[std::min(first + later(random) - 5 * (i % 3 == 0), path.segment_count())];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    if (i % 10 == 0) point = near_vertex;  // exactly on a vertex: two segments equally near
+    double until = path.arc_lengths()[first] + ahead(random);
+    double r = reach(random);
+    PolylineProjection expected = every_segment(path, frames, point, first, until, r);
+    // Within rounding of the reach either answer is right; such points are not compared.
+    if (std::abs(expected.distance - r) < 1e-9) continue;
+    PolylineProjection got = nearest_on_path(path, boxes, frames, point, first, until, r);
+    if (!std::isfinite(expected.distance)) {
+      EXPECT_FALSE(std::isfinite(got.distance)) << "point " << i;
+      ++none;
+      continue;
+    }
+    ++found;
+    EXPECT_EQ(got.segment, expected.segment) << "point " << i;
+    EXPECT_EQ(got.distance, expected.distance) << "point " << i;
+    EXPECT_EQ(got.s, expected.s) << "point " << i;
+    EXPECT_EQ(got.lateral, expected.lateral) << "point " << i;
+  }
+  // The test means something only if both answers occur often.
+  EXPECT_GT(found, 2000);
+  EXPECT_GT(none, 2000);
+}
+
+TEST(NearestOnPath, LooksOnlyFromFirstToUntil) {
+  std::vector<MapPoint> straight;
+  for (int i = 0; i <= 40; ++i) straight.push_back({static_cast<double>(i), 0});
+  Polyline path(straight);
+  PolylineBoxes boxes(path);
+  SegmentFrames frames(path);
+  // Beside metre 30: found from the start with room enough ahead, not when `until` stops short
+  // (segments starting after it are not looked at) nor from beyond it.
+  PolylineProjection near = nearest_on_path(path, boxes, frames, {30.5, 1}, 0, 35, 2);
+  EXPECT_EQ(near.segment, 30u);
+  EXPECT_EQ(near.s, 30.5);
+  EXPECT_EQ(near.lateral, 1);
+  EXPECT_EQ(nearest_on_path(path, boxes, frames, {30.5, 1}, 0, 30, 2).segment, 30u);
+  // Up to segment 28 (starting at 28 m): its end, 1.80 m away, is the nearest.
+  EXPECT_EQ(nearest_on_path(path, boxes, frames, {30.5, 1}, 0, 28, 2).segment, 28u);
+  EXPECT_FALSE(std::isfinite(nearest_on_path(path, boxes, frames, {30.5, 1}, 0, 27.5, 2).distance));
+  // From segment 31 on, the nearest is segment 31's start, 1.118 m away.
+  PolylineProjection later = nearest_on_path(path, boxes, frames, {30.5, 1}, 31, 40, 2);
+  EXPECT_EQ(later.segment, 31u);
+  EXPECT_EQ(later.s, 31);
+  EXPECT_FALSE(
+      std::isfinite(nearest_on_path(path, boxes, frames, {30.5, 1}, 31, 40, 1.1).distance));
+  EXPECT_FALSE(std::isfinite(nearest_on_path(path, boxes, frames, {30.5, 3}, 0, 40, 2).distance));
+}
+
+}  // namespace
+}  // namespace scenfuzz
