@@ -45,6 +45,8 @@ Finding FindingLog::make_finding(std::size_t objective, const EvaluationRecord& 
   } else {
     finding.objective_name = objectives_[objective];
     finding.robustness = record.evaluation.robustness[objective];
+    if (objective < record.evaluation.endings.size())
+      finding.ending = record.evaluation.endings[objective];
   }
   return finding;
 }

@@ -23,6 +23,9 @@ struct Finding {
   UnitPoint point;
   std::string signature;
   std::string failure;  // an ego failure: what happened
+  // "stuck" when the spec was violated only because the run ended while the ego had stopped
+  // making progress (oracle/judge.hpp); empty when the trace decided it.
+  std::string ending;
 
   bool ego_failure() const { return objective == kNoObjective; }
   static constexpr std::size_t kNoObjective = static_cast<std::size_t>(-1);

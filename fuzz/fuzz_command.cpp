@@ -92,12 +92,14 @@ std::optional<SearchOptions> search_options(const FuzzCommandOptions& options,
 
 // Checks what setting the scenario up at the centre of its space says: its warnings (an ego far
 // from every lane) are shown once, and its own duration must fit --dt (the command line could not
-// know it). False after an error on `err`.
-bool check_setup(const FuzzCommandOptions& options, const SourceFile& file,
+// know it); a --duration shorter than a spec reads is warned of. False after an error on `err`.
+bool check_setup(const FuzzCommandOptions& options, const ScenarioFile& input,
                  const ScenarioEvaluator& evaluator, std::ostream& err) {
   const SetupProbe probe =
       evaluator.probe(std::vector<double>(evaluator.space().dimensions.size(), 0.5));
-  err << format_diagnostics(file, probe.warnings);
+  err << format_diagnostics(input.file, probe.warnings);
+  for (const std::string& warning : duration_warnings(options.simulation, input.scenario.specs))
+    err << "scenfuzz: warning: " << warning << "\n";
   if (options.simulation.duration || !probe.duration) return true;
   const std::optional<std::string> problem =
       check_step_count(*probe.duration, options.simulation.dt,
@@ -157,6 +159,7 @@ class SearchSession {
   // After the search: the final summary.json, and the stop reason "error" after a failed write.
   void finish(SearchSummary& summary) {
     if (!write_failure_.empty()) summary.stop = StopReason::error;
+    warn_of_design(true);
     progress_.update(summary.judged, outputs_.best(), objectives_, log_.findings().size(), true);
     progress_.finish();
     std::string failure = outputs_.finish(summary, log_, write_failure_);
@@ -203,6 +206,14 @@ class SearchSession {
     so_far_.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     write_failure_ = outputs_.end_batch(so_far_, log_);
+    warn_of_design(false);
+  }
+
+  void warn_of_design(bool search_over) {
+    for (const std::string& warning : outputs_.take_design_warnings(search_over)) {
+      progress_.finish();
+      err_ << "scenfuzz: warning: " << warning << "\n";
+    }
   }
 
   const FuzzCommandOptions& options_;
@@ -223,6 +234,7 @@ std::string finding_line(const Finding& finding) {
   if (finding.ego_failure()) return line + finding.objective_name + ": " + finding.failure;
   line += finding.objective_name + " robustness " +
           format_number(std::round(finding.robustness * 1e6) / 1e6);
+  if (!finding.ending.empty()) line += " " + finding.ending;
   return line + (finding.signature.empty() ? "" : " (" + finding.signature + ")");
 }
 
@@ -262,6 +274,10 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
   if (log.duplicates() > 0) out << " (" << log.duplicates() << " duplicates skipped)";
   out << (kept.empty() ? "\n" : ":\n");
   for (const Finding* finding : kept) out << finding_line(*finding) << "\n";
+  for (std::size_t k = 0; k < objectives.size() && k < outputs.time_outs().size(); ++k)
+    if (outputs.time_outs()[k] > 0)
+      out << "  " << objectives[k] << ": " << outputs.time_outs()[k]
+          << " time-outs (the run ended while the ego still made progress; not findings)\n";
   if (outputs.audited_with_issues() > 0) out << audit_line(outputs, summary) << "\n";
   out << "wrote " << (fs::path(options.out_dir) / "summary.json").string() << "\n";
 }
@@ -292,7 +308,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
   if (!evaluator) return kExitBadInput;
   std::optional<SearchOptions> search = search_options(options, *evaluator, err);
   if (!search) return kExitUsage;
-  if (!check_setup(options, input->file, *evaluator, err)) return kExitUsage;
+  if (!check_setup(options, *input, *evaluator, err)) return kExitUsage;
 
   OutputFolderLock lock;
   SearchOutputs outputs(options, input->file, input->scenario, *evaluator);

@@ -10,6 +10,8 @@
 #include <utility>
 
 #include "lang/number_format.hpp"
+#include "lang/spec_horizon.hpp"
+#include "physics/simulation/default_duration.hpp"
 
 namespace scenfuzz {
 
@@ -226,6 +228,18 @@ std::optional<std::string> check_step_count(double duration, double dt,
          bound_text(std::floor(duration / dt)) + " steps, more than the " +
          bound_text(kMaxSimulationSteps) + " a simulation may take; raise --dt or lower " +
          "--duration";
+}
+
+std::vector<std::string> duration_warnings(const SimulationCommandOptions& options,
+                                           std::span<const Spec> specs) {
+  std::vector<std::string> warnings;
+  if (!options.duration) return warnings;
+  for (const SpecHorizon& short_of : horizons_beyond(specs, *options.duration))
+    warnings.push_back("--duration " + format_number(*options.duration) +
+                       " is shorter than spec '" + short_of.spec + "' reads (" +
+                       format_number(short_of.seconds) +
+                       " s): its verdict may be a time-out (docs/search.md)");
+  return warnings;
 }
 
 SimulationOptions simulation_options(const SimulationCommandOptions& options) {

@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "fuzz/commands.hpp"
+#include "lang/spec.hpp"
 #include "oracle/judge.hpp"
 #include "physics/simulation/simulation.hpp"
 #include "physics/simulation/simulation_limits.hpp"
@@ -90,6 +92,11 @@ void add_search_options(CLI::App* app, FuzzCommandOptions& options);
 // scenario's duration 100 s").
 std::optional<std::string> check_step_count(double duration, double dt,
                                             const std::string& duration_source);
+
+// A warning for every spec that reads further than an explicit --duration (lang/spec_horizon.hpp):
+// its verdict may be a time-out. Empty without --duration.
+std::vector<std::string> duration_warnings(const SimulationCommandOptions& options,
+                                           std::span<const Spec> specs);
 
 // What the simulation is asked for by the command line's options (the seed apart).
 SimulationOptions simulation_options(const SimulationCommandOptions& options);

@@ -93,28 +93,54 @@ std::string place_of(const SourceFile& file, const SourceLocation& location) {
   return file.path() + ":" + std::to_string(location.line) + ":" + std::to_string(location.column);
 }
 
-std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict) {
-  // Nine decimals read better than the 17 digits a double may need; --json has them all.
-  std::string text = "spec " + verdict.name + ": robustness " +
-                     format_number(std::round(verdict.robustness * 1e9) / 1e9);
-  if (!verdict.violated()) return text + " (satisfied)";
-  text += " at " + format_number(std::round(verdict.time * 1000) / 1000) + " s, violated";
+// "by 'dis(...) <= 2' (file:3:9)": the responsible atom.
+std::string atom_of(const SourceFile& file, const SpecVerdict& verdict) {
   if (verdict.atom.known())
-    text += " by '" + verdict.atom_text + "' (" + place_of(file, verdict.atom) + ")";
-  else if (!verdict.atom_text.empty())
-    text += ": " + verdict.atom_text;
+    return " by '" + verdict.atom_text + "' (" + place_of(file, verdict.atom) + ")";
+  return verdict.atom_text.empty() ? "" : ": " + verdict.atom_text;
+}
+
+// Nine decimals read better than the 17 digits a double may need; --json has them all.
+std::string robustness_text(double robustness) {
+  return format_number(std::round(robustness * 1e9) / 1e9);
+}
+
+std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict) {
+  const std::string at = " at " + format_number(std::round(verdict.time * 1000) / 1000) + " s";
+  if (verdict.ending == VerdictEnding::time_out)
+    return "spec " + verdict.name +
+           ": time-out: the run ended while the ego still made progress (" + verdict.progress +
+           "); robustness " + robustness_text(verdict.robustness_at_end) + at +
+           atom_of(file, verdict) + " as it ended, " + robustness_text(verdict.robustness) +
+           " had it gone on";
+  std::string text = "spec " + verdict.name + ": robustness " + robustness_text(verdict.robustness);
+  if (!verdict.violated()) return text + " (satisfied)";
+  text += at + ", violated" + atom_of(file, verdict);
+  if (verdict.ending == VerdictEnding::stuck)
+    text += "; stuck: the run ended before it could hold, and the ego " + verdict.progress;
   return text;
+}
+
+// "satisfied", "violated", "time-out": a spec's verdict in words.
+std::string verdict_word(const SpecVerdict& verdict) {
+  if (verdict.ending == VerdictEnding::time_out) return "time-out";
+  return verdict.violated() ? "violated" : "satisfied";
 }
 
 nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdict>& verdicts) {
   nlohmann::json specs = nlohmann::json::array();
   for (const SpecVerdict& verdict : verdicts) {
-    nlohmann::json spec = {{"name", verdict.name},
-                           {"robustness", robustness_json(verdict.robustness)},
-                           {"violated", verdict.violated()},
-                           {"time", verdict.time},
-                           {"atom", verdict.atom_text}};
+    nlohmann::json spec = {
+        {"name", verdict.name},           {"robustness", robustness_json(verdict.robustness)},
+        {"violated", verdict.violated()}, {"verdict", verdict_word(verdict)},
+        {"time", verdict.time},           {"atom", verdict.atom_text}};
     if (verdict.atom.known()) spec["atom_location"] = place_of(file, verdict.atom);
+    if (verdict.ending == VerdictEnding::time_out)
+      spec["robustness_at_end"] = robustness_json(verdict.robustness_at_end);
+    if (verdict.ending != VerdictEnding::decided) {
+      spec["ending"] = verdict_ending_name(verdict.ending);
+      spec["progress"] = verdict.progress;
+    }
     specs.push_back(spec);
   }
   return specs;
@@ -251,6 +277,8 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   auto setup = prepare_simulation(scenario, values, *map, options.seed, diagnostics);
   err << format_diagnostics(file, diagnostics);
   if (!setup) return kExitBadInput;
+  for (const std::string& warning : duration_warnings(options.simulation, scenario.specs))
+    err << "scenfuzz: warning: " << warning << "\n";
 
   // The scenario's own duration is known only now; too many steps would exhaust memory.
   if (!options.simulation.duration) {

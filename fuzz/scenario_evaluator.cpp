@@ -182,6 +182,11 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
     evaluation.robustness.push_back(verdict.robustness);
     evaluation.guide.push_back(verdict.guide);
   }
+  for (std::size_t k = 0; k < run.verdicts.size(); ++k) {
+    if (run.verdicts[k].ending == VerdictEnding::decided) continue;
+    evaluation.endings.resize(run.verdicts.size());
+    evaluation.endings[k] = verdict_ending_name(run.verdicts[k].ending);
+  }
   evaluation.signature = collision_signature(*run.trace);
   return evaluation;
 }

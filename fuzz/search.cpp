@@ -55,6 +55,7 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
   if (objectives.empty())
     for (std::size_t i = 0; i < objective_count; ++i) objectives.push_back(i);
   std::vector<Target> targets;
+  std::vector<bool> first_batch_done(objectives.size(), false);
   for (std::size_t k = 0; k < objectives.size(); ++k) {
     if (objectives[k] >= objective_count)
       throw std::invalid_argument("search target " + std::to_string(objectives[k]) +
@@ -85,7 +86,8 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
   while (!stopped) {
     bool any_left = false;
     // Round robin over the targets, one batch each.
-    for (Target& target : targets) {
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      Target& target = targets[t];
       if (target.remaining == 0 || target.exhausted) continue;
       if (callbacks.interrupted && callbacks.interrupted()) {
         summary.stop = StopReason::interrupted;
@@ -115,7 +117,9 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
         records[i].seed = derive_seed(options.seed, records[i].index);
         records[i].target = target.objective;
         records[i].point = points[i];
+        records[i].first_design = !first_batch_done[t];
       }
+      first_batch_done[t] = true;
       next_index += points.size();
       arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, records.size(), 1),

@@ -40,6 +40,9 @@ struct EvaluationRecord {
   std::size_t target = 0;  // the objective whose strategy proposed the point
   UnitPoint point;
   Evaluation evaluation;
+  // Whether the point is of its target's first batch (the GA's first generation, a sampler's
+  // first points): the survey a spec's violation rate is measured on.
+  bool first_design = false;
 };
 
 // error: the caller stopped the search because it could not record it (a full disk); the search

@@ -23,7 +23,7 @@ namespace {
 
 // The fixed columns before the parameters and after the specs.
 constexpr std::size_t kLeading = 5;   // evaluation, seed, target, status, kind
-constexpr std::size_t kTrailing = 4;  // audit, signature, wall_seconds, reason
+constexpr std::size_t kTrailing = 5;  // audit, endings, signature, wall_seconds, reason
 
 std::string status_name(const Evaluation& evaluation) {
   return !evaluation.feasible() ? "infeasible" : !evaluation.judged() ? "failed" : "judged";
@@ -109,6 +109,34 @@ bool parse_audit(const std::string& text, std::vector<std::size_t>& counts) {
   return true;
 }
 
+// "reach=time-out;clearance=stuck": the objectives whose verdict the run's end left open.
+std::string endings_text(const std::vector<std::string>& endings,
+                         const std::vector<std::string>& objectives) {
+  std::string text;
+  for (std::size_t k = 0; k < endings.size() && k < objectives.size(); ++k)
+    if (!endings[k].empty()) text += (text.empty() ? "" : ";") + objectives[k] + "=" + endings[k];
+  return text;
+}
+
+bool parse_endings(const std::string& text, const std::vector<std::string>& objectives,
+                   std::vector<std::string>& endings) {
+  endings.clear();
+  if (text.empty()) return true;
+  endings.assign(objectives.size(), "");
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    const std::size_t equals = item.rfind('=');
+    if (equals == std::string::npos) return false;
+    const auto found = std::find(objectives.begin(), objectives.end(), item.substr(0, equals));
+    if (found == objectives.end()) return false;
+    endings[static_cast<std::size_t>(found - objectives.begin())] = item.substr(equals + 1);
+    start = end + 1;
+  }
+  return true;
+}
+
 }  // namespace
 
 SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives)
@@ -120,7 +148,7 @@ SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::strin
   for (const std::string& objective : objectives_)
     header_ += "," + csv_field("robustness." + objective);
   for (const std::string& objective : objectives_) header_ += "," + csv_field("guide." + objective);
-  header_ += ",audit,signature,wall_seconds,reason\n";
+  header_ += ",audit,endings,signature,wall_seconds,reason\n";
 }
 
 std::string SearchJournal::row(const EvaluationRecord& record) const {
@@ -144,7 +172,9 @@ std::string SearchJournal::row(const EvaluationRecord& record) const {
         judged && k < evaluation.guide.size() && evaluation.guide[k] != evaluation.robustness[k];
     row += "," + (differs ? format_number(evaluation.guide[k]) : std::string());
   }
-  row += "," + audit_text(evaluation.audit) + "," + csv_field(evaluation.signature) + "," +
+  row += "," + audit_text(evaluation.audit) + "," +
+         csv_field(endings_text(evaluation.endings, objectives_)) + "," +
+         csv_field(evaluation.signature) + "," +
          format_number(std::round(evaluation.wall_seconds * 1e6) / 1e6) + "," +
          csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "\n";
   return row;
@@ -175,14 +205,18 @@ std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::
   Evaluation& evaluation = record.evaluation;
   const std::string& status = fields[3];
   const std::size_t trailing = kLeading + 2 * d + 2 * n;
-  const std::string& reason = fields[trailing + 3];
+  const std::string& reason = fields[trailing + 4];
   evaluation.failure_kind = fields[4];
   if (!parse_audit(fields[trailing], evaluation.audit)) {
     error = "has a bad audit '" + fields[trailing] + "'";
     return std::nullopt;
   }
-  evaluation.signature = fields[trailing + 1];
-  parse_number(fields[trailing + 2], evaluation.wall_seconds);
+  if (!parse_endings(fields[trailing + 1], objectives_, evaluation.endings)) {
+    error = "has bad endings '" + fields[trailing + 1] + "'";
+    return std::nullopt;
+  }
+  evaluation.signature = fields[trailing + 2];
+  parse_number(fields[trailing + 3], evaluation.wall_seconds);
   if (status == "infeasible") {
     evaluation.infeasible = reason.empty() ? "infeasible" : reason;
   } else if (status == "failed") {

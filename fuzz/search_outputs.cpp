@@ -70,6 +70,7 @@ nlohmann::json finding_json(const Finding& finding) {
     entry["kind"] = "violation";
     entry["spec"] = finding.objective_name;
     entry["robustness"] = robustness_json(finding.robustness);
+    if (!finding.ending.empty()) entry["ending"] = finding.ending;
   }
   return entry;
 }
@@ -88,7 +89,11 @@ SearchOutputs::SearchOutputs(const FuzzCommandOptions& options, const SourceFile
       evaluator_(evaluator),
       dir_(options.out_dir),
       objectives_(evaluator.objectives()),
-      journal_(evaluator.space(), objectives_) {}
+      journal_(evaluator.space(), objectives_),
+      time_outs_(objectives_.size(), 0),
+      stuck_(objectives_.size(), 0),
+      design_violations_(objectives_.size(), 0),
+      design_first_violation_(objectives_.size()) {}
 
 std::string SearchOutputs::start() {
   std::error_code error;
@@ -142,6 +147,48 @@ void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
     if (best_.size() < objectives_.size()) best_.assign(objectives_.size(), INFINITY);
     best_[k] = std::min(best_[k], evaluation.robustness[k]);
   }
+  for (std::size_t k = 0; k < evaluation.endings.size() && k < objectives_.size(); ++k) {
+    if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::time_out)) ++time_outs_[k];
+    if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::stuck)) ++stuck_[k];
+  }
+  record_design(record);
+}
+
+void SearchOutputs::record_design(const EvaluationRecord& record) {
+  const Evaluation& evaluation = record.evaluation;
+  if (!record.first_design) {
+    design_over_ = true;
+    return;
+  }
+  if (!evaluation.judged()) return;
+  ++design_points_;
+  for (std::size_t k = 0; k < objectives_.size(); ++k) {
+    if (!(evaluation.robustness[k] < 0)) continue;
+    ++design_violations_[k];
+    if (!design_first_violation_[k]) design_first_violation_[k] = record;
+  }
+}
+
+std::vector<std::string> SearchOutputs::take_design_warnings(bool search_over) {
+  if (design_warned_ || !(design_over_ || search_over) || design_points_ == 0) return {};
+  design_warned_ = true;
+  std::vector<std::string> warnings;
+  for (std::size_t k = 0; k < objectives_.size(); ++k) {
+    if (2 * design_violations_[k] <= design_points_) continue;
+    const EvaluationRecord& first = *design_first_violation_[k];
+    const ScenarioRun run = evaluator_.run(first.point, first.seed);
+    std::string atom;
+    if (k < run.verdicts.size() && !run.verdicts[k].atom_text.empty())
+      atom = " (at evaluation " + std::to_string(first.index) +
+             ", the first of them: " + one_line(run.verdicts[k].atom_text) + ")";
+    warnings.push_back("spec '" + objectives_[k] + "' is violated at " +
+                       std::to_string(design_violations_[k]) + " of the " +
+                       std::to_string(design_points_) + " points of the search's first design (" +
+                       format_number(std::round(100.0 * static_cast<double>(design_violations_[k]) /
+                                                static_cast<double>(design_points_))) +
+                       " %)" + atom + ": its ranges or thresholds are probably wrong");
+  }
+  return warnings;
 }
 
 fs::path SearchOutputs::finding_path(const Finding& finding, const std::string& extension) const {
@@ -176,6 +223,8 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
     header += "spec " + finding.objective_name + " violated, robustness " +
               format_number(verdict.robustness) + " at " + seconds_text(verdict.time);
     if (!verdict.atom_text.empty()) header += " (" + verdict.atom_text + ")";
+    if (verdict.ending == VerdictEnding::stuck)
+      header += "; stuck: the run ended before it could hold, and the ego " + verdict.progress;
     if (!finding.signature.empty()) origin += ", collision " + finding.signature;
     header += "\n" + comment + origin + "\n";
   }
@@ -278,6 +327,19 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
   for (std::size_t k = 0; k < audit_totals_.size(); ++k)
     issues[std::string(audit_kind_name(static_cast<AuditKind>(k)))] = audit_totals_[k];
   document["audit"] = {{"simulations_with_issues", audited_with_issues_}, {"issues", issues}};
+  nlohmann::json time_outs = nlohmann::json::object(), stuck = nlohmann::json::object(),
+                 rates = nlohmann::json::object();
+  for (std::size_t k = 0; k < objectives_.size(); ++k) {
+    time_outs[objectives_[k]] = time_outs_[k];
+    stuck[objectives_[k]] = stuck_[k];
+    if (design_points_ > 0)
+      rates[objectives_[k]] =
+          static_cast<double>(design_violations_[k]) / static_cast<double>(design_points_);
+  }
+  document["time_outs"] = time_outs;
+  document["stuck"] = stuck;
+  document["first_design"] = {
+      {"points", design_points_}, {"over", design_over_ || complete}, {"violation_rate", rates}};
   if (!error.empty()) document["error"] = error;
   return document;
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -61,6 +62,14 @@ class SearchOutputs {
   // Simulations whose trace audit found something, and the issues by AuditKind over the search.
   std::size_t audited_with_issues() const { return audited_with_issues_; }
   const std::vector<std::size_t>& audit_totals() const { return audit_totals_; }
+  // Per objective: evaluations whose verdict was a time-out (not violations).
+  const std::vector<std::size_t>& time_outs() const { return time_outs_; }
+
+  // Once the first design (EvaluationRecord::first_design) is over, or with `search_over`: a
+  // warning for every spec violated at more than half of its judged points, naming the rate and
+  // the responsible atom at the first of them (simulated again); empty after the first call
+  // that had them, and before the design is over.
+  std::vector<std::string> take_design_warnings(bool search_over);
 
   // Whether `finding`'s files could not be written (the search then stops): it is left out of
   // the summary, and a resumed search writes it.
@@ -74,6 +83,7 @@ class SearchOutputs {
                             const std::string& error);
   std::string finding_header(const Finding& finding, const ScenarioRun& run,
                              const std::filesystem::path& scenario_path) const;
+  void record_design(const EvaluationRecord& record);
 
   const FuzzCommandOptions& options_;
   const SourceFile& file_;
@@ -94,6 +104,14 @@ class SearchOutputs {
   using Clock = std::chrono::steady_clock;
   Clock::time_point last_summary_ = Clock::now();
   std::size_t findings_in_summary_ = 0;
+  // Per objective: evaluations whose verdict was a time-out, and stuck ones.
+  std::vector<std::size_t> time_outs_, stuck_;
+  // The first design: judged points, violations per objective and the first violating record.
+  std::size_t design_points_ = 0;
+  std::vector<std::size_t> design_violations_;
+  std::vector<std::optional<EvaluationRecord>> design_first_violation_;
+  bool design_over_ = false;
+  bool design_warned_ = false;
 };
 
 // What summary.json and the --json finding events say of every finding: number, evaluation,

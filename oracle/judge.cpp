@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "lang/spec_horizon.hpp"
 #include "oracle/collision_oracle.hpp"
+#include "oracle/ego_progress.hpp"
 #include "oracle/robustness.hpp"
 #include "oracle/search_guide.hpp"
 #include "oracle/trace_signals.hpp"
@@ -49,7 +52,68 @@ SpecVerdict no_collision_verdict(const Trace& trace, const RoadMap& map,
   return verdict;
 }
 
+// The robustness of `formula`, or for a conjunction its conjunct guide, from `robustness` of
+// each conjunct.
+double guide_of(const Formula& formula, const SignalSource& source, double robustness,
+                bool continued) {
+  const std::vector<Formula> conjuncts = top_level_conjuncts(formula);
+  if (conjuncts.size() <= 1) return robustness;
+  std::vector<double> values;
+  for (const Formula& conjunct : conjuncts)
+    values.push_back(continued
+                         ? robustness_if_continued(conjunct, source, formula_horizon(conjunct))
+                         : robustness_signal(conjunct, source).front());
+  return conjunct_guide(values);
+}
+
+// The ego's progress at the end of the run, computed once and only when a verdict asks.
+class LazyProgress {
+ public:
+  LazyProgress(const Trace& trace, const ScenarioTemplate& scenario,
+               std::span<const double> parameters, const RoadMap& map)
+      : trace_(trace), scenario_(scenario), parameters_(parameters), map_(map) {}
+
+  const EgoProgress& get() {
+    if (!progress_) progress_ = ego_progress_at_end(trace_, scenario_, parameters_, map_);
+    return *progress_;
+  }
+
+ private:
+  const Trace& trace_;
+  const ScenarioTemplate& scenario_;
+  std::span<const double> parameters_;
+  const RoadMap& map_;
+  std::optional<EgoProgress> progress_;
+};
+
+// A violation of a run that ended at its duration that a longer run might not have had: a
+// time-out while the ego progressed, else stuck.
+void judge_the_end(const Spec& spec, const SignalSource& source, LazyProgress& progress,
+                   SpecVerdict& verdict) {
+  const double continued =
+      robustness_if_continued(spec.formula, source, formula_horizon(spec.formula));
+  if (continued < 0) return;
+  verdict.progress = progress.get().description;
+  if (progress.get().stuck) {
+    verdict.ending = VerdictEnding::stuck;
+    return;
+  }
+  verdict.ending = VerdictEnding::time_out;
+  verdict.robustness_at_end = verdict.robustness;
+  verdict.robustness = continued;
+  verdict.guide = guide_of(spec.formula, source, continued, true);
+}
+
 }  // namespace
+
+std::string_view verdict_ending_name(VerdictEnding ending) {
+  switch (ending) {
+    case VerdictEnding::decided: return "decided";
+    case VerdictEnding::time_out: return "time-out";
+    case VerdictEnding::stuck: return "stuck";
+  }
+  return "decided";
+}
 
 std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
                                      std::span<const double> parameters, const Trace& trace,
@@ -58,20 +122,16 @@ std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
   if (scenario.specs.empty()) return {no_collision_verdict(trace, map, options)};
   const TraceSignals signals(trace, scenario, parameters, map);
   const SignalSource source = signals.source();
+  LazyProgress progress(trace, scenario, parameters, map);
   std::vector<SpecVerdict> verdicts;
   for (const Spec& spec : scenario.specs) {
     const RobustnessWitness witness = explain_robustness(spec.formula, source);
     SpecVerdict verdict;
     verdict.name = spec.name;
     verdict.robustness = witness.robustness;
-    verdict.guide = witness.robustness;
-    if (const std::vector<Formula> conjuncts = top_level_conjuncts(spec.formula);
-        conjuncts.size() > 1) {
-      std::vector<double> robustness;
-      for (const Formula& conjunct : conjuncts)
-        robustness.push_back(robustness_signal(conjunct, source).front());
-      verdict.guide = conjunct_guide(robustness);
-    }
+    verdict.guide = guide_of(spec.formula, source, witness.robustness, false);
+    if (verdict.violated() && trace.end == EndReason::duration)
+      judge_the_end(spec, source, progress, verdict);
     verdict.time = time_of_sample(trace, witness.sample);
     if (witness.atom) {
       verdict.atom = witness.atom->location;

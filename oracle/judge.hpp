@@ -4,6 +4,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lang/scenario.hpp"
@@ -18,6 +19,19 @@ namespace scenfuzz {
 // The name the collision oracle's verdict carries.
 inline constexpr const char* kNoCollisionSpec = "no_collision";
 
+// How the end of the run bears on a verdict (docs/oracle.md, "Time-outs").
+enum class VerdictEnding {
+  decided,  // the trace decides the spec
+  // Violated only because the run ended at its duration (robustness_if_continued is not
+  // negative: an `F` the end cut off) while the ego was still making progress: not a violation.
+  time_out,
+  // The same, but the ego had stopped making progress (ego_progress.hpp): a violation.
+  stuck,
+};
+
+// "decided", "time-out", "stuck".
+std::string_view verdict_ending_name(VerdictEnding ending);
+
 struct SpecVerdict {
   std::string name;       // the spec's name, or kNoCollisionSpec
   double robustness = 0;  // at t = 0; +inf/-inf possible
@@ -29,6 +43,12 @@ struct SpecVerdict {
   // What a search minimises: the robustness, or for a conjunction the conjunct guide
   // (search_guide.hpp); negative exactly when the robustness is.
   double guide = 0;
+  VerdictEnding ending = VerdictEnding::decided;
+  // A time-out: `robustness` and `guide` are what the run would give were it to go on as the
+  // spec needs (never negative), this is the robustness of the trace as it ended (negative).
+  double robustness_at_end = 0;
+  // A time-out or stuck: the ego's progress over the end of the run, in words.
+  std::string progress;
 
   bool violated() const { return robustness < 0; }
 };
@@ -40,8 +60,9 @@ struct JudgeOptions {
 };
 
 // One verdict per spec of `scenario`, in file order, or one from the collision oracle when it has
-// none. `file` is the scenario's source, for the atoms' text. Throws OracleError for a spec the
-// trace cannot answer (e.g. a law signal the oracle does not compute).
+// none. A spec violated only because a run that ended at its duration cut an `F` short is a
+// time-out or stuck (VerdictEnding). `file` is the scenario's source, for the atoms' text. Throws
+// OracleError for a spec the trace cannot answer (e.g. a law signal the oracle does not compute).
 std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
                                      std::span<const double> parameters, const Trace& trace,
                                      const RoadMap& map, const SourceFile& file,

@@ -250,6 +250,10 @@ class Evaluator {
  public:
   Evaluator(const SignalSource& source, bool keep) : source_(source), keep_(keep) {}
 
+  // Samples from `observed` on are not the trace's but what might come after it: every atom
+  // there is as favourable to the whole formula as it can be (robustness_if_continued).
+  void continue_from(std::size_t observed) { observed_ = observed; }
+
   Signal formula(const Formula& f) {
     Signal result = compute(f);
     if (keep_) kept_[&f] = result;
@@ -423,19 +427,35 @@ class Evaluator {
     for (Signal* buffer : {&padded, &suffix, &extreme_p, &extreme_q}) release(std::move(*buffer));
   }
 
+  // An atom's robustness past the observed samples: +inf where it is counted as it stands, -inf
+  // under an odd number of negations (there -inf is what serves the whole formula best).
+  Signal beyond_observed(Signal r) const {
+    const double best = negated_ ? -kInfinity : kInfinity;
+    for (std::size_t i = observed_; i < r.size(); ++i) r[i] = best;
+    return r;
+  }
+
+  Signal negated(const Formula& f) {
+    negated_ = !negated_;
+    Signal x = formula(f);
+    negated_ = !negated_;
+    return x;
+  }
+
   Signal compute(const Formula& f) {
     switch (f.kind) {
-      case FormulaKind::comparison: return comparison(f);
-      case FormulaKind::predicate: return predicate(f);
+      case FormulaKind::comparison: return beyond_observed(comparison(f));
+      case FormulaKind::predicate: return beyond_observed(predicate(f));
       case FormulaKind::negation: {
-        Signal x = formula(f.operands[0]);
+        Signal x = negated(f.operands[0]);
         for (double& v : x) v = -v;
         return x;
       }
       case FormulaKind::conjunction:
       case FormulaKind::disjunction:
       case FormulaKind::implication: {
-        Signal a = formula(f.operands[0]);
+        Signal a =
+            f.kind == FormulaKind::implication ? negated(f.operands[0]) : formula(f.operands[0]);
         Signal b = formula(f.operands[1]);
         if (f.kind == FormulaKind::conjunction)
           for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::min(a[i], b[i]);
@@ -497,6 +517,8 @@ class Evaluator {
 
   const SignalSource& source_;
   bool keep_;
+  std::size_t observed_ = std::numeric_limits<std::size_t>::max();
+  bool negated_ = false;
   std::unordered_map<const Formula*, Signal> kept_;
   std::vector<Signal> spare_;
   std::vector<std::size_t> queue_;  // the sliding windows' deque
@@ -587,6 +609,32 @@ SignalValues term_signal(const SpecTerm& term, const SignalSource& source) {
 
 std::vector<double> robustness_signal(const Formula& formula, const SignalSource& source) {
   return Evaluator(source, false).formula(formula);
+}
+
+double robustness_if_continued(const Formula& formula, const SignalSource& source, double horizon) {
+  const std::size_t n = source.time.size();
+  if (n == 0) return kInfinity;  // nothing observed violates anything
+  // The trace's own step carries on past its end, as far as the formula reads, at most as long
+  // again as the trace (and at least one sample, for operators over the rest of the trace).
+  const double step = n > 1 ? source.time[n - 1] - source.time[n - 2] : 1.0;
+  const auto wanted = static_cast<std::size_t>(std::ceil(horizon / step)) + 1;
+  const std::size_t extra = std::clamp<std::size_t>(wanted, 1, std::max<std::size_t>(n, 1));
+  std::vector<double> time(source.time.begin(), source.time.end());
+  for (std::size_t k = 1; k <= extra; ++k)
+    time.push_back(source.time[n - 1] + static_cast<double>(k) * step);
+  SignalSource continued;
+  continued.time = time;
+  continued.parameters = source.parameters;
+  // Leaves hold their last value (any finite value will do: the atoms overwrite what they give
+  // there), so that arithmetic over them meets no new NaN.
+  continued.leaf = [&source, &time](const SpecTerm& term) {
+    SignalValues values = source.leaf(term);
+    values.values.resize(time.size(), values.values.empty() ? 0.0 : values.values.back());
+    return values;
+  };
+  Evaluator evaluator(continued, false);
+  evaluator.continue_from(n);
+  return evaluator.formula(formula).front();
 }
 
 RobustnessWitness explain_robustness(const Formula& formula, const SignalSource& source,

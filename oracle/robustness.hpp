@@ -62,6 +62,14 @@ SignalValues term_signal(const SpecTerm& term, const SignalSource& source);
 // semantics give them). Throws OracleError.
 std::vector<double> robustness_signal(const Formula& formula, const SignalSource& source);
 
+// The robustness at the first sample were the trace to go on past its last sample in whatever
+// way serves the formula best: every atom +inf there (-inf under an odd number of negations), for
+// `horizon` seconds (spec_horizon.hpp; at most as long again as the trace) at the trace's last
+// step. Weak semantics at the end: below zero only when what was observed violates the formula
+// whatever came next; the robustness below zero and this not means the trace ended too early to
+// tell (an F whose window the end cut off). Throws OracleError.
+double robustness_if_continued(const Formula& formula, const SignalSource& source, double horizon);
+
 // Why a formula has the robustness it has at a sample: following min and max down the formula,
 // the atom (comparison or predicate) and the sample whose value it is.
 struct RobustnessWitness {

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "lang/number_format.hpp"
+#include "lang/spec_horizon.hpp"
 #include "physics/actors/friction_circle.hpp"
 #include "physics/actors/path_pose.hpp"
 #include "physics/actors/random_walk.hpp"
@@ -15,6 +16,7 @@
 #include "physics/map/lane_route.hpp"
 #include "physics/map/scenario_position.hpp"
 #include "physics/planning/path_planner.hpp"
+#include "physics/simulation/default_duration.hpp"
 #include "physics/simulation/relative_position.hpp"
 #include "physics/simulation/scenario_checks.hpp"
 #include "physics/simulation/shortfall_warnings.hpp"
@@ -25,7 +27,6 @@
 namespace scenfuzz {
 namespace {
 
-constexpr double kDefaultDuration = 30;
 constexpr double kDefaultPedestrianSpeed = 1.2;  // m/s, a typical walking pace
 constexpr double kRandomWalkRadius = 10;         // m around the start
 // Scripted NPCs stop at the end of their path as a calm driver would.
@@ -595,6 +596,17 @@ Conditions conditions_of(Context& context) {
   return conditions;
 }
 
+// A duration the file gives that ends before a spec can be decided.
+void warn_of_short_duration(const ScenarioTemplate& scenario, double duration,
+                            Diagnostics& diagnostics) {
+  for (const SpecHorizon& short_of : horizons_beyond(scenario.specs, duration))
+    diagnostics.warning(scenario.duration->location,
+                        "the scenario's duration of " + format_number(duration) +
+                            " s is shorter than spec '" + short_of.spec + "' reads (" +
+                            format_number(short_of.seconds) +
+                            " s): its verdict may be a time-out (docs/search.md)");
+}
+
 }  // namespace
 
 std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenario,
@@ -605,12 +617,19 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   Context context{scenario, values, map, seed,  diagnostics,     std::nullopt,
                   {},       {},     {},  false, kDefaultDuration};
   SimulationSetup setup;
+  // The scenario's own duration, else the default (default_duration.hpp), which grows below
+  // once the ego's route is known.
+  bool own_duration = false;
+  context.duration = default_duration(scenario.specs, std::nullopt);
   if (scenario.duration) {
     double duration = evaluate(*scenario.duration, values);
     if (!check_duration(duration, scenario.duration->location, diagnostics)) return std::nullopt;
-    if (duration > 0) context.duration = duration;
+    if (duration > 0) {
+      context.duration = duration;
+      own_duration = true;
+      warn_of_short_duration(scenario, duration, diagnostics);
+    }
   }
-  setup.duration = context.duration;
 
   const Actor& ego = scenario.ego;
   if (!ego.name.empty()) setup.ego_name = ego.name;
@@ -655,6 +674,21 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     if (setup.ego_route.length < kMinimumEgoRoute) setup.ego_route = {};
   }
 
+  for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
+    auto lane = map.find_lane(limit.lane);
+    if (!lane) {
+      diagnostics.error(limit.location,
+                        "unknown lane '" + limit.lane + "' on map '" + map.name() + "'");
+      continue;
+    }
+    setup.speed_limits.emplace_back(*lane, evaluate(limit.upper, values));
+  }
+  if (!own_duration && setup.ego_target)
+    context.duration = default_duration(
+        scenario.specs,
+        route_time_at_limits(map, setup.ego_route, setup.speed_limits, setup.ego_body.max_speed));
+  setup.duration = context.duration;
+
   // Obstacles first: vehicles' paths are planned around them.
   CollisionWorld obstacles;
   for (const Obstacle& obstacle : scenario.obstacles) {
@@ -690,15 +724,6 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   // After the actors and obstacles: the road is pre-filled around them.
   prepare_flows(scenario, values, map, seed, setup, diagnostics);
   prepare_lights(context, setup);
-  for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
-    auto lane = map.find_lane(limit.lane);
-    if (!lane) {
-      diagnostics.error(limit.location,
-                        "unknown lane '" + limit.lane + "' on map '" + map.name() + "'");
-      continue;
-    }
-    setup.speed_limits.emplace_back(*lane, evaluate(limit.upper, values));
-  }
   setup.conditions = conditions_of(context);
   setup.npc_behaviour = scenario.npc_behaviour.value_or(NpcBehaviour::reactive);
   if (diagnostics.error_count() > errors_before) return std::nullopt;

@@ -31,7 +31,8 @@ struct JudgedRun {
 
 // Parses, simulates at `unit_point` (the middle when empty) and judges.
 JudgedRun judge_file(const SourceFile& file, std::vector<double> unit_point = {},
-                     const MapSearchPath& search_path = map_search_path({})) {
+                     const MapSearchPath& search_path = map_search_path({}),
+                     const SimulationOptions& options = {}) {
   JudgedRun run;
   const avunit::ParseResult parsed = avunit::parse(file);
   run.errors = format_diagnostics(file, parsed.diagnostics);
@@ -44,7 +45,7 @@ JudgedRun judge_file(const SourceFile& file, std::vector<double> unit_point = {}
   auto setup = prepare_simulation(parsed.scenario, values, map, 1, diagnostics);
   run.errors += format_diagnostics(file, diagnostics);
   if (!setup) return run;
-  run.trace = simulate(map, *setup, {});
+  run.trace = simulate(map, *setup, options);
   try {
     run.verdicts = judge_trace(parsed.scenario, values, *run.trace, map, file);
   } catch (const OracleError& error) {
@@ -165,6 +166,69 @@ scenario = CreateScenario{load("straight"); ego; {npc}; {}; {};};
   ASSERT_EQ(safe.verdicts.size(), 1u);
   EXPECT_TRUE(safe.trace->collisions.empty());
   EXPECT_GT(safe.verdicts[0].robustness, 0.0);
+}
+
+// An ego driving 460 m down an empty road, with a spec to get there and one it breaks at once.
+constexpr const char* kLongDrive = R"(
+ego_target = "east_0"->480;
+ego = AV((("east_0"->20), , 10), (ego_target, , ));
+scenario = CreateScenario{load("straight"); ego; {}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+reach = F (dis(ego_state, ego_target) <= 2.0);
+slow = G (ego_state.speed < 5.0);
+safe_and_there = G (ego_state.speed < 40.0) & F (dis(ego_state, ego_target) <= 2.0);
+trace |= reach;
+trace |= slow;
+trace |= safe_and_there;
+)";
+
+TEST(JudgeTest, ARunCutShortWhileTheEgoProgressesIsATimeOutNotAViolation) {
+  SimulationOptions ten_seconds;
+  ten_seconds.duration = 10;
+  const JudgedRun run =
+      judge_file(SourceFile("inline.avu", kLongDrive), {}, map_search_path({}), ten_seconds);
+  ASSERT_TRUE(run.trace) << run.errors;
+  ASSERT_EQ(run.trace->end, EndReason::duration);
+  ASSERT_EQ(run.verdicts.size(), 3u);
+  const SpecVerdict& reach = run.verdicts[0];
+  EXPECT_EQ(reach.ending, VerdictEnding::time_out);
+  EXPECT_FALSE(reach.violated());
+  EXPECT_LT(reach.robustness_at_end, -100);  // hundreds of metres short
+  EXPECT_GE(reach.guide, 0.0);
+  EXPECT_NE(reach.progress.find("drove"), std::string::npos) << reach.progress;
+  EXPECT_EQ(reach.atom_text, "dis(ego_state, ego_target) <= 2.0");
+  // A G the trace already broke is decided, time-out or not.
+  EXPECT_EQ(run.verdicts[1].ending, VerdictEnding::decided);
+  EXPECT_TRUE(run.verdicts[1].violated());
+  // A conjunction whose only violated part is the F the end cut off: a time-out whose
+  // robustness is the rest's.
+  const SpecVerdict& both = run.verdicts[2];
+  EXPECT_EQ(both.ending, VerdictEnding::time_out);
+  EXPECT_GT(both.robustness, 0.0);
+  EXPECT_LT(both.robustness, 40.0);
+  EXPECT_GE(both.guide, 0.0);
+}
+
+TEST(JudgeTest, AnEgoThatStoppedMakingProgressIsStuckAndViolates) {
+  // A stopped car in the only lane (kerbs on both sides): the ego stops behind it for good.
+  const JudgedRun run = judge_text(R"(
+ego_target = "east_0"->400;
+ego = AV((("east_0"->20), , 15), (ego_target, , ));
+npc = Vehicle(("east_0"->80, , 0.0));
+scenario = CreateScenario{load("straight?two_way=0&lanes=1"); ego; {npc}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+reach = F (dis(ego_state, ego_target) <= 2.0);
+trace |= reach;
+)");
+  ASSERT_TRUE(run.trace) << run.errors;
+  ASSERT_EQ(run.trace->end, EndReason::duration);
+  ASSERT_EQ(run.verdicts.size(), 1u);
+  EXPECT_EQ(run.verdicts[0].ending, VerdictEnding::stuck);
+  EXPECT_TRUE(run.verdicts[0].violated());
+  EXPECT_NE(run.verdicts[0].progress.find("no red light"), std::string::npos)
+      << run.verdicts[0].progress;
 }
 
 }  // namespace

@@ -98,7 +98,10 @@ struct Pinned {
 };
 
 // Runs corpora/benchmarks/<name> as simulation_benchmark does: the middle of its space, seed 1,
-// the full 30 s whatever collides.
+// the full 30 s whatever collides. The scenario is still set up for its default duration
+// (physics/simulation/default_duration.hpp), which plans scripted paths and random walks: these
+// benchmarks' egos have routes that take longer than 30 s at the limits, so their NPCs are
+// planned for longer runs than the 30 s simulated.
 Pinned run_benchmark(const std::string& name) {
   fs::path file = fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "benchmarks" / name;
   auto source = read_source_file(file.string());
@@ -118,7 +121,7 @@ Pinned run_benchmark(const std::string& name) {
 TEST(SimulationTraceHashTest, TenActorCrossroadsTraceIsUnchanged) {
   Pinned run = run_benchmark("crossroads_10_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
-  EXPECT_EQ(run.hash, 0xb21dd822f39364cbull) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0xdc88703003cae87cull) << std::hex << run.hash;
 }
 
 TEST(SimulationTraceHashTest, ThirtyActorSanFranciscoTraceIsUnchanged) {
@@ -126,7 +129,7 @@ TEST(SimulationTraceHashTest, ThirtyActorSanFranciscoTraceIsUnchanged) {
   Pinned run = run_benchmark("san_francisco_30_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
   EXPECT_EQ(run.trace.collisions.size(), 1u);  // a random walker into a standing car
-  EXPECT_EQ(run.hash, 0xb6e4915bdc1ef80dull) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0x562482cd0c24d09full) << std::hex << run.hash;
 }
 
 TEST(SimulationTraceHashTest, HundredActorSanFranciscoTraceIsUnchanged) {
@@ -134,7 +137,7 @@ TEST(SimulationTraceHashTest, HundredActorSanFranciscoTraceIsUnchanged) {
   Pinned run = run_benchmark("san_francisco_100_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
   EXPECT_EQ(run.trace.collisions.size(), 0u);
-  EXPECT_EQ(run.hash, 0x5d18a9da3bd82978ull) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0xf4d5f36079a53d4cull) << std::hex << run.hash;
 }
 
 // The hash sees a single bit: a trace that differs in one sample's last ulp hashes differently.

@@ -1,0 +1,135 @@
+// Honest specs, end to end: a run cut short while the ego progresses is a time-out (its own
+// verdict in `run`, no finding in a search); an ego that stopped making progress is a finding
+// marked stuck; a --duration shorter than a spec reads is warned of; a spec violated at most
+// points of the search's first design is warned of, and its rate is in summary.json.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "command_runner.hpp"
+
+namespace scenfuzz {
+namespace {
+
+using test::Outcome;
+using test::slurp;
+
+// An ego driving 460 m down an empty road at `speed` (a number or a range).
+std::string long_drive(const std::string& speed, const std::string& reach = "F") {
+  return R"(
+ego_target = "east_0"->480;
+ego = AV((("east_0"->20), , )" +
+         speed + R"(), (ego_target, , ));
+scenario = CreateScenario{load("straight"); ego; {}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+reach = )" +
+         reach +
+         R"( (dis(ego_state, ego_target) <= 2.0);
+trace |= reach;
+)";
+}
+
+class HonestSpecsTest : public test::CommandTest {
+ protected:
+  Outcome search(const std::string& scenario, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"--out", (dir_ / "out").string(), "--seed", "1"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back(write("scenario.avu", scenario));
+    return scenfuzz(args);
+  }
+  nlohmann::json summary() const {
+    return nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
+  }
+};
+
+TEST_F(HonestSpecsTest, RunReportsATimeOutAsItsOwnVerdict) {
+  const std::string file = write("drive.avu", long_drive("10"));
+  const Outcome text = scenfuzz({"run", file, "--duration", "10", "--out", ""});
+  EXPECT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("spec reach: time-out: the run ended while the ego still made progress"),
+            std::string::npos)
+      << text.out;
+  const Outcome json = scenfuzz({"run", file, "--duration", "10", "--json", "--out", ""});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json spec = nlohmann::json::parse(json.out)["specs"][0];
+  EXPECT_EQ(spec["verdict"], "time-out");
+  EXPECT_EQ(spec["violated"], false);
+  EXPECT_EQ(spec["ending"], "time-out");
+  EXPECT_LT(spec["robustness_at_end"].get<double>(), 0.0);
+}
+
+TEST_F(HonestSpecsTest, ADurationShorterThanASpecReadsIsWarnedNamingTheSpec) {
+  const std::string file = write("drive.avu", long_drive("10", "F[0:40]"));
+  const Outcome run = scenfuzz({"run", file, "--duration", "20", "--out", ""});
+  EXPECT_NE(run.err.find("warning: --duration 20 is shorter than spec 'reach' reads (40 s)"),
+            std::string::npos)
+      << run.err;
+  // The default is long enough: no warning.
+  const Outcome quiet = scenfuzz({"run", file, "--out", ""});
+  EXPECT_EQ(quiet.err.find("shorter than"), std::string::npos) << quiet.err;
+}
+
+TEST_F(HonestSpecsTest, ASearchWhoseRunsAllTimeOutHasNoFinding) {
+  const Outcome run = search(long_drive("range(8, 12)"), {"--budget", "16", "--duration", "10"});
+  EXPECT_EQ(run.exit_code, 0) << run.err << run.out;
+  const nlohmann::json summary = this->summary();
+  EXPECT_TRUE(summary["findings"].empty()) << summary.dump(2);
+  EXPECT_EQ(summary["time_outs"]["reach"], 16);
+  EXPECT_NE(run.out.find("reach: 16 time-outs"), std::string::npos) << run.out;
+}
+
+TEST_F(HonestSpecsTest, AnEgoStuckBehindAParkedCarIsAFindingMarkedStuck) {
+  const Outcome run = search(R"(
+ego_target = "east_0"->400;
+ego = AV((("east_0"->20), , range(10, 15)), (ego_target, , ));
+npc = Vehicle(("east_0"->range(70, 90), , 0.0));
+scenario = CreateScenario{load("straight?two_way=0&lanes=1"); ego; {npc}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+reach = F (dis(ego_state, ego_target) <= 2.0);
+trace |= reach;
+)",
+                             {"--budget", "8"});
+  ASSERT_EQ(run.exit_code, 1) << run.err << run.out;
+  const nlohmann::json summary = this->summary();
+  ASSERT_FALSE(summary["findings"].empty());
+  const nlohmann::json& finding = summary["findings"][0];
+  EXPECT_EQ(finding["ending"], "stuck");
+  EXPECT_GT(summary["stuck"]["reach"].get<int>(), 0);
+  EXPECT_NE(slurp(finding["file"].get<std::string>()).find("; stuck: the run ended"),
+            std::string::npos);
+  EXPECT_NE(run.out.find("reach robustness"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(" stuck"), std::string::npos) << run.out;
+}
+
+TEST_F(HonestSpecsTest, ASpecViolatedAtMostPointsOfTheFirstDesignIsWarnedOf) {
+  const Outcome run = search(R"(
+ego = AV((("east_0"->range(20, 60)), , range(5, 10)), (("east_0"->200), , ));
+scenario = CreateScenario{load("straight"); ego; {}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+too_fast = G (ego_state.speed > 100.0);
+fine = G (ego_state.speed < 100.0);
+trace |= too_fast;
+trace |= fine;
+)",
+                             {"--budget", "40", "--algo", "random", "--spec", "too_fast"});
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("warning: spec 'too_fast' is violated at 16 of the 16 points of the "
+                         "search's first design (100 %)"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("ego_state.speed > 100.0"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("its ranges or thresholds are probably wrong"), std::string::npos);
+  EXPECT_EQ(run.err.find("spec 'fine'"), std::string::npos) << run.err;
+  const nlohmann::json summary = this->summary();
+  EXPECT_DOUBLE_EQ(summary["first_design"]["violation_rate"]["too_fast"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(summary["first_design"]["violation_rate"]["fine"].get<double>(), 0.0);
+  EXPECT_EQ(summary["first_design"]["points"], 16);
+}
+
+}  // namespace
+}  // namespace scenfuzz
