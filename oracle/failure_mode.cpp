@@ -265,6 +265,16 @@ FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecV
   return mode;
 }
 
+std::vector<std::size_t> violation_order(const std::vector<SpecVerdict>& verdicts) {
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < verdicts.size(); ++k)
+    if (verdicts[k].violated()) order.push_back(k);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return verdicts[a].time < verdicts[b].time;
+  });
+  return order;
+}
+
 std::size_t sample_at_time(const Trace& trace, double time) {
   if (trace.sample_count() == 0) return 0;
   const double index = std::round(time / trace.dt);

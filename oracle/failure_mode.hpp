@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "oracle/judge.hpp"
 #include "physics/collision/body_side.hpp"
@@ -72,6 +73,11 @@ RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t 
 // verdict's time. The ego's activity and road feature: at the collision, else at that time.
 inline constexpr double kNearbyActor = 50;  // m
 FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict);
+
+// The violated verdicts' indices, the earliest in time first (ties in file order): a finding
+// names them in this order and its mode is the first's, so a crash is never reported as the
+// target a later conjunct missed.
+std::vector<std::size_t> violation_order(const std::vector<SpecVerdict>& verdicts);
 
 // The sample nearest `time` (clamped to the trace).
 std::size_t sample_at_time(const Trace& trace, double time);

@@ -104,6 +104,44 @@ void judge_the_end(const Spec& spec, const SignalSource& source, LazyProgress& p
   verdict.guide = guide_of(spec.formula, source, continued, true);
 }
 
+std::string atom_text(const SourceFile& file, const SourceLocation& atom) {
+  if (!atom.known() || atom.end_offset() > file.text().size()) return "";
+  return file.text().substr(atom.offset, atom.length);
+}
+
+// A violated conjunction's violated conjuncts, the earliest first, and the verdict's atom and
+// time the first's. A conjunct violated only because the run ended (its robustness were the
+// run to go on is not negative) is left out unless the ego was stuck.
+void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const Trace& trace,
+                             const SourceFile& file, SpecVerdict& verdict) {
+  const std::vector<Formula> conjuncts = top_level_conjuncts(spec.formula);
+  if (conjuncts.size() <= 1) return;
+  const bool cut_short = trace.end == EndReason::duration && verdict.ending != VerdictEnding::stuck;
+  for (const Formula& conjunct : conjuncts) {
+    const RobustnessWitness witness = explain_robustness(conjunct, source);
+    if (!(witness.robustness < 0)) continue;
+    if (cut_short && robustness_if_continued(conjunct, source, formula_horizon(conjunct)) >= 0)
+      continue;
+    ViolatedConjunct violated;
+    violated.eventually = conjunct.kind == FormulaKind::eventually;
+    violated.robustness = witness.robustness;
+    violated.time = time_of_sample(trace, witness.sample);
+    if (witness.atom) {
+      violated.atom = witness.atom->location;
+      violated.atom_text = atom_text(file, violated.atom);
+    }
+    verdict.conjuncts.push_back(std::move(violated));
+  }
+  std::stable_sort(verdict.conjuncts.begin(), verdict.conjuncts.end(),
+                   [](const ViolatedConjunct& a, const ViolatedConjunct& b) {
+                     return a.time != b.time ? a.time < b.time : !a.eventually && b.eventually;
+                   });
+  if (verdict.conjuncts.empty()) return;
+  verdict.time = verdict.conjuncts.front().time;
+  verdict.atom = verdict.conjuncts.front().atom;
+  verdict.atom_text = verdict.conjuncts.front().atom_text;
+}
+
 }  // namespace
 
 std::string_view verdict_ending_name(VerdictEnding ending) {
@@ -135,9 +173,9 @@ std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
     verdict.time = time_of_sample(trace, witness.sample);
     if (witness.atom) {
       verdict.atom = witness.atom->location;
-      if (verdict.atom.known() && verdict.atom.end_offset() <= file.text().size())
-        verdict.atom_text = file.text().substr(verdict.atom.offset, verdict.atom.length);
+      verdict.atom_text = atom_text(file, verdict.atom);
     }
+    if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, verdict);
     verdicts.push_back(std::move(verdict));
   }
   return verdicts;

@@ -32,6 +32,15 @@ enum class VerdictEnding {
 // "decided", "time-out", "stuck".
 std::string_view verdict_ending_name(VerdictEnding ending);
 
+// One violated conjunct of a spec that is a conjunction (`a & b & c` at its top level).
+struct ViolatedConjunct {
+  bool eventually = false;  // an F: violated when its window closes, so last among equal times
+  double robustness = 0;
+  double time = 0;
+  SourceLocation atom;
+  std::string atom_text;
+};
+
 struct SpecVerdict {
   std::string name;       // the spec's name, or kNoCollisionSpec
   double robustness = 0;  // at t = 0; +inf/-inf possible
@@ -49,6 +58,10 @@ struct SpecVerdict {
   double robustness_at_end = 0;
   // A time-out or stuck: the ego's progress over the end of the run, in words.
   std::string progress;
+  // A violated conjunction: every conjunct the trace violates (not those only the run's end
+  // cut short), the earliest first; `time`, `atom` and `atom_text` above are the first's, so a
+  // crash is never reported as the target a later conjunct missed. Empty otherwise.
+  std::vector<ViolatedConjunct> conjuncts;
 
   bool violated() const { return robustness < 0; }
 };

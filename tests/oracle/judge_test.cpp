@@ -231,5 +231,33 @@ trace |= reach;
       << run.verdicts[0].progress;
 }
 
+TEST(JudgeTest, AConjunctionNamesEveryViolatedConjunctTheEarliestFirst) {
+  // A scripted car runs into the back of the ego, which is left short of its target: the
+  // collision is named first, then the target the run never reached, whatever the file's order.
+  const JudgedRun run = judge_text(R"(
+ego_target = "east_0"->400;
+ego = AV((("east_0"->60), , 2), (ego_target, , ));
+npc = Vehicle(("east_0"->20, , 20.0), uniform(("east_0"->20, , 20.0)), ("east_0"->450));
+scenario = CreateScenario{load("straight?two_way=0&lanes=1"); ego; {npc}; {}; {}; {}; {NPCBehaviour(scripted)};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+npc_truth = trace[truth][npc];
+reach = F (dis(ego_state, ego_target) <= 2.0);
+clear = G (dis(ego_state, npc_truth) > 0.5);
+trace |= reach & clear;
+)");
+  ASSERT_TRUE(run.trace) << run.errors;
+  ASSERT_EQ(run.trace->end, EndReason::collision);
+  ASSERT_EQ(run.verdicts.size(), 1u);
+  const SpecVerdict& verdict = run.verdicts[0];
+  ASSERT_TRUE(verdict.violated());
+  ASSERT_EQ(verdict.conjuncts.size(), 2u);
+  EXPECT_EQ(verdict.conjuncts[0].atom_text, "dis(ego_state, npc_truth) > 0.5");
+  EXPECT_EQ(verdict.conjuncts[1].atom_text, "dis(ego_state, ego_target) <= 2.0");
+  EXPECT_EQ(verdict.atom_text, verdict.conjuncts[0].atom_text);
+  EXPECT_EQ(verdict.time, verdict.conjuncts[0].time);
+  EXPECT_LE(verdict.conjuncts[0].time, verdict.conjuncts[1].time);
+}
+
 }  // namespace
 }  // namespace scenfuzz
