@@ -295,14 +295,15 @@ RunResult search_scenario(const LoadedScenario& scenario, const std::string& alg
   SearchCallbacks callbacks;
   callbacks.on_evaluation = [&](const EvaluationRecord& record) {
     if (record.evaluation.feasible()) ++result.simulations;
-    for (const Finding& finding : log.add(record)) {
-      // Every point is judged on every spec; a targeted run counts only the targeted ones.
-      if (!scenario.targets.empty() && std::find(scenario.targets.begin(), scenario.targets.end(),
-                                                 finding.objective) == scenario.targets.end())
-        continue;
-      if (result.first_finding == 0) result.first_finding = result.simulations;
-      result.finding_list.push_back(finding);
-    }
+    const std::optional<FindingUpdate> update = log.add(record);
+    if (!update || update->replaced) return;
+    const Finding& finding = update->finding;
+    // Every point is judged on every spec; a targeted run counts only the targeted ones.
+    if (!scenario.targets.empty() && std::find(scenario.targets.begin(), scenario.targets.end(),
+                                               finding.objective) == scenario.targets.end())
+      return;
+    if (result.first_finding == 0) result.first_finding = result.simulations;
+    result.finding_list.push_back(finding);
   };
   if (first_only) callbacks.interrupted = [&] { return result.first_finding > 0; };
   result.wall_seconds = run_search(*scenario.evaluator, options, callbacks).wall_seconds;
@@ -553,14 +554,14 @@ int run_chasing_cars(const BenchCommandOptions& options, std::ostream& out, std:
 }
 
 // Whether two runs found the same: the same evaluations, objectives, robustness (bit for bit),
-// points and collisions, in the same order.
+// points and failure modes, in the same order.
 bool same_findings(const std::vector<Finding>& first, const std::vector<Finding>& second) {
   if (first.size() != second.size()) return false;
   for (std::size_t i = 0; i < first.size(); ++i) {
     const Finding& a = first[i];
     const Finding& b = second[i];
     if (a.evaluation != b.evaluation || a.objective != b.objective ||
-        a.robustness != b.robustness || a.point != b.point || a.signature != b.signature)
+        a.robustness != b.robustness || a.point != b.point || a.mode != b.mode)
       return false;
   }
   return true;

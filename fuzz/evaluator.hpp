@@ -46,9 +46,15 @@ struct Evaluation {
   // hung or returned an error once started): the finding kind, "ego_crash", "ego_hang" or
   // "ego_error". Such an evaluation is a finding of that kind, never judged.
   std::string failure_kind;
-  // What distinguishes this outcome from others with the same objective violated, for
-  // de-duplicating findings (the colliding pair and sides; for an ego failure its kind and
-  // signal); empty when only the point does.
+  // The violated objectives, the earliest violation first (oracle/failure_mode.hpp).
+  std::vector<std::size_t> violated;
+  // The ego's first collision: whose fault ("ego", "other", "shared"; oracle/responsibility.hpp)
+  // and why in one sentence; empty when it collided with nothing.
+  std::string responsibility;
+  std::string collision_reason;
+  // The failure mode, which de-duplicates findings: a violation's signature
+  // (oracle/failure_mode.hpp), an ego failure's kind and signal; empty when nothing failed (or
+  // the evaluator names no modes: findings then go by the first violated objective).
   std::string signature;
   // What the simulated world did wrong (oracle/trace_audit.hpp): issues per AuditKind, counted
   // per search; empty when the evaluator audits nothing or nothing was simulated.

@@ -1,3 +1,4 @@
+// One finding per failure mode, its most violating evaluation kept (findings.hpp).
 #include "fuzz/findings.hpp"
 
 #include <cmath>
@@ -6,67 +7,74 @@ namespace scenfuzz {
 
 namespace {
 
-double normalised_distance(const UnitPoint& a, const UnitPoint& b) {
-  if (a.empty()) return 0;
-  double sum = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(sum / static_cast<double>(a.size()));
+// The violated objectives, the earliest first as the evaluator ordered them, else (an evaluator
+// that orders none) in objective order.
+std::vector<std::size_t> violated_objectives(const Evaluation& evaluation) {
+  if (!evaluation.violated.empty()) return evaluation.violated;
+  std::vector<std::size_t> violated;
+  for (std::size_t k = 0; k < evaluation.robustness.size(); ++k)
+    if (evaluation.robustness[k] < 0) violated.push_back(k);
+  return violated;
 }
 
 }  // namespace
 
-FindingLog::FindingLog(std::vector<std::string> objectives, double distance)
-    : objectives_(std::move(objectives)), distance_(distance) {}
+FindingLog::FindingLog(std::vector<std::string> objectives) : objectives_(std::move(objectives)) {}
 
-bool FindingLog::is_duplicate(std::size_t objective, const EvaluationRecord& record) const {
-  const std::string& signature = record.evaluation.signature;
-  for (const Finding& finding : findings_) {
-    if (finding.objective != objective) continue;
-    if (!signature.empty() && finding.signature == signature) return true;
-    if (objective != Finding::kNoObjective &&
-        normalised_distance(finding.point, record.point) < distance_)
-      return true;
-  }
-  return false;
-}
-
-Finding FindingLog::make_finding(std::size_t objective, const EvaluationRecord& record) const {
+Finding FindingLog::make_finding(const EvaluationRecord& record,
+                                 std::vector<std::size_t> violated) const {
+  const Evaluation& evaluation = record.evaluation;
   Finding finding;
-  finding.number = findings_.size() + 1;
-  finding.objective = objective;
   finding.evaluation = record.index;
   finding.seed = record.seed;
   finding.point = record.point;
-  finding.signature = record.evaluation.signature;
-  if (objective == Finding::kNoObjective) {
-    finding.objective_name = record.evaluation.failure_kind;
+  finding.mode = evaluation.signature;
+  finding.responsibility = evaluation.responsibility;
+  finding.collision_reason = evaluation.collision_reason;
+  if (!evaluation.failure_kind.empty()) {
+    finding.objective = Finding::kNoObjective;
+    finding.objective_name = evaluation.failure_kind;
     finding.robustness = std::nan("");
-    finding.failure = record.evaluation.failure;
-  } else {
-    finding.objective_name = objectives_[objective];
-    finding.robustness = record.evaluation.robustness[objective];
-    if (objective < record.evaluation.endings.size())
-      finding.ending = record.evaluation.endings[objective];
+    finding.failure = evaluation.failure;
+    if (finding.mode.empty()) finding.mode = evaluation.failure_kind;
+    return finding;
   }
+  finding.violated = std::move(violated);
+  finding.objective = finding.violated.front();
+  finding.objective_name = objectives_[finding.objective];
+  finding.robustness = evaluation.robustness[finding.objective];
+  if (finding.objective < evaluation.endings.size())
+    finding.ending = evaluation.endings[finding.objective];
+  // An evaluator that names no modes: one finding per first violated objective.
+  if (finding.mode.empty()) finding.mode = finding.objective_name;
   return finding;
 }
 
-std::vector<Finding> FindingLog::add(const EvaluationRecord& record) {
+std::optional<FindingUpdate> FindingLog::add(const EvaluationRecord& record) {
+  const Evaluation& evaluation = record.evaluation;
   std::vector<std::size_t> violated;
-  if (!record.evaluation.failure_kind.empty()) violated.push_back(Finding::kNoObjective);
-  if (record.evaluation.judged())
-    for (std::size_t k = 0; k < record.evaluation.robustness.size(); ++k)
-      if (record.evaluation.robustness[k] < 0) violated.push_back(k);
-  std::vector<Finding> added;
-  for (std::size_t objective : violated) {
-    if (is_duplicate(objective, record)) {
-      ++duplicates_;
-      continue;
-    }
-    findings_.push_back(make_finding(objective, record));
-    added.push_back(findings_.back());
+  if (evaluation.failure_kind.empty()) {
+    if (!evaluation.judged()) return std::nullopt;
+    violated = violated_objectives(evaluation);
+    if (violated.empty()) return std::nullopt;
   }
-  return added;
+  Finding finding = make_finding(record, std::move(violated));
+  const auto known = by_mode_.find(finding.mode);
+  if (known == by_mode_.end()) {
+    finding.number = findings_.size() + 1;
+    by_mode_.emplace(finding.mode, findings_.size());
+    findings_.push_back(finding);
+    return FindingUpdate{std::move(finding), false};
+  }
+  ++duplicates_;
+  Finding& kept = findings_[known->second];
+  ++kept.count;
+  // Ego failures have no measure of more or less: the first stays.
+  if (finding.ego_failure() || !(finding.robustness < kept.robustness)) return std::nullopt;
+  finding.number = kept.number;
+  finding.count = kept.count;
+  kept = finding;
+  return FindingUpdate{std::move(finding), true};
 }
 
 }  // namespace scenfuzz

@@ -179,11 +179,12 @@ class SearchSession {
       ++so_far_.judged;
     else
       ++so_far_.failed;
-    for (const Finding& finding : log_.add(record)) write(finding);
+    if (const std::optional<FindingUpdate> update = log_.add(record)) write(*update);
     progress_.update(so_far_.judged, outputs_.best(), objectives_, log_.findings().size(), false);
   }
 
-  void write(const Finding& finding) {
+  void write(const FindingUpdate& update) {
+    const Finding& finding = update.finding;
     if (!write_failure_.empty()) return;
     std::string failure;
     bool fatal = false;
@@ -197,6 +198,8 @@ class SearchSession {
     if (!options_.json) return;
     nlohmann::json event = finding_json(finding);
     event["event"] = "finding";
+    // A later, more violating evaluation of the same failure mode: it replaces the finding.
+    if (update.replaced) event["replaces"] = finding.number;
     event["file"] = path;
     out_ << event.dump() << "\n" << std::flush;
   }
@@ -235,7 +238,12 @@ std::string finding_line(const Finding& finding) {
   line += finding.objective_name + " robustness " +
           format_number(std::round(finding.robustness * 1e6) / 1e6);
   if (!finding.ending.empty()) line += " " + finding.ending;
-  return line + (finding.signature.empty() ? "" : " (" + finding.signature + ")");
+  line += ", " + std::to_string(finding.count) +
+          (finding.count == 1 ? " evaluation" : " evaluations") + ": " + finding.mode;
+  if (!finding.responsibility.empty())
+    line +=
+        "\n      " + responsibility_words(finding.responsibility) + ": " + finding.collision_reason;
+  return line;
 }
 
 // "audit: 64 of 300 simulations had actors that no real road user would be (off_road 64, ...)".
@@ -249,6 +257,19 @@ std::string audit_line(const SearchOutputs& outputs, const SearchSummary& summar
   return "audit: " + std::to_string(outputs.audited_with_issues()) + " of " +
          std::to_string(summary.judged + summary.failed) +
          " simulations had actors that moved as no road user does (" + kinds + "; docs/oracle.md)";
+}
+
+// "collisions of the ego: 12 its fault, 3 shared, 40 not its fault (...)"; empty without any.
+std::string collisions_line(const SearchOutputs& outputs) {
+  const CollisionCounts& counts = outputs.collisions();
+  if (counts.ego + counts.shared + counts.other == 0) return "";
+  std::string line =
+      "collisions of the ego in " + std::to_string(counts.ego + counts.shared + counts.other) +
+      " simulations: " + std::to_string(counts.ego) + " its fault, " +
+      std::to_string(counts.shared) + " shared, " + std::to_string(counts.other) + " not its fault";
+  if (counts.other > 0 && counts.not_counted)
+    line += " (those are not findings without specs; --all-collisions counts them)";
+  return line;
 }
 
 void print_report(const FuzzCommandOptions& options, const SearchSummary& summary,
@@ -270,8 +291,9 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
   std::vector<const Finding*> kept;
   for (const Finding& finding : log.findings())
     if (!outputs.lost(finding)) kept.push_back(&finding);
-  out << kept.size() << (kept.size() == 1 ? " finding" : " findings");
-  if (log.duplicates() > 0) out << " (" << log.duplicates() << " duplicates skipped)";
+  out << kept.size() << (kept.size() == 1 ? " finding" : " findings") << ", one per failure mode";
+  if (log.duplicates() > 0)
+    out << " (" << log.duplicates() << " more evaluations of the same modes)";
   out << (kept.empty() ? "\n" : ":\n");
   for (const Finding* finding : kept) out << finding_line(*finding) << "\n";
   for (std::size_t k = 0; k < objectives.size() && k < outputs.time_outs().size(); ++k)
@@ -279,6 +301,7 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
       out << "  " << objectives[k] << ": " << outputs.time_outs()[k]
           << " time-outs (the run ended while the ego still made progress; not findings)\n";
   if (outputs.audited_with_issues() > 0) out << audit_line(outputs, summary) << "\n";
+  if (const std::string line = collisions_line(outputs); !line.empty()) out << line << "\n";
   out << "wrote " << (fs::path(options.out_dir) / "summary.json").string() << "\n";
 }
 

@@ -25,4 +25,11 @@ std::string shell_quote(const std::string& text) {
   return quoted + "'";
 }
 
+std::string responsibility_words(const std::string& responsibility) {
+  if (responsibility == "ego") return "the ego's fault";
+  if (responsibility == "other") return "not the ego's fault";
+  if (responsibility == "shared") return "shared fault";
+  return responsibility;
+}
+
 }  // namespace scenfuzz

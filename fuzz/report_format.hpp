@@ -1,5 +1,5 @@
 // Small text formats the commands share: CSV fields, robustness in JSON (which has no
-// infinities), and words quoted for a POSIX shell.
+// infinities), responsibility in words, and words quoted for a POSIX shell.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -12,6 +12,10 @@ std::string csv_field(const std::string& text);
 
 // A robustness for JSON: the number, or the strings "inf" and "-inf".
 nlohmann::json robustness_json(double robustness);
+
+// "the ego's fault", "not the ego's fault", "shared fault" for a responsibility's name ("ego",
+// "other", "shared"; oracle/responsibility.hpp).
+std::string responsibility_words(const std::string& responsibility);
 
 // `text` as one word for a POSIX shell (unquoted when that is safe).
 std::string shell_quote(const std::string& text);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "oracle/failure_mode.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/simulation/initial_overlap.hpp"
 #include "physics/simulation/scenario_setup.hpp"
@@ -59,15 +60,13 @@ bool is_finding(const EgoFailure& failure) {
   return !(failure.kind == EgoFailureKind::error && failure.step == 0);
 }
 
-std::string collision_signature(const Trace& trace) {
-  for (const Collision& collision : trace.collisions) {
-    if (collision.first != kEgo && collision.second != kEgo) continue;
-    return trace.actors[collision.first].name + " " +
-           std::string(body_side_name(collision.first_side)) + " / " +
-           trace.actors[collision.second].name + " " +
-           std::string(body_side_name(collision.second_side));
-  }
-  return "";
+std::string failure_mode_signature(const ScenarioRun& run) {
+  const std::vector<std::size_t> order = violation_order(run.verdicts);
+  if (order.empty() || !run.trace || !run.map) return "";
+  FailureMode mode = describe_failure(*run.trace, *run.map, run.verdicts[order.front()]);
+  if (!run.responsibilities.empty())
+    mode.responsibility = responsibility_name(run.responsibilities.front().responsibility);
+  return failure_mode_key(mode);
 }
 
 ScenarioEvaluator::ScenarioEvaluator(const SourceFile& file, const ScenarioTemplate& scenario,
@@ -158,6 +157,7 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
     return run;
   }
   run.verdicts = judge_trace(scenario_, run.values, *run.trace, *run.map, file_, judge_options_);
+  run.responsibilities = ego_collision_responsibilities(*run.trace, *run.map, judge_options_.rss);
   return run;
 }
 
@@ -187,7 +187,12 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
     evaluation.endings.resize(run.verdicts.size());
     evaluation.endings[k] = verdict_ending_name(run.verdicts[k].ending);
   }
-  evaluation.signature = collision_signature(*run.trace);
+  evaluation.violated = violation_order(run.verdicts);
+  if (!run.responsibilities.empty()) {
+    evaluation.responsibility = responsibility_name(run.responsibilities.front().responsibility);
+    evaluation.collision_reason = run.responsibilities.front().reason;
+  }
+  evaluation.signature = failure_mode_signature(run);
   return evaluation;
 }
 

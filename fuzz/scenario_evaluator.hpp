@@ -28,6 +28,8 @@ struct ScenarioRun {
   std::shared_ptr<const RoadMap> map;
   std::optional<Trace> trace;  // none when the point was infeasible
   std::vector<SpecVerdict> verdicts;
+  // Whose fault each of the ego's collisions was, in the trace's order.
+  std::vector<CollisionResponsibility> responsibilities;
   std::string infeasible;  // why the point was rejected before simulating
   std::string failure;     // why it ran but could not be judged
 };
@@ -81,8 +83,9 @@ class ScenarioEvaluator : public Evaluator {
 // running) rather than a plugin that could not be loaded or created at all.
 bool is_finding(const EgoFailure& failure);
 
-// What tells findings of one objective apart beyond their points: the ego's first collision as
-// "ego front / npc1 rear"; empty when the ego collided with nothing.
-std::string collision_signature(const Trace& trace);
+// The failure mode of a judged run with a violated verdict (oracle/failure_mode.hpp): the earliest
+// violation's, with the responsibility of the ego's first collision; empty when nothing is
+// violated.
+std::string failure_mode_signature(const ScenarioRun& run);
 
 }  // namespace scenfuzz

@@ -22,8 +22,9 @@ namespace fs = std::filesystem;
 namespace {
 
 // The fixed columns before the parameters and after the specs.
-constexpr std::size_t kLeading = 5;   // evaluation, seed, target, status, kind
-constexpr std::size_t kTrailing = 5;  // audit, endings, signature, wall_seconds, reason
+constexpr std::size_t kLeading = 5;  // evaluation, seed, target, status, kind
+// audit, endings, violated, responsibility, collision_reason, signature, wall_seconds, reason
+constexpr std::size_t kTrailing = 8;
 
 std::string status_name(const Evaluation& evaluation) {
   return !evaluation.feasible() ? "infeasible" : !evaluation.judged() ? "failed" : "judged";
@@ -137,6 +138,31 @@ bool parse_endings(const std::string& text, const std::vector<std::string>& obje
   return true;
 }
 
+// "reach;clearance": the violated objectives by name, the earliest violation first.
+std::string violated_text(const std::vector<std::size_t>& violated,
+                          const std::vector<std::string>& objectives) {
+  std::string text;
+  for (std::size_t k : violated)
+    if (k < objectives.size()) text += (text.empty() ? "" : ";") + objectives[k];
+  return text;
+}
+
+bool parse_violated(const std::string& text, const std::vector<std::string>& objectives,
+                    std::vector<std::size_t>& violated) {
+  violated.clear();
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(';', start);
+    if (end == std::string::npos) end = text.size();
+    const auto found =
+        std::find(objectives.begin(), objectives.end(), text.substr(start, end - start));
+    if (found == objectives.end()) return false;
+    violated.push_back(static_cast<std::size_t>(found - objectives.begin()));
+    start = end + 1;
+  }
+  return true;
+}
+
 }  // namespace
 
 SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives)
@@ -148,7 +174,8 @@ SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::strin
   for (const std::string& objective : objectives_)
     header_ += "," + csv_field("robustness." + objective);
   for (const std::string& objective : objectives_) header_ += "," + csv_field("guide." + objective);
-  header_ += ",audit,endings,signature,wall_seconds,reason\n";
+  header_ +=
+      ",audit,endings,violated,responsibility,collision_reason,signature,wall_seconds,reason\n";
 }
 
 std::string SearchJournal::row(const EvaluationRecord& record) const {
@@ -174,6 +201,8 @@ std::string SearchJournal::row(const EvaluationRecord& record) const {
   }
   row += "," + audit_text(evaluation.audit) + "," +
          csv_field(endings_text(evaluation.endings, objectives_)) + "," +
+         csv_field(violated_text(evaluation.violated, objectives_)) + "," +
+         csv_field(evaluation.responsibility) + "," + csv_field(evaluation.collision_reason) + "," +
          csv_field(evaluation.signature) + "," +
          format_number(std::round(evaluation.wall_seconds * 1e6) / 1e6) + "," +
          csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "\n";
@@ -205,7 +234,7 @@ std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::
   Evaluation& evaluation = record.evaluation;
   const std::string& status = fields[3];
   const std::size_t trailing = kLeading + 2 * d + 2 * n;
-  const std::string& reason = fields[trailing + 4];
+  const std::string& reason = fields[trailing + 7];
   evaluation.failure_kind = fields[4];
   if (!parse_audit(fields[trailing], evaluation.audit)) {
     error = "has a bad audit '" + fields[trailing] + "'";
@@ -215,8 +244,14 @@ std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::
     error = "has bad endings '" + fields[trailing + 1] + "'";
     return std::nullopt;
   }
-  evaluation.signature = fields[trailing + 2];
-  parse_number(fields[trailing + 3], evaluation.wall_seconds);
+  if (!parse_violated(fields[trailing + 2], objectives_, evaluation.violated)) {
+    error = "has bad violated specs '" + fields[trailing + 2] + "'";
+    return std::nullopt;
+  }
+  evaluation.responsibility = fields[trailing + 3];
+  evaluation.collision_reason = fields[trailing + 4];
+  evaluation.signature = fields[trailing + 5];
+  parse_number(fields[trailing + 6], evaluation.wall_seconds);
   if (status == "infeasible") {
     evaluation.infeasible = reason.empty() ? "infeasible" : reason;
   } else if (status == "failed") {

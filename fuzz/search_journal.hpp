@@ -7,8 +7,10 @@
 // failure's finding kind, else empty), every parameter by name, the point in the unit cube
 // (u.<name>), robustness.<spec>, guide.<spec> (what the search minimised, when it differs from the
 // robustness), audit (the trace audit's issues by kind, "off_road=1;npc_overlap=1"), endings (the
-// specs whose verdict the run's end left open, "reach=time-out;clearance=stuck"), signature
-// (what de-duplicates findings), wall_seconds, reason.
+// specs whose verdict the run's end left open, "reach=time-out;clearance=stuck"), violated (the
+// violated specs, the earliest first, "clearance;reach"), responsibility and collision_reason (of
+// the ego's first collision), signature (the failure mode, which de-duplicates findings),
+// wall_seconds, reason.
 #pragma once
 
 #include <filesystem>

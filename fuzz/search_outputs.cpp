@@ -72,6 +72,12 @@ nlohmann::json finding_json(const Finding& finding) {
     entry["robustness"] = robustness_json(finding.robustness);
     if (!finding.ending.empty()) entry["ending"] = finding.ending;
   }
+  entry["mode"] = finding.mode;
+  entry["count"] = finding.count;
+  if (!finding.responsibility.empty()) {
+    entry["responsibility"] = finding.responsibility;
+    entry["collision_reason"] = finding.collision_reason;
+  }
   return entry;
 }
 
@@ -93,7 +99,9 @@ SearchOutputs::SearchOutputs(const FuzzCommandOptions& options, const SourceFile
       time_outs_(objectives_.size(), 0),
       stuck_(objectives_.size(), 0),
       design_violations_(objectives_.size(), 0),
-      design_first_violation_(objectives_.size()) {}
+      design_first_violation_(objectives_.size()) {
+  collisions_.not_counted = scenario.specs.empty() && !options.simulation.all_collisions;
+}
 
 std::string SearchOutputs::start() {
   std::error_code error;
@@ -152,6 +160,18 @@ void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
     if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::stuck)) ++stuck_[k];
   }
   record_design(record);
+  record_collision(evaluation, record.index);
+}
+
+void SearchOutputs::record_collision(const Evaluation& evaluation, std::size_t index) {
+  if (!evaluation.judged() || evaluation.responsibility.empty()) return;
+  if (evaluation.responsibility == responsibility_name(Responsibility::ego)) ++collisions_.ego;
+  if (evaluation.responsibility == responsibility_name(Responsibility::shared))
+    ++collisions_.shared;
+  if (evaluation.responsibility != responsibility_name(Responsibility::other)) return;
+  ++collisions_.other;
+  if (collisions_.first_others.size() < kListedOtherCollisions)
+    collisions_.first_others.emplace_back(index, evaluation.collision_reason);
 }
 
 void SearchOutputs::record_design(const EvaluationRecord& record) {
@@ -225,19 +245,60 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
     if (!verdict.atom_text.empty()) header += " (" + verdict.atom_text + ")";
     if (verdict.ending == VerdictEnding::stuck)
       header += "; stuck: the run ended before it could hold, and the ego " + verdict.progress;
-    if (!finding.signature.empty()) origin += ", collision " + finding.signature;
     header += "\n" + comment + origin + "\n";
+    header += also_violated_lines(finding, run, comment);
+  }
+  header += comment + "failure mode: " + finding.mode + "\n";
+  if (!run.responsibilities.empty()) {
+    const CollisionResponsibility& first = run.responsibilities.front();
+    header += comment + "collision with " + run.trace->actors[first.other].name + ", " +
+              responsibility_words(std::string(responsibility_name(first.responsibility))) + ": " +
+              one_line(first.reason) + "\n";
   }
   return header + comment + "replay: scenfuzz run " + shell_quote(scenario_path.string()) +
          " --seed " + std::to_string(finding.seed) + simulation_flags(options_.simulation) + "\n";
 }
+
+// The finding's other violations (later specs, and a conjunction's later conjuncts), a line
+// each, in time order.
+std::string SearchOutputs::also_violated_lines(const Finding& finding, const ScenarioRun& run,
+                                               const std::string& comment) const {
+  std::string lines;
+  const SpecVerdict& first = run.verdicts[finding.objective];
+  for (std::size_t c = 1; c < first.conjuncts.size(); ++c)
+    lines += comment + "also violated: " + first.conjuncts[c].atom_text + " at " +
+             seconds_text(first.conjuncts[c].time) + "\n";
+  for (std::size_t k : finding.violated) {
+    if (k == finding.objective || k >= run.verdicts.size()) continue;
+    const SpecVerdict& verdict = run.verdicts[k];
+    lines += comment + "also violated: spec " + verdict.name + ", robustness " +
+             format_number(verdict.robustness) + " at " + seconds_text(verdict.time) +
+             (verdict.atom_text.empty() ? "" : " (" + verdict.atom_text + ")") + "\n";
+  }
+  return lines;
+}
+
+namespace {
+
+// Whether the finding file at `path` was written for `evaluation` (its header says so): a
+// resumed search finds it in place; a mode's new representative replaces it.
+bool written_for(const fs::path& path, std::size_t evaluation) {
+  std::ifstream in(path);
+  std::string line;
+  const std::string mark = ", evaluation " + std::to_string(evaluation) + " (";
+  for (int i = 0; i < 4 && std::getline(in, line); ++i)
+    if (line.find(mark) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
 
 std::string SearchOutputs::write_finding(const Finding& finding, std::string& failure,
                                          bool& fatal) {
   fatal = false;
   const fs::path scenario_path = finding_path(finding, "");
   std::error_code error;
-  if (fs::exists(scenario_path, error)) {
+  if (fs::exists(scenario_path, error) && written_for(scenario_path, finding.evaluation)) {
     // A resumed search: the scenario file is written last, so the finding is whole.
     written_[finding.number] = scenario_path.string();
     return scenario_path.string();
@@ -260,7 +321,8 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
     picture.caption.spec = finding.objective_name;
     if (!finding.ego_failure()) {
       const SpecVerdict& verdict = run.verdicts[finding.objective];
-      picture.caption = {verdict.name, verdict.robustness, verdict.time, verdict.atom_text, "", ""};
+      picture.caption = {verdict.name,      verdict.robustness,     verdict.time,
+                         verdict.atom_text, finding.responsibility, finding.collision_reason};
     }
     files.emplace_back(finding_path(finding, ".svg"),
                        render_trace_svg(*run.map, *run.trace, picture));
@@ -298,8 +360,11 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
     if (lost(finding)) continue;
     nlohmann::json entry = finding_json(finding);
     entry["seed"] = finding.seed;
-    if (!finding.ego_failure() && !finding.signature.empty())
-      entry["collision"] = finding.signature;
+    if (!finding.ego_failure()) {
+      nlohmann::json violated = nlohmann::json::array();
+      for (std::size_t k : finding.violated) violated.push_back(objectives_[k]);
+      entry["violated"] = violated;
+    }
     if (auto file = written_.find(finding.number); file != written_.end())
       entry["file"] = file->second;
     findings.push_back(entry);
@@ -327,6 +392,21 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
   for (std::size_t k = 0; k < audit_totals_.size(); ++k)
     issues[std::string(audit_kind_name(static_cast<AuditKind>(k)))] = audit_totals_[k];
   document["audit"] = {{"simulations_with_issues", audited_with_issues_}, {"issues", issues}};
+  nlohmann::json others = nlohmann::json::array();
+  for (const auto& [evaluation, reason] : collisions_.first_others)
+    others.push_back({{"evaluation", evaluation}, {"reason", reason}});
+  document["ego_collisions"] = {{"ego", collisions_.ego},
+                                {"shared", collisions_.shared},
+                                {"other", collisions_.other},
+                                {"other_are_findings", !collisions_.not_counted},
+                                {"first_other", others}};
+  std::map<std::string, std::size_t> by_responsibility;
+  for (const Finding& finding : log.findings())
+    if (!lost(finding))
+      ++by_responsibility[finding.responsibility.empty() ? "none" : finding.responsibility];
+  document["failure_modes"] = {{"count", log.findings().size()},
+                               {"evaluations", log.findings().size() + log.duplicates()},
+                               {"by_responsibility", by_responsibility}};
   nlohmann::json time_outs = nlohmann::json::object(), stuck = nlohmann::json::object(),
                  rates = nlohmann::json::object();
   for (std::size_t k = 0; k < objectives_.size(); ++k) {

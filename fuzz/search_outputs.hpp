@@ -23,6 +23,17 @@
 
 namespace scenfuzz {
 
+// The judged simulations in which the ego collided, by whose fault its first collision was
+// (oracle/responsibility.hpp), and the first few not its fault.
+inline constexpr std::size_t kListedOtherCollisions = 10;
+
+struct CollisionCounts {
+  std::size_t ego = 0, shared = 0, other = 0;
+  // Without specs and --all-collisions, those not the ego's fault are not findings.
+  bool not_counted = false;
+  std::vector<std::pair<std::size_t, std::string>> first_others;  // evaluation, reason
+};
+
 class SearchOutputs {
  public:
   // All arguments must outlive the object.
@@ -64,6 +75,7 @@ class SearchOutputs {
   const std::vector<std::size_t>& audit_totals() const { return audit_totals_; }
   // Per objective: evaluations whose verdict was a time-out (not violations).
   const std::vector<std::size_t>& time_outs() const { return time_outs_; }
+  const CollisionCounts& collisions() const { return collisions_; }
 
   // Once the first design (EvaluationRecord::first_design) is over, or with `search_over`: a
   // warning for every spec violated at more than half of its judged points, naming the rate and
@@ -83,6 +95,9 @@ class SearchOutputs {
                             const std::string& error);
   std::string finding_header(const Finding& finding, const ScenarioRun& run,
                              const std::filesystem::path& scenario_path) const;
+  void record_collision(const Evaluation& evaluation, std::size_t index);
+  std::string also_violated_lines(const Finding& finding, const ScenarioRun& run,
+                                  const std::string& comment) const;
   void record_design(const EvaluationRecord& record);
 
   const FuzzCommandOptions& options_;
@@ -106,6 +121,7 @@ class SearchOutputs {
   std::size_t findings_in_summary_ = 0;
   // Per objective: evaluations whose verdict was a time-out, and stuck ones.
   std::vector<std::size_t> time_outs_, stuck_;
+  CollisionCounts collisions_;
   // The first design: judged points, violations per objective and the first violating record.
   std::size_t design_points_ = 0;
   std::vector<std::size_t> design_violations_;

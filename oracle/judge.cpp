@@ -109,6 +109,12 @@ std::string atom_text(const SourceFile& file, const SourceLocation& atom) {
   return file.text().substr(atom.offset, atom.length);
 }
 
+// When the window of an F at t = 0 closes: its upper bound, or the end of the run.
+double window_end(const Formula& eventually, const Trace& trace) {
+  const double end = trace.time.empty() ? 0.0 : trace.time.back();
+  return eventually.interval ? std::min(end, eventually.interval->upper) : end;
+}
+
 // A violated conjunction's violated conjuncts, the earliest first, and the verdict's atom and
 // time the first's. A conjunct violated only because the run ended (its robustness were the
 // run to go on is not negative) is left out unless the ego was stuck.
@@ -126,6 +132,8 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
     violated.eventually = conjunct.kind == FormulaKind::eventually;
     violated.robustness = witness.robustness;
     violated.time = time_of_sample(trace, witness.sample);
+    // An F is violated when its window closes, not where it came nearest to holding.
+    if (violated.eventually) violated.time = window_end(conjunct, trace);
     if (witness.atom) {
       violated.atom = witness.atom->location;
       violated.atom_text = atom_text(file, violated.atom);

@@ -34,7 +34,7 @@ std::string_view verdict_ending_name(VerdictEnding ending);
 
 // One violated conjunct of a spec that is a conjunction (`a & b & c` at its top level).
 struct ViolatedConjunct {
-  bool eventually = false;  // an F: violated when its window closes, so last among equal times
+  bool eventually = false;  // an F: violated when its window closes, last among equal times
   double robustness = 0;
   double time = 0;
   SourceLocation atom;
