@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -86,6 +87,78 @@ TEST_F(FuzzCommandTest, ACutInYieldsFindingsWithinTheBudget) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + summary["evaluations"].get<int>());
   EXPECT_NE(csv.find("ego.init.speed"), std::string::npos);
   EXPECT_NE(run.out.find("finding"), std::string::npos) << run.out;
+}
+
+// evaluations.csv as rows of fields (RFC 4180: quoted fields hold commas), the header first.
+std::vector<std::vector<std::string>> read_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows(1);
+  std::string field;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted && c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+      field += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (!quoted && (c == ',' || c == '\n')) {
+      rows.back().push_back(field);
+      field.clear();
+      if (c == '\n') rows.emplace_back();
+    } else {
+      field += c;
+    }
+  }
+  rows.pop_back();  // after the last line break
+  return rows;
+}
+
+TEST_F(FuzzCommandTest, OneFindingPerFailureModeItsMostViolatingEvaluation) {
+  ASSERT_EQ(fuzz(kCutIn, {"--budget", "200", "--seed", "1"}).exit_code, 1);
+  const nlohmann::json summary = this->summary();
+  // The journal's evaluations by failure mode: how many, and the most violating (the earliest
+  // among equals).
+  const auto rows = read_csv(slurp(dir_ / "out" / "evaluations.csv"));
+  const auto& header = rows.front();
+  auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t mode_column = column("signature"),
+                    robustness = column("robustness.no_collision");
+  ASSERT_LT(mode_column, header.size());
+  std::map<std::string, std::pair<std::size_t, double>> best;  // mode -> evaluation, robustness
+  std::map<std::string, std::size_t> counts, first;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r][mode_column].empty()) continue;
+    first.try_emplace(rows[r][mode_column], std::stoul(rows[r][0]));
+    const double value = std::stod(rows[r][robustness]);
+    ++counts[rows[r][mode_column]];
+    auto [it, inserted] = best.try_emplace(rows[r][mode_column], std::stoul(rows[r][0]), value);
+    if (!inserted && value < it->second.second) it->second = {std::stoul(rows[r][0]), value};
+  }
+  ASSERT_GE(counts.size(), 2u);
+  ASSERT_EQ(summary["findings"].size(), counts.size());
+  EXPECT_EQ(summary["failure_modes"]["count"].get<std::size_t>(), counts.size());
+  std::size_t evaluations = 0;
+  for (const auto& finding : summary["findings"]) {
+    const std::string mode = finding["mode"].get<std::string>();
+    ASSERT_TRUE(best.count(mode)) << mode;
+    EXPECT_EQ(finding["count"].get<std::size_t>(), counts[mode]) << mode;
+    EXPECT_EQ(finding["evaluation"].get<std::size_t>(), best[mode].first) << mode;
+    EXPECT_EQ(finding["robustness"].get<double>(), best[mode].second) << mode;
+    evaluations += counts[mode];
+    // The file on disk is the representative's, and names its mode.
+    const std::string text = slurp(finding["file"].get<std::string>());
+    EXPECT_NE(text.find(", evaluation " + std::to_string(best[mode].first) + " ("),
+              std::string::npos)
+        << text.substr(0, 400);
+    EXPECT_NE(text.find("failure mode: " + mode + "\n"), std::string::npos) << text.substr(0, 400);
+  }
+  EXPECT_EQ(summary["failure_modes"]["evaluations"].get<std::size_t>(), evaluations);
+  // Some mode's first evaluation was later outdone: the replacement was exercised.
+  EXPECT_TRUE(std::any_of(best.begin(), best.end(), [&](const auto& mode) {
+    return mode.second.first != first[mode.first];
+  }));
 }
 
 TEST_F(FuzzCommandTest, AScenarioSafeByConstructionHasNone) {
