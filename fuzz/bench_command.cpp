@@ -298,6 +298,8 @@ RunResult search_scenario(const LoadedScenario& scenario, const std::string& alg
     const std::optional<FindingUpdate> update = log.add(record);
     if (!update || update->replaced) return;
     const Finding& finding = update->finding;
+    // A collision that was not the ego's doing finds nothing about the driver under test.
+    if (finding.responsibility == "other") return;
     // Every point is judged on every spec; a targeted run counts only the targeted ones.
     if (!scenario.targets.empty() && std::find(scenario.targets.begin(), scenario.targets.end(),
                                                finding.objective) == scenario.targets.end())
