@@ -17,6 +17,8 @@
 #include <tuple>
 #include <vector>
 
+#include "physics/map/svg_writing.hpp"
+
 namespace scenfuzz {
 namespace {
 
@@ -83,44 +85,10 @@ std::string_view boundary_class(BoundaryType type) {
   return "boundary-unknown";
 }
 
-void append_escaped(std::string& out, std::string_view text) {
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-}
-
-// Centimetres, without trailing zeros: the drawing needs no more and the file stays small.
-void append_number(std::string& out, double value) {
-  if (!std::isfinite(value)) {
-    out += '0';
-    return;
-  }
-  std::array<char, 32> buffer{};
-  const double rounded = std::round(value * 100) / 100;
-  const auto [end, error] =
-      std::to_chars(buffer.data(), buffer.data() + buffer.size(), rounded == 0 ? 0.0 : rounded,
-                    std::chars_format::fixed, 2);
-  if (error != std::errc()) {
-    out += '0';
-    return;
-  }
-  std::string_view text(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
-  while (text.ends_with('0')) text.remove_suffix(1);
-  if (text.ends_with('.')) text.remove_suffix(1);
-  out += text;
-}
-
 void append_point(std::string& out, const SvgFrame& frame, MapPoint point) {
-  append_number(out, point.x - frame.origin.x);
+  append_number(out, point.x - frame.origin.x, 2);
   out += ',';
-  append_number(out, frame.origin.y - point.y);
+  append_number(out, frame.origin.y - point.y, 2);
 }
 
 void append_points_attribute(std::string& out, const SvgFrame& frame,
@@ -220,14 +188,14 @@ void append_label(std::string& out, const SvgFrame& frame, const Lane& lane,
   if (degrees > 90) degrees -= 180;  // keep the text upright
   if (degrees < -90) degrees += 180;
   out += "<text class=\"label\" font-size=\"";
-  append_number(out, label.size);
+  append_number(out, label.size, 2);
   out += "\" transform=\"translate(";
   const MapPoint at = lane.centre_line.point_at(middle);
-  append_number(out, at.x - frame.origin.x);
+  append_number(out, at.x - frame.origin.x, 2);
   out += ' ';
-  append_number(out, frame.origin.y - at.y);
+  append_number(out, frame.origin.y - at.y, 2);
   out += ") rotate(";
-  append_number(out, degrees);
+  append_number(out, degrees, 2);
   out += ")\">";
   append_escaped(out, lane.id);
   out += "</text>\n";
@@ -238,11 +206,11 @@ void append_circle(std::string& out, const SvgFrame& frame, std::string_view css
   out += "<circle class=\"";
   out += css_class;
   out += "\" cx=\"";
-  append_number(out, centre.x - frame.origin.x);
+  append_number(out, centre.x - frame.origin.x, 2);
   out += "\" cy=\"";
-  append_number(out, frame.origin.y - centre.y);
+  append_number(out, frame.origin.y - centre.y, 2);
   out += "\" r=\"";
-  append_number(out, radius);
+  append_number(out, radius, 2);
   out += "\"/>\n";
 }
 
@@ -414,16 +382,16 @@ LegendLayout legend_layout(double map_width, double metres_per_pixel) {
 
 // Legend coordinates are plain SVG coordinates inside the legend's own transform.
 void append_legend_number_pair(std::string& out, double x, double y) {
-  append_number(out, x);
+  append_number(out, x, 2);
   out += ',';
-  append_number(out, y);
+  append_number(out, y, 2);
 }
 
 void append_legend_text(std::string& out, double x, double y, std::string_view text) {
   out += "<text class=\"legend-text\" x=\"";
-  append_number(out, x);
+  append_number(out, x, 2);
   out += "\" y=\"";
-  append_number(out, y);
+  append_number(out, y, 2);
   out += "\">";
   append_escaped(out, text);
   out += "</text>\n";
@@ -458,7 +426,7 @@ void append_key_line(std::string& out, std::string_view css_class, double x, dou
 void append_legend(std::string& out, const SvgFrame& frame, const LegendLayout& layout) {
   const double scale = layout.metres_per_unit;
   out += "<g class=\"legend\" transform=\"translate(0 ";
-  append_number(out, frame.height);
+  append_number(out, frame.height, 2);
   out += ") scale(";
   // Six significant digits: the scale can be far below a centimetre per unit.
   std::array<char, 32> buffer{};
@@ -469,9 +437,9 @@ void append_legend(std::string& out, const SvgFrame& frame, const LegendLayout& 
   else
     out += '1';
   out += ")\">\n<rect class=\"legend-background\" x=\"0\" y=\"0\" width=\"";
-  append_number(out, frame.width / scale);
+  append_number(out, frame.width / scale, 2);
   out += "\" height=\"";
-  append_number(out, (layout.rows + 1) * legend_row_height + 2 * legend_padding);
+  append_number(out, (layout.rows + 1) * legend_row_height + 2 * legend_padding, 2);
   out += "\"/>\n";
   for (std::size_t i = 0; i < legend_entries.size(); ++i) {
     const LegendEntry& entry = legend_entries[i];
@@ -498,11 +466,11 @@ void append_legend(std::string& out, const SvgFrame& frame, const LegendLayout& 
         out += "<circle class=\"";
         out += entry.key_class;
         out += "\" cx=\"";
-        append_number(out, x + legend_key_length / 2);
+        append_number(out, x + legend_key_length / 2, 2);
         out += "\" cy=\"";
-        append_number(out, y);
+        append_number(out, y, 2);
         out += "\" r=\"";
-        append_number(out, signal_head_radius * 1.5);
+        append_number(out, signal_head_radius * 1.5, 2);
         out += "\"/>\n";
         break;
     }
@@ -560,7 +528,7 @@ void append_defs(std::string& out, bool legend) {
   if (legend) {
     out += ".legend-background{fill:#fff;fill-opacity:.9;stroke:#808080;stroke-width:.1}\n";
     out += ".legend-text{font-family:sans-serif;font-size:";
-    append_number(out, legend_font_size);
+    append_number(out, legend_font_size, 2);
     out += "px;fill:#000;dominant-baseline:central}\n";
     out += ".scale-bar{stroke:#000;stroke-width:.2}\n";
   }
@@ -569,9 +537,9 @@ void append_defs(std::string& out, bool legend) {
 
 void append_background(std::string& out, const SvgFrame& frame) {
   out += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"";
-  append_number(out, frame.width);
+  append_number(out, frame.width, 2);
   out += "\" height=\"";
-  append_number(out, frame.height);
+  append_number(out, frame.height, 2);
   out += "\"/>\n";
 }
 
@@ -584,17 +552,17 @@ void append_header(std::string& out, const RoadMap& map, const SvgFrame& frame,
   out += "\" height=\"";
   out += std::to_string(std::max(1L, std::lround(total_height * pixels_per_metre)));
   out += "\" viewBox=\"0 0 ";
-  append_number(out, frame.width);
+  append_number(out, frame.width, 2);
   out += ' ';
-  append_number(out, total_height);
+  append_number(out, total_height, 2);
   out += "\">\n<title>";
   append_escaped(out, map.name().empty() ? std::string_view("road map") : map.name());
   out += "</title>\n<desc>";
   append_escaped(out, map.source());
   out += ": one unit is a metre; map x = ";
-  append_number(out, frame.origin.x);
+  append_number(out, frame.origin.x, 2);
   out += " + svg x, map y = ";
-  append_number(out, frame.origin.y);
+  append_number(out, frame.origin.y, 2);
   out += " - svg y</desc>\n";
 }
 

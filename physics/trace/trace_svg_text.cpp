@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "physics/trace/svg_writing.hpp"
+#include "physics/map/svg_writing.hpp"
 #include "physics/trace/trace_svg_parts.hpp"
 
 namespace scenfuzz {

@@ -1,8 +1,8 @@
-// Every corpus seed and benchmark scenario, simulated at several points of its search space, passes the trace audit's
-// limits: no actor beats its class's speed, acceleration, grip or steering lock, and every
-// recorded yaw rate is its heading's derivative. Off-road driving and NPC overlaps are counted and
-// printed but not asserted here: the tests of the reactive NPCs and the lane-true paths hold those.
-// Seeds on Apollo maps need the shared folder and are skipped, loudly, without it.
+// Every corpus seed and benchmark scenario, simulated at several points of its search space, passes
+// the trace audit's limits: no actor beats its class's speed, acceleration, grip or steering lock,
+// and every recorded yaw rate is its heading's derivative. Off-road driving and NPC overlaps are
+// counted and printed but not asserted here: the tests of the reactive NPCs and the lane-true paths
+// hold those. Seeds on Apollo maps need the shared folder and are skipped, loudly, without it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/corpus_seeds.hpp"
 #include "../support/shared_dir.hpp"
 #include "lang/avunit/avunit.hpp"
 #include "lang/wmg/wmg.hpp"
@@ -32,33 +33,10 @@ constexpr AuditKind kLimits[] = {AuditKind::speed_limit, AuditKind::lateral_acce
                                  AuditKind::acceleration, AuditKind::turning_radius,
                                  AuditKind::yaw_rate_inconsistent};
 
-std::vector<fs::path> corpus_seeds() {
-  std::vector<fs::path> files;
-  for (const char* folder : {"avunit", "wmg", "benchmarks"})
-    for (const auto& entry :
-         fs::directory_iterator(fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / folder))
-      if (entry.path().extension() == ".avu" || entry.path().extension() == ".sdl")
-        files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using test::corpus_seeds;
+using test::parse_seed;
 
-std::optional<ScenarioTemplate> parse_seed(const SourceFile& file) {
-  if (file.path().ends_with(".sdl")) {
-    wmg::ParseResult parsed = wmg::parse(file);
-    if (parsed.diagnostics.has_errors()) return std::nullopt;
-    return std::move(parsed.scenario);
-  }
-  avunit::ParseResult parsed = avunit::parse(file);
-  if (!parsed.ok()) return std::nullopt;
-  return std::move(parsed.scenario);
-}
-
-MapSearchPath search_path() {
-  std::vector<fs::path> folders;
-  if (test::have_shared_dir()) folders.push_back(test::shared_dir() / "maps" / "apollo");
-  return map_search_path(folders);
-}
+MapSearchPath search_path() { return test::corpus_map_search_path(); }
 
 bool is_limit(AuditKind kind) {
   return std::find(std::begin(kLimits), std::end(kLimits), kind) != std::end(kLimits);
@@ -92,8 +70,8 @@ TEST(CorpusAuditTest, NoSeedsActorBeatsItsClassOrTurnsWithoutItsHeading) {
       for (const AuditIssue& issue : audit_trace(trace, *map).issues)
         (is_limit(issue.kind) ? limits : others)
             << "  " << path.filename().string() << " at " << point << ": " << issue.actor_name
-            << " " << audit_kind_name(issue.kind) << " " << issue.worst << " (limit "
-            << issue.limit << ") at " << issue.worst_time << " s\n";
+            << " " << audit_kind_name(issue.kind) << " " << issue.worst << " (limit " << issue.limit
+            << ") at " << issue.worst_time << " s\n";
     }
   }
   if (!skipped.str().empty())

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/corpus_seeds.hpp"
 #include "../support/shared_dir.hpp"
 #include "lang/avunit/avunit.hpp"
 #include "lang/wmg/wmg.hpp"
@@ -29,33 +30,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> corpus_seeds() {
-  std::vector<fs::path> files;
-  for (const char* folder : {"avunit", "wmg", "benchmarks"})
-    for (const auto& entry :
-         fs::directory_iterator(fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / folder))
-      if (entry.path().extension() == ".avu" || entry.path().extension() == ".sdl")
-        files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using test::corpus_seeds;
+using test::parse_seed;
 
-std::optional<ScenarioTemplate> parse_seed(const SourceFile& file) {
-  if (file.path().ends_with(".sdl")) {
-    wmg::ParseResult parsed = wmg::parse(file);
-    if (parsed.diagnostics.has_errors()) return std::nullopt;
-    return std::move(parsed.scenario);
-  }
-  avunit::ParseResult parsed = avunit::parse(file);
-  if (!parsed.ok()) return std::nullopt;
-  return std::move(parsed.scenario);
-}
-
-MapSearchPath search_path() {
-  std::vector<fs::path> folders;
-  if (test::have_shared_dir()) folders.push_back(test::shared_dir() / "maps" / "apollo");
-  return map_search_path(folders);
-}
+MapSearchPath search_path() { return test::corpus_map_search_path(); }
 
 bool have_rsvg_convert() { return std::system("command -v rsvg-convert >/dev/null 2>&1") == 0; }
 

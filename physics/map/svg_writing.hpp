@@ -1,5 +1,5 @@
-// Small helpers the trace picture's files share to write SVG text: escaped text, numbers
-// without trailing zeros, attributes.
+// Small helpers the SVG pictures (the map's and the trace's) share to write SVG text: escaped text,
+// numbers without trailing zeros, attributes.
 #pragma once
 
 #include <string>

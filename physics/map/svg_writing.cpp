@@ -1,6 +1,6 @@
 // The SVG-writing helpers: numbers through std::to_chars, so the text does not depend on the
 // locale.
-#include "physics/trace/svg_writing.hpp"
+#include "physics/map/svg_writing.hpp"
 
 #include <array>
 #include <charconv>
