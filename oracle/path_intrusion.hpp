@@ -2,7 +2,8 @@
 // moment it came into the path, or, when it then came to rest there, the moment it stopped (a
 // vehicle standing in another's way is only excused when it stopped early enough). The vehicle
 // had room when its gap then was at least RSS's safe longitudinal distance towards a standing or
-// slower body. Private to the responsibility oracle.
+// slower body. The path of a vehicle that follows its lane is that lane ahead of it. Private to the
+// responsibility oracle.
 #pragma once
 
 #include <cstddef>

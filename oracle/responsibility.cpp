@@ -59,13 +59,6 @@ std::optional<PathEntry> lasting_entry(const Trace& trace, std::optional<PathEnt
   return entry;
 }
 
-std::optional<PathIntrusion> lasting_intrusion(const Trace& trace,
-                                               std::optional<PathIntrusion> intrusion,
-                                               std::size_t k) {
-  if (intrusion && trace.time[k] - trace.time[intrusion->sample] < kEntryLead) return std::nullopt;
-  return intrusion;
-}
-
 // "came into its path 1.2 s before impact, 10.3 m ahead of it at 12 m/s, within its safe
 // distance of 76 m" (or "stopped in its path ..."); `unsafe` words the last part.
 std::string intrusion_text(const Trace& trace, const PathIntrusion& intrusion, std::size_t k) {
@@ -185,8 +178,9 @@ std::optional<Verdict> turn_rule(const Trace& trace, const RoadMap& map, ActorId
                                  std::size_t first, std::size_t k, const RssParameters& rss) {
   const std::optional<TurnPriority> priority = turn_priority(trace, map, other, first, k);
   if (!priority) return std::nullopt;
-  const std::optional<PathIntrusion> intrusion = lasting_intrusion(
-      trace, path_intrusion(trace, map, priority->priority, priority->yielder, k, rss), k);
+  // Even a nose put into the other's lane only at impact is the turner's.
+  const std::optional<PathIntrusion> intrusion =
+      path_intrusion(trace, map, priority->priority, priority->yielder, k, rss);
   if (!intrusion || !intrusion->unsafe()) return std::nullopt;
   const bool u_turn = map.lane(priority->yielder_lane).turn == LaneTurn::u_turn;
   const std::string way = map.lane(priority->priority_lane).turn == LaneTurn::right
@@ -241,8 +235,7 @@ std::optional<Verdict> stopped_in_path(const Trace& trace, const RoadMap& map, A
                                        const RssParameters& rss) {
   if (!is_vehicle(trace.actors[other]) || impact_angle(trace, other, k) < kAlongRoad)
     return std::nullopt;
-  const std::optional<PathIntrusion> intrusion =
-      lasting_intrusion(trace, path_intrusion(trace, map, other, kEgo, k, rss), k);
+  const std::optional<PathIntrusion> intrusion = path_intrusion(trace, map, other, kEgo, k, rss);
   if (!intrusion) return std::nullopt;
   const std::string the = definite(described(trace.actors[other]));
   if (!intrusion->unsafe())
@@ -342,8 +335,7 @@ std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorI
   }
   // The ego coming into a vehicle's path too close.
   std::optional<PathIntrusion> into_other;
-  if (is_vehicle(trace.actors[other]))
-    into_other = lasting_intrusion(trace, path_intrusion(trace, map, other, kEgo, k, rss), k);
+  if (is_vehicle(trace.actors[other])) into_other = path_intrusion(trace, map, other, kEgo, k, rss);
   const bool ego_unsafe = into_other && into_other->unsafe();
   if (!into_ego && !ego_unsafe) {
     if (trace.actors[other].kind != TraceActorKind::pedestrian) return std::nullopt;
@@ -410,10 +402,16 @@ std::string ego_fault_text(const Trace& trace, const RoadMap& map, const Respons
       return "braked at " + tenths(v.value) + " m/s^2, harder than RSS's " +
              format_number(v.limit) + " m/s^2, in front of " + other_name;
     case ResponseFault::reversed: return "reversed into " + other_name;
-    case ResponseFault::moved_sideways:
-      return sideways_words(map, trace.actors[kEgo].lane[blame.sample], trace.actors[kEgo].lane[k],
-                            trace.actors[other].lane[k]) +
-             " into " + other_name + " alongside";
+    case ResponseFault::moved_sideways: {
+      const std::string how =
+          sideways_words(map, trace.actors[kEgo].lane[blame.sample], trace.actors[kEgo].lane[k],
+                         trace.actors[other].lane[k]);
+      // Alongside when the bodies overlapped along the road as it began; else how far apart.
+      const PairGeometry g = pair_geometry(trace, map, kEgo, other, blame.sample);
+      if (g.gap_lon <= 0) return how + " into " + other_name + " alongside";
+      return how + " " + tenths(g.gap_lon) + " m " + (g.dx < 0 ? "in front of " : "behind ") +
+             other_name + ", " + since;
+    }
   }
   return "";
 }

@@ -258,6 +258,20 @@ TEST(ResponsibilityTest, EgoChangingLaneIntoACarAlongsideIsAtFault) {
   EXPECT_EQ(r.reason, "changed lane into a car alongside");
 }
 
+TEST(ResponsibilityTest, EgoChangingLaneInFrontOfAFasterCarSaysHowFarAheadItWas) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10);
+  // The ego at 10 m/s moves from east_1 into east_0 15.4 m ahead of a car there at 16 m/s.
+  move(trace, map, trace.actors[0], sidestep_east(30, kEast1, 10, 0.5, 1, 1, -3.5));
+  move(trace, map, trace.actors[1], cruise_east(10, kEast0, 16));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason.rfind("changed lane ", 0), 0u) << r.reason;
+  EXPECT_NE(r.reason.find(" m in front of a car, "), std::string::npos) << r.reason;
+  EXPECT_EQ(r.reason.find("alongside"), std::string::npos) << r.reason;
+}
+
 TEST(ResponsibilityTest, BothChangingLaneIntoEachOtherShareIt) {
   const RoadMap map = builtin("straight");
   Trace trace = two_actor_trace(10);
