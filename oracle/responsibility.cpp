@@ -1,8 +1,9 @@
 // The responsibility rules, tried in order (docs/oracle.md, "Responsibility"): an obstacle cannot
-// be at fault; a broken light or stop sign, then missing priority at a junction, decides a
-// crossing; an ego standing still is not at fault; a pedestrian or a crossing road user is judged
-// by when it entered the other's path; road users along the same road by RSS's dangerous time and
-// proper response.
+// be at fault; a broken light or stop sign, then missing priority at a junction (signs, then a
+// left turn against oncoming traffic), decides a crossing; an ego standing still is not at fault
+// unless it stopped across a vehicle's path too late for it to stop; a turning ego gives way to
+// pedestrians on the crosswalk; a pedestrian or a crossing road user is judged by when it entered
+// the other's path; road users along the same road by RSS's dangerous time and proper response.
 #include "oracle/responsibility.hpp"
 
 #include <algorithm>
@@ -410,7 +411,7 @@ std::string ego_fault_text(const Trace& trace, const RoadMap& map, const Respons
       const PairGeometry g = pair_geometry(trace, map, kEgo, other, blame.sample);
       if (g.gap_lon <= 0) return how + " into " + other_name + " alongside";
       return how + " " + tenths(g.gap_lon) + " m " + (g.dx < 0 ? "in front of " : "behind ") +
-             other_name + ", " + since;
+             other_name + " " + since;
     }
   }
   return "";

@@ -268,7 +268,7 @@ TEST(ResponsibilityTest, EgoChangingLaneInFrontOfAFasterCarSaysHowFarAheadItWas)
   const CollisionResponsibility r = judge(trace, map);
   EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
   EXPECT_EQ(r.reason.rfind("changed lane ", 0), 0u) << r.reason;
-  EXPECT_NE(r.reason.find(" m in front of a car, "), std::string::npos) << r.reason;
+  EXPECT_NE(r.reason.find(" m in front of a car "), std::string::npos) << r.reason;
   EXPECT_EQ(r.reason.find("alongside"), std::string::npos) << r.reason;
 }
 
