@@ -117,7 +117,7 @@ CollisionTriage triage(const Trace& trace, const RoadMap& map, ActorId other, st
   t.ego_stationary = ego.speed[k] <= kStandstillSpeed;
   t.ego_braking_at_limit =
       -ego.acceleration[k] >= kAtLimit * actor_class(ego.category).max_deceleration;
-  t.entry = path_entry(trace, map, kEgo, other, k);
+  t.entry = lasting_entry(trace, path_entry(trace, map, kEgo, other, k), k);
   return t;
 }
 

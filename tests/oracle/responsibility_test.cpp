@@ -664,6 +664,7 @@ TEST(ResponsibilityTest, ACarHittingTheEgosSideIsNeverSaidToEnterItsPathAtImpact
   const CollisionResponsibility r = judge(trace, map);
   EXPECT_FALSE(says_zero_seconds(r.reason)) << r.reason;
   EXPECT_EQ(r.reason.find("the car entered the ego's path"), std::string::npos) << r.reason;
+  EXPECT_FALSE(r.triage.entry) << "touching the ego's flank at impact is no entry into its path";
 }
 
 TEST(RssParametersTest, DefaultsAreAdRssLibsAndNamesOverrideThem) {
