@@ -1,8 +1,9 @@
 // The responsibility rules, tried in order (docs/oracle.md, "Responsibility"): an obstacle cannot
-// be at fault; a broken light or stop sign, then missing priority at a junction, decides a
-// crossing; an ego standing still is not at fault; a pedestrian or a crossing road user is judged
-// by when it entered the other's path; road users along the same road by RSS's dangerous time and
-// proper response.
+// be at fault; a broken light or stop sign, then missing priority at a junction (signs, then a
+// left turn against oncoming traffic), decides a crossing; an ego standing still is not at fault
+// unless it stopped across a vehicle's path too late for it to stop; a turning ego gives way to
+// pedestrians on the crosswalk; a pedestrian or a crossing road user is judged by when it entered
+// the other's path; road users along the same road by RSS's dangerous time and proper response.
 #include "oracle/responsibility.hpp"
 
 #include <algorithm>
@@ -12,7 +13,10 @@
 
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/crosswalk_priority.hpp"
+#include "oracle/junction_priority.hpp"
 #include "oracle/pair_geometry.hpp"
+#include "oracle/path_intrusion.hpp"
 #include "oracle/right_of_way.hpp"
 #include "oracle/rss_distances.hpp"
 #include "oracle/rss_response.hpp"
@@ -25,10 +29,14 @@ namespace {
 constexpr double kRightOfWayMemory = 20;
 // Headings within this of each other are one direction, within it of opposite ones oncoming (deg).
 constexpr double kAlongRoad = 30;
+// How far back a turn at a junction still bears on a pedestrian collision (s).
+constexpr double kTurnMemory = 5;
 // A stop line this close ahead is what the ego stopped for (m).
 constexpr double kStoppedForControl = 30;
 // "Braking at its limit": this share of the class's full braking.
 constexpr double kAtLimit = 0.95;
+// A path entry later than this before impact is the impact itself, seen from the side (s).
+constexpr double kEntryLead = 0.1;
 
 struct Verdict {
   Responsibility responsibility = Responsibility::ego;
@@ -36,6 +44,31 @@ struct Verdict {
 };
 
 std::string tenths(double value) { return format_number(std::round(value * 10) / 10); }
+
+// "1.2 s before impact", or "at impact" for what rounds to 0 s.
+std::string before_impact(const Trace& trace, std::size_t sample, std::size_t k) {
+  const double before = trace.time[k] - trace.time[sample];
+  if (std::round(before * 10) == 0) return "at impact";
+  return tenths(before) + " s before impact";
+}
+
+// An entry into a path, unless it came only with the impact: a body touching the vehicle's side
+// ahead of its centre did not come into its path, it hit its side.
+std::optional<PathEntry> lasting_entry(const Trace& trace, std::optional<PathEntry> entry,
+                                       std::size_t k) {
+  if (entry && !entry->from_start && trace.time[k] - entry->time < kEntryLead) return std::nullopt;
+  return entry;
+}
+
+// "came into its path 1.2 s before impact, 10.3 m ahead of it at 12 m/s, within its safe
+// distance of 76 m" (or "stopped in its path ..."); `unsafe` words the last part.
+std::string intrusion_text(const Trace& trace, const PathIntrusion& intrusion, std::size_t k) {
+  return std::string(intrusion.came_to_rest ? "stopped in its path " : "came into its path ") +
+         before_impact(trace, intrusion.sample, k) + ", " + tenths(intrusion.gap) +
+         " m ahead of it at " + tenths(intrusion.speed) + " m/s, " +
+         (intrusion.unsafe() ? "within" : "beyond") + " its safe distance of " +
+         tenths(intrusion.safe_distance) + " m";
+}
 
 std::size_t sample_of(const Trace& trace, double time) {
   const auto i = static_cast<std::size_t>(std::llround(time / trace.dt));
@@ -84,7 +117,7 @@ CollisionTriage triage(const Trace& trace, const RoadMap& map, ActorId other, st
   t.ego_stationary = ego.speed[k] <= kStandstillSpeed;
   t.ego_braking_at_limit =
       -ego.acceleration[k] >= kAtLimit * actor_class(ego.category).max_deceleration;
-  t.entry = path_entry(trace, map, kEgo, other, k);
+  t.entry = lasting_entry(trace, path_entry(trace, map, kEgo, other, k), k);
   return t;
 }
 
@@ -104,8 +137,7 @@ std::optional<CrossedControl> first_sign(const std::vector<CrossedControl>& cros
 
 std::string violation_text(const Trace& trace, const RoadMap& map, const CrossedControl& control,
                            std::size_t k) {
-  const std::string before =
-      tenths(trace.time[k] - trace.time[control.sample]) + " s before impact";
+  const std::string before = before_impact(trace, control.sample, k);
   if (control.kind == FeatureKind::traffic_light)
     return "ran a red light (" + control_id(map, control) + ") " + before;
   return "passed the stop sign " + control_id(map, control) + " without stopping, " + before;
@@ -140,6 +172,30 @@ Verdict map_fault(const Trace& trace, const RoadMap& map, ActorId culprit, Actor
   return verdict;
 }
 
+// Priority between turning and oncoming traffic: the one turning left gives way. It did not when
+// it came into the other's path, or stopped in it, within the other's safe distance; otherwise the
+// later rules decide.
+std::optional<Verdict> turn_rule(const Trace& trace, const RoadMap& map, ActorId other,
+                                 std::size_t first, std::size_t k, const RssParameters& rss) {
+  const std::optional<TurnPriority> priority = turn_priority(trace, map, other, first, k);
+  if (!priority) return std::nullopt;
+  // Even a nose put into the other's lane only at impact is the turner's.
+  const std::optional<PathIntrusion> intrusion =
+      path_intrusion(trace, map, priority->priority, priority->yielder, k, rss);
+  if (!intrusion || !intrusion->unsafe()) return std::nullopt;
+  const bool u_turn = map.lane(priority->yielder_lane).turn == LaneTurn::u_turn;
+  const std::string way = map.lane(priority->priority_lane).turn == LaneTurn::right
+                              ? " turning right"
+                              : " going straight";
+  const std::string whom = priority->yielder == kEgo
+                               ? "an oncoming " + described(trace.actors[other]).substr(2)
+                               : std::string("the oncoming ego");
+  const std::string what = std::string(u_turn ? "made a U-turn" : "turned left") +
+                           " without giving way to " + whom + way + ": " +
+                           intrusion_text(trace, *intrusion, k);
+  return map_fault(trace, map, priority->yielder, other, k, what, rss);
+}
+
 std::optional<Verdict> map_rule(const Trace& trace, const RoadMap& map, ActorId other,
                                 std::size_t k, const RssParameters& rss) {
   if (impact_angle(trace, other, k) < kAlongRoad) return std::nullopt;  // one road, RSS decides
@@ -162,7 +218,8 @@ std::optional<Verdict> map_rule(const Trace& trace, const RoadMap& map, ActorId 
   // Priority: a stop or yield sign gives way to a road without one.
   const std::optional<CrossedControl> ego_sign = first_sign(ego_crossed);
   const std::optional<CrossedControl> other_sign = first_sign(other_crossed);
-  if (ego_sign.has_value() == other_sign.has_value()) return std::nullopt;
+  if (ego_sign.has_value() == other_sign.has_value())
+    return turn_rule(trace, map, other, first, k, rss);
   const CrossedControl& sign = ego_sign ? *ego_sign : *other_sign;
   const std::string what = "did not give way at the " +
                            std::string(sign.kind == FeatureKind::stop_sign ? "stop" : "yield") +
@@ -172,8 +229,30 @@ std::optional<Verdict> map_rule(const Trace& trace, const RoadMap& map, ActorId 
 
 // ---- an ego standing still ----
 
+// An ego that came to rest across a vehicle's path is excused only when it stopped early enough for
+// that vehicle to stop: RSS's safe distance at the moment it came to rest.
+std::optional<Verdict> stopped_in_path(const Trace& trace, const RoadMap& map, ActorId other,
+                                       std::size_t k, const std::string& hit,
+                                       const RssParameters& rss) {
+  if (!is_vehicle(trace.actors[other]) || impact_angle(trace, other, k) < kAlongRoad)
+    return std::nullopt;
+  const std::optional<PathIntrusion> intrusion = path_intrusion(trace, map, other, kEgo, k, rss);
+  if (!intrusion) return std::nullopt;
+  const std::string the = definite(described(trace.actors[other]));
+  if (!intrusion->unsafe())
+    return Verdict{Responsibility::other, hit + ", having " + intrusion_text(trace, *intrusion, k)};
+  Verdict verdict{Responsibility::ego,
+                  "left " + the + " no room to stop: " + intrusion_text(trace, *intrusion, k)};
+  if (!braked_properly(trace, other, intrusion->sample, k, rss.brake_min, rss)) {
+    verdict.responsibility = Responsibility::shared;
+    verdict.reason += ", and " + no_response_text(other, rss);
+  }
+  return verdict;
+}
+
 std::optional<Verdict> stationary_rule(const Trace& trace, const RoadMap& map,
-                                       const Collision& collision, ActorId other, std::size_t k) {
+                                       const Collision& collision, ActorId other, std::size_t k,
+                                       const RssParameters& rss) {
   const TraceActor& ego = trace.actors[kEgo];
   if (ego.speed[k] > kStandstillSpeed || (k > 0 && ego.speed[k - 1] > kStandstillSpeed))
     return std::nullopt;
@@ -182,10 +261,13 @@ std::optional<Verdict> stationary_rule(const Trace& trace, const RoadMap& map,
     return Verdict{Responsibility::other, "a pedestrian walked into the " +
                                               std::string(body_side_name(side)) +
                                               " of the stopped ego"};
-  if (side != BodySide::rear)
-    return Verdict{Responsibility::other, "hit on its " + std::string(body_side_name(side)) +
-                                              " by " + described(trace.actors[other]) +
-                                              " while stopped"};
+  if (side != BodySide::rear) {
+    const std::string hit = "hit on its " + std::string(body_side_name(side)) + " by " +
+                            described(trace.actors[other]) + " while stopped";
+    if (std::optional<Verdict> verdict = stopped_in_path(trace, map, other, k, hit, rss))
+      return verdict;
+    return Verdict{Responsibility::other, hit};
+  }
   const ControlAhead ahead = control_ahead(trace, map, kEgo, k, kStoppedForControl);
   const std::string where = ahead.red_light   ? " at a red light"
                             : ahead.stop_sign ? " at a stop sign"
@@ -195,6 +277,22 @@ std::optional<Verdict> stationary_rule(const Trace& trace, const RoadMap& map,
 
 // ---- entering a path: pedestrians and crossing traffic ----
 
+// A turning ego gives way to pedestrians already on the crosswalk it turns across.
+std::optional<Verdict> crosswalk_rule(const Trace& trace, const RoadMap& map, ActorId other,
+                                      std::size_t k) {
+  if (trace.actors[other].kind != TraceActorKind::pedestrian) return std::nullopt;
+  const std::optional<CrosswalkPriority> priority =
+      crosswalk_priority(trace, map, other, k, kTurnMemory);
+  if (!priority) return std::nullopt;
+  const std::string turn = priority->turn == LaneTurn::right  ? "turned right"
+                           : priority->turn == LaneTurn::left ? "turned left"
+                                                              : "made a U-turn";
+  return Verdict{Responsibility::ego, turn + " into a pedestrian on the crosswalk " +
+                                          map.crosswalks()[priority->crosswalk].id +
+                                          " without giving way: it was on the crosswalk " +
+                                          tenths(priority->ahead) + " s before the ego reached it"};
+}
+
 // "the other entered the ego's path 1.1 s before impact, less than the ego's stopping time at
 // 8 m/s^2 (1.5 s)", or with the gap and the safe distance when there was time to stop.
 std::string entry_text(const Trace& trace, const std::string& who, const std::string& where,
@@ -203,10 +301,10 @@ std::string entry_text(const Trace& trace, const std::string& who, const std::st
   const double before = trace.time[k] - entry.time;
   const double stopping = trace.actors[kEgo].speed[entry.sample] / rss.brake_max;
   std::string text =
-      who + " entered the ego's " + where + " " + tenths(before) + " s before impact";
+      who + " entered the ego's " + where + " " + before_impact(trace, entry.sample, k);
   if (entry.from_start)
-    text = who + " was in the ego's " + where + " from the start, " + tenths(before) +
-           " s before impact";
+    text = who + " was in the ego's " + where + " from the start, " +
+           before_impact(trace, entry.sample, k);
   if (before < stopping)
     return text + ", less than the ego's stopping time at " + format_number(rss.brake_max) +
            " m/s^2 (" + tenths(stopping) + " s)";
@@ -226,7 +324,8 @@ double safe_distance_at_entry(const Trace& trace, const PathEntry& entry,
 std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorId other,
                                   std::size_t k, const RssParameters& rss) {
   const std::string other_name = described(trace.actors[other]);
-  const std::optional<PathEntry> into_ego = path_entry(trace, map, kEgo, other, k);
+  const std::optional<PathEntry> into_ego =
+      lasting_entry(trace, path_entry(trace, map, kEgo, other, k), k);
   const bool ego_responded =
       !into_ego || braked_properly(trace, kEgo, into_ego->sample, k, rss.brake_min, rss);
   bool other_unsafe = false;
@@ -236,15 +335,9 @@ std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorI
     other_unsafe = into_ego->gap < safe || into_ego->from_start;
   }
   // The ego coming into a vehicle's path too close.
-  bool ego_unsafe = false;
-  if (is_vehicle(trace.actors[other]))
-    if (const std::optional<PathEntry> into_other = path_entry(trace, map, other, kEgo, k)) {
-      const double speed = trace.actors[other].speed[into_other->sample];
-      ego_unsafe =
-          !into_other->from_start &&
-          into_other->gap < rss_safe_longitudinal_same(speed, speed - into_other->closing_speed,
-                                                       rss.response_time_other, rss);
-    }
+  std::optional<PathIntrusion> into_other;
+  if (is_vehicle(trace.actors[other])) into_other = path_intrusion(trace, map, other, kEgo, k, rss);
+  const bool ego_unsafe = into_other && into_other->unsafe();
   if (!into_ego && !ego_unsafe) {
     if (trace.actors[other].kind != TraceActorKind::pedestrian) return std::nullopt;
     return Verdict{Responsibility::other, "a pedestrian walked into the side of the moving ego"};
@@ -253,19 +346,20 @@ std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorI
                                " m/s^2 once " + definite(other_name) + " was in its path";
   const bool ego_at_fault = !ego_responded || ego_unsafe;
   const bool other_at_fault = other_unsafe;
-  std::string ego_part =
-      ego_unsafe ? "the ego pulled into the path of " + other_name + " that could not stop"
-                 : no_brake;
+  std::string ego_part = ego_unsafe
+                             ? "left " + definite(other_name) +
+                                   " no room to stop: " + intrusion_text(trace, *into_other, k)
+                             : no_brake;
   if (ego_at_fault && other_at_fault)
     return Verdict{Responsibility::shared,
                    entry_text(trace, definite(other_name), "path", *into_ego, k, safe, rss) +
-                       ", and " + ego_part};
+                       ", and the ego " + ego_part};
   if (ego_at_fault) {
     if (!ego_unsafe)
       ego_part = "hit " + other_name + " that entered its path " +
-                 tenths(trace.time[k] - into_ego->time) + " s before impact, " +
-                 tenths(into_ego->gap) + " m ahead (safe distance " + tenths(safe) +
-                 " m), without braking at " + format_number(rss.brake_min) + " m/s^2";
+                 before_impact(trace, into_ego->sample, k) + ", " + tenths(into_ego->gap) +
+                 " m ahead (safe distance " + tenths(safe) + " m), without braking at " +
+                 format_number(rss.brake_min) + " m/s^2";
     return Verdict{Responsibility::ego, ego_part};
   }
   if (!into_ego) return std::nullopt;
@@ -275,10 +369,28 @@ std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorI
 
 // ---- along one road: RSS ----
 
-std::string ego_fault_text(const Trace& trace, const ResponseViolation& v, const BlameTime& blame,
-                           ActorId other, bool opposite, std::size_t k) {
+// How the ego came sideways from lane `from` (at the blame time; `now` at impact) to the other on
+// `into`: turning in a junction, changing lane (into the other's lane outside junctions), or
+// drifting. Lanes are -1 where the trace has none.
+std::string sideways_words(const RoadMap& map, std::int32_t from, std::int32_t now,
+                           std::int32_t into) {
+  for (const std::int32_t lane : {now, from}) {
+    if (lane < 0) continue;
+    const Lane& l = map.lane(static_cast<LaneIndex>(lane));
+    if (!l.junction) continue;
+    if (l.turn == LaneTurn::left) return "turned left";
+    if (l.turn == LaneTurn::right) return "turned right";
+    if (l.turn == LaneTurn::u_turn) return "made a U-turn";
+    return "moved sideways";
+  }
+  const bool changed_lane = from >= 0 && into >= 0 && from != into;
+  return changed_lane ? "changed lane" : "moved sideways";
+}
+
+std::string ego_fault_text(const Trace& trace, const RoadMap& map, const ResponseViolation& v,
+                           const BlameTime& blame, ActorId other, bool opposite, std::size_t k) {
   const std::string other_name = described(trace.actors[other]);
-  const std::string since = tenths(trace.time[k] - trace.time[blame.sample]) + " s before impact";
+  const std::string since = before_impact(trace, blame.sample, k);
   switch (v.fault) {
     case ResponseFault::did_not_brake:
       return (opposite ? "met " + other_name + " head-on" : "ran into " + other_name) +
@@ -292,12 +404,14 @@ std::string ego_fault_text(const Trace& trace, const ResponseViolation& v, const
              format_number(v.limit) + " m/s^2, in front of " + other_name;
     case ResponseFault::reversed: return "reversed into " + other_name;
     case ResponseFault::moved_sideways: {
-      // Into the lane the other is on: a lane change, not a drift within its own lane.
-      const std::int32_t from = trace.actors[kEgo].lane[blame.sample];
-      const std::int32_t into = trace.actors[other].lane[k];
-      const bool changed_lane = from >= 0 && into >= 0 && from != into;
-      return (changed_lane ? "changed lane into " : "moved sideways into ") + other_name +
-             " alongside";
+      const std::string how =
+          sideways_words(map, trace.actors[kEgo].lane[blame.sample], trace.actors[kEgo].lane[k],
+                         trace.actors[other].lane[k]);
+      // Alongside when the bodies overlapped along the road as it began; else how far apart.
+      const PairGeometry g = pair_geometry(trace, map, kEgo, other, blame.sample);
+      if (g.gap_lon <= 0) return how + " into " + other_name + " alongside";
+      return how + " " + tenths(g.gap_lon) + " m " + (g.dx < 0 ? "in front of " : "behind ") +
+             other_name + " " + since;
     }
   }
   return "";
@@ -319,7 +433,7 @@ std::string other_fault_text(const Trace& trace, const ResponseViolation& v,
              format_number(v.limit) + " m/s^2";
     case ResponseFault::reversed: return the + " ahead reversed into the ego";
     case ResponseFault::moved_sideways:
-      if (t.entry && !t.entry->from_start && t.entry->gap > 0)
+      if (lasting_entry(trace, t.entry, k) && !t.entry->from_start && t.entry->gap > 0)
         return entry_text(trace, the, "lane", *t.entry, k,
                           safe_distance_at_entry(trace, *t.entry, rss), rss);
       return the + " moved sideways into the ego";
@@ -342,16 +456,16 @@ Verdict rss_rule(const Trace& trace, const RoadMap& map, ActorId other, std::siz
   const bool them = other_fault != faults.end();
   if (ego && them)
     return {Responsibility::shared,
-            ego_fault_text(trace, *ego_fault, blame, other, opposite, k) + ", and " +
+            ego_fault_text(trace, map, *ego_fault, blame, other, opposite, k) + ", and " +
                 other_fault_text(trace, *other_fault, t, other_name, opposite, k, rss)};
   if (ego)
-    return {Responsibility::ego, ego_fault_text(trace, *ego_fault, blame, other, opposite, k)};
+    return {Responsibility::ego, ego_fault_text(trace, map, *ego_fault, blame, other, opposite, k)};
   if (them)
     return {Responsibility::other,
             other_fault_text(trace, *other_fault, t, other_name, opposite, k, rss)};
   // Nobody broke the proper response: the danger was there from the start or came from what RSS
   // does not see; the ego did what it owed.
-  if (t.entry)
+  if (lasting_entry(trace, t.entry, k))
     return {Responsibility::other, entry_text(trace, definite(other_name), "path", *t.entry, k,
                                               safe_distance_at_entry(trace, *t.entry, rss), rss) +
                                        "; the ego responded as RSS requires"};
@@ -364,8 +478,9 @@ Verdict decide(const Trace& trace, const RoadMap& map, const Collision& collisio
   if (o.kind == TraceActorKind::obstacle)
     return {Responsibility::ego, "drove into a stationary obstacle (" + o.name + ")"};
   if (std::optional<Verdict> verdict = map_rule(trace, map, other, k, rss)) return *verdict;
-  if (std::optional<Verdict> verdict = stationary_rule(trace, map, collision, other, k))
+  if (std::optional<Verdict> verdict = stationary_rule(trace, map, collision, other, k, rss))
     return *verdict;
+  if (std::optional<Verdict> verdict = crosswalk_rule(trace, map, other, k)) return *verdict;
   const double angle = t.impact_angle;
   const bool crossing = angle >= kAlongRoad && angle <= 180 - kAlongRoad;
   if (o.kind == TraceActorKind::pedestrian || crossing)

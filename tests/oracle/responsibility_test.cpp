@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "oracle/judge.hpp"
 #include "oracle/rss_distances.hpp"
@@ -255,6 +258,20 @@ TEST(ResponsibilityTest, EgoChangingLaneIntoACarAlongsideIsAtFault) {
   EXPECT_EQ(r.reason, "changed lane into a car alongside");
 }
 
+TEST(ResponsibilityTest, EgoChangingLaneInFrontOfAFasterCarSaysHowFarAheadItWas) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10);
+  // The ego at 10 m/s moves from east_1 into east_0 15.4 m ahead of a car there at 16 m/s.
+  move(trace, map, trace.actors[0], sidestep_east(30, kEast1, 10, 0.5, 1, 1, -3.5));
+  move(trace, map, trace.actors[1], cruise_east(10, kEast0, 16));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason.rfind("changed lane ", 0), 0u) << r.reason;
+  EXPECT_NE(r.reason.find(" m in front of a car "), std::string::npos) << r.reason;
+  EXPECT_EQ(r.reason.find("alongside"), std::string::npos) << r.reason;
+}
+
 TEST(ResponsibilityTest, BothChangingLaneIntoEachOtherShareIt) {
   const RoadMap map = builtin("straight");
   Trace trace = two_actor_trace(10);
@@ -373,6 +390,281 @@ TEST(ResponsibilityTest, TheCollisionOracleCountsOnlyCollisionsTheEgoIsResponsib
   const std::vector<SpecVerdict> counted = judge_trace(no_specs, {}, trace, map, file, all);
   EXPECT_TRUE(counted[0].violated());
   EXPECT_EQ(counted[0].atom_text, "the ego and npc");
+}
+
+// ---- priority at a junction: the crossroads, the ego turning left from the south ----
+
+// Arc length driven by time t.
+using Distance = std::function<double(double t)>;
+
+Distance steady(double speed) {
+  return [=](double t) { return speed * t; };
+}
+
+// At `speed`, then braking at `decel` so as to stand still at `stop_at` metres.
+Distance stopping_at(double speed, double decel, double stop_at) {
+  const double brake_from = (stop_at - speed * speed / (2 * decel)) / speed;
+  return [=](double t) {
+    if (t <= brake_from) return speed * t;
+    const double tb = std::min(t - brake_from, speed / decel);
+    return speed * brake_from + speed * tb - decel * tb * tb / 2;
+  };
+}
+
+// The point `d` metres along the centre lines of `lanes`, one after the other, from `s0` on the
+// first.
+MapPoint along(const RoadMap& map, const std::vector<std::string>& lanes, double s0, double d) {
+  double s = s0 + d;
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    const Lane& lane = map.lane(*map.find_lane(lanes[i]));
+    if (s <= lane.length() || i + 1 == lanes.size()) return lane.centre_line.point_at(s);
+    s -= lane.length();
+  }
+  return {};
+}
+
+// Along `lanes` by `distance`; the velocity by a central difference.
+Motion along_lanes(const RoadMap& map, std::vector<std::string> lanes, double s0,
+                   Distance distance) {
+  return [=, &map](double t) {
+    constexpr double h = 1e-4;
+    const MapPoint p = along(map, lanes, s0, distance(t));
+    const MapPoint a = along(map, lanes, s0, distance(std::max(0.0, t - h)));
+    const MapPoint b = along(map, lanes, s0, distance(t + h));
+    const double span = t + h - std::max(0.0, t - h);
+    return State{p.x, p.y, (b.x - a.x) / span, (b.y - a.y) / span};
+  };
+}
+
+// The ego's left turn: 20 m before the end of south_in_1, through south_west_1 into west_out_1.
+const std::vector<std::string> kLeftTurn = {"south_in_1", "south_west_1", "west_out_1"};
+constexpr double kBeforeJunction = 20;
+
+Motion ego_turning_left(const RoadMap& map, Distance distance) {
+  const double s0 = map.lane(*map.find_lane("south_in_1")).length() - kBeforeJunction;
+  return along_lanes(map, kLeftTurn, s0, distance);
+}
+
+// When the ego, moving by `distance`, has its centre on x (first time, to 1 ms).
+double time_at_x(const RoadMap& map, const Distance& distance, double x) {
+  const Motion ego = ego_turning_left(map, distance);
+  for (double t = 0; t < 30; t += 1e-3)
+    if (ego(t).x <= x) return t;
+  return 30;
+}
+
+// Oncoming southwards on north_in_1 and straight through (x = -1.75) at `speed`, its front at
+// y_front at time `at`.
+Motion oncoming(double speed, double y_front, double at) {
+  return [=](double t) {
+    return State{-1.75, y_front + kCarLength / 2 + speed * (at - t), 0, -speed};
+  };
+}
+
+// Lights with light_south (the ego's) and light_north (the oncoming's) in the given colours, the
+// crossing road red.
+void add_lights(Trace& trace, SignalColour south, SignalColour north) {
+  trace.lights.push_back({"light_south", std::vector<SignalColour>(trace.sample_count(), south)});
+  trace.lights.push_back({"light_north", std::vector<SignalColour>(trace.sample_count(), north)});
+  for (const char* id : {"light_east", "light_west"})
+    trace.lights.push_back(
+        {id, std::vector<SignalColour>(trace.sample_count(), SignalColour::red)});
+}
+
+// As `oncoming`, but braking at `decel` from time `from` on.
+Motion oncoming_braking(double speed, double y_front, double at, double from, double decel) {
+  const auto driven = [=](double t) {
+    if (t <= from) return speed * t;
+    const double tb = std::min(t - from, speed / decel);
+    return speed * from + speed * tb - decel * tb * tb / 2;
+  };
+  return [=](double t) {
+    const double v = t <= from ? speed : std::max(0.0, speed - decel * (t - from));
+    return State{-1.75, y_front + kCarLength / 2 + driven(at) - driven(t), 0, -v};
+  };
+}
+
+bool says_zero_seconds(const std::string& reason) {
+  return reason.find(" 0 s before impact") != std::string::npos;
+}
+
+TEST(ResponsibilityTest, EgoTurningLeftIntoAnOncomingCarGoingStraightIsAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(12);
+  add_lights(trace, SignalColour::green, SignalColour::green);
+  const Distance ego = steady(6);
+  const double t = time_at_x(map, ego, -1.75);
+  move(trace, map, trace.actors[0], ego_turning_left(map, ego));
+  move(trace, map, trace.actors[1], oncoming(12, ego_turning_left(map, ego)(t).y, t));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason.rfind("turned left without giving way to an oncoming car going straight: "
+                           "came into its path ",
+                           0),
+            0u)
+      << r.reason;
+  EXPECT_FALSE(says_zero_seconds(r.reason)) << r.reason;
+}
+
+TEST(ResponsibilityTest, EgoStoppingInTheOncomingLaneMidTurnJustBeforeACarComesIsAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(20);
+  add_lights(trace, SignalColour::green, SignalColour::green);
+  // The ego stops with its centre 0.5 m into the oncoming lane; the car, braking at 4 m/s^2 from
+  // 1 s before, hits it 1.5 s later.
+  const double stop_at = [&] {
+    const Motion turning = ego_turning_left(map, steady(1));
+    for (double d = 0;; d += 0.01)
+      if (turning(d).x <= -1.25) return d;
+  }();
+  const Distance ego = stopping_at(6, 3, stop_at);
+  const double rest = time_at_x(map, ego, -1.25 + 1e-6);
+  const Motion ego_motion = ego_turning_left(map, ego);
+  move(trace, map, trace.actors[0], ego_motion);
+  move(trace, map, trace.actors[1],
+       oncoming_braking(12, ego_motion(rest + 1.5).y + 2, rest + 1.5, rest - 1, 4));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_TRUE(r.triage.ego_stationary);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_NE(r.reason.find("stopped in its path "), std::string::npos) << r.reason;
+  EXPECT_EQ(r.reason.find("while stopped"), std::string::npos) << r.reason;
+}
+
+TEST(ResponsibilityTest, EgoStoppedInTheOncomingLaneLongBeforeACarRamsItIsNotAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(30);
+  add_lights(trace, SignalColour::green, SignalColour::green);
+  const double stop_at = [&] {
+    const Motion turning = ego_turning_left(map, steady(1));
+    for (double d = 0;; d += 0.01)
+      if (turning(d).x <= -1.25) return d;
+  }();
+  const Distance ego = stopping_at(6, 3, stop_at);
+  const Motion ego_motion = ego_turning_left(map, ego);
+  // Standing from about 6 s; the car arrives at 25 s, 200 m away then: room to stop.
+  move(trace, map, trace.actors[0], ego_motion);
+  move(trace, map, trace.actors[1], oncoming(10, ego_motion(25).y + 2, 25));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+}
+
+TEST(ResponsibilityTest, EgoWaitingBeforeTheJunctionAndHitIsNotAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(10);
+  add_lights(trace, SignalColour::green, SignalColour::green);
+  // The ego stands on south_in_1 1 m before its stop line (y = -16); a car cutting the corner
+  // from the north-west drives into its front.
+  const double ego_y = -17 - kCarLength / 2;
+  move(trace, map, trace.actors[0], standing(1.75, ego_y), std::numbers::pi / 2);
+  move(trace, map, trace.actors[1], [=](double t) {
+    return State{1.75 - 8 + 1 * t, ego_y + kCarLength + 40 - 5 * t, 1, -5};
+  });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason.rfind("hit on its front", 0), 0u) << r.reason;
+}
+
+TEST(ResponsibilityTest, AnOncomingCarRunningARedLightIntoTheTurningEgoIsAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(12);
+  add_lights(trace, SignalColour::green, SignalColour::red);
+  const Distance ego = steady(6);
+  const double t = time_at_x(map, ego, -1.75);
+  move(trace, map, trace.actors[0], ego_turning_left(map, ego));
+  move(trace, map, trace.actors[1], oncoming(12, ego_turning_left(map, ego)(t).y, t));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason.rfind("the other ran a red light (light_north) ", 0), 0u) << r.reason;
+}
+
+TEST(ResponsibilityTest, EgoTurningRightIntoAPedestrianOnTheCrosswalkIsAtFault) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(20, TraceActorKind::pedestrian);
+  add_lights(trace, SignalColour::green, SignalColour::green);
+  // The ego turns right from south_in_0 into east_out_0 (y = -5.25) at 5 m/s; a pedestrian walks
+  // north along x = 13 across crosswalk_east (x 11 to 15, y -10 to 10) and meets its front.
+  const double s0 = map.lane(*map.find_lane("south_in_0")).length() - kBeforeJunction;
+  const Motion ego = along_lanes(map, {"south_in_0", "south_east_0", "east_out_0"}, s0, steady(5));
+  double t = 0;
+  while (ego(t).x < 13 - kCarLength / 2 - 0.3) t += 1e-3;
+  move(trace, map, trace.actors[0], ego);
+  move(trace, map, trace.actors[1], [=](double u) {
+    return State{13, -5.25 - 0.5 + 1.4 * (u - t), 0, 1.4};
+  });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason.rfind("turned right into a pedestrian on the crosswalk crosswalk_east without "
+                           "giving way: it was on the crosswalk ",
+                           0),
+            0u)
+      << r.reason;
+}
+
+// `distance` along `lanes` from `s0`, `offset(t)` to the left of the centre line.
+Motion offset_along_lanes(const RoadMap& map, std::vector<std::string> lanes, double s0,
+                          Distance distance, std::function<double(double)> offset) {
+  const auto at = [=, &map](double t) {
+    const double d = distance(t);
+    // The direction of a chord 1 m long: smooth across the polyline's vertices.
+    const MapPoint p = along(map, lanes, s0, d);
+    const MapPoint back = along(map, lanes, s0, d - 0.5);
+    const MapPoint q = along(map, lanes, s0, d + 0.5);
+    const double h = std::atan2(q.y - back.y, q.x - back.x);
+    return MapPoint{p.x - std::sin(h) * offset(t), p.y + std::cos(h) * offset(t)};
+  };
+  return [=](double t) {
+    constexpr double h = 1e-4;
+    const MapPoint p = at(t);
+    const MapPoint a = at(std::max(0.0, t - h));
+    const MapPoint b = at(t + h);
+    const double span = t + h - std::max(0.0, t - h);
+    return State{p.x, p.y, (b.x - a.x) / span, (b.y - a.y) / span};
+  };
+}
+
+TEST(ResponsibilityTest, EgoDriftingIntoACarAlongsideInATurnHasNotChangedLane) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(10);
+  add_lights(trace, SignalColour::green, SignalColour::green);
+  // Both round the left turn south_west_1 at 5 m/s, the car 3 m inside the ego; from 0.5 s the
+  // ego drifts left at up to 1 m/s.
+  const std::vector<std::string> turn = {"south_west_1", "west_out_1"};
+  move(trace, map, trace.actors[0], offset_along_lanes(map, turn, 0, steady(5), [](double t) {
+         const double u = std::max(0.0, t - 0.5);
+         return u < 0.5 ? u * u : 0.25 + (u - 0.5);
+       }));
+  move(trace, map, trace.actors[1],
+       offset_along_lanes(map, turn, 0, steady(5), [](double) { return 3.0; }));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
+  EXPECT_EQ(r.reason, "turned left into a car alongside");
+}
+
+TEST(ResponsibilityTest, ACarHittingTheEgosSideIsNeverSaidToEnterItsPathAtImpact) {
+  const RoadMap map = builtin("crossroads");
+  Trace trace = two_actor_trace(8);
+  add_lights(trace, SignalColour::green, SignalColour::green);
+  for (TraceLight& light : trace.lights)
+    std::fill(light.colour.begin(), light.colour.end(), SignalColour::green);
+  // The ego eastwards through the junction at 10 m/s, its centre at x = 0 at 3 s; a car
+  // northwards at 5 m/s meets its right side there, 1 m ahead of its centre.
+  move(trace, map, trace.actors[0], cruise_east(-30, -1.75, 10));
+  const double y_contact = -1.75 - kCarWidth / 2 - kCarLength / 2 - 0.01;
+  move(trace, map, trace.actors[1], [=](double t) {
+    return State{1, y_contact + 5 * (t - 3), 0, 5};
+  });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_FALSE(says_zero_seconds(r.reason)) << r.reason;
+  EXPECT_EQ(r.reason.find("the car entered the ego's path"), std::string::npos) << r.reason;
+  EXPECT_FALSE(r.triage.entry) << "touching the ego's flank at impact is no entry into its path";
 }
 
 TEST(RssParametersTest, DefaultsAreAdRssLibsAndNamesOverrideThem) {
