@@ -42,6 +42,31 @@ inline std::string slurp(const std::filesystem::path& path) {
   return text.str();
 }
 
+// CSV text (evaluations.csv) as rows of fields (RFC 4180: quoted fields hold commas), the header
+// first.
+inline std::vector<std::vector<std::string>> read_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows(1);
+  std::string field;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted && c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+      field += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (!quoted && (c == ',' || c == '\n')) {
+      rows.back().push_back(field);
+      field.clear();
+      if (c == '\n') rows.emplace_back();
+    } else {
+      field += c;
+    }
+  }
+  rows.pop_back();  // after the last line break
+  return rows;
+}
+
 // A scratch folder per test, removed afterwards, and scenfuzz run with its output kept there.
 class CommandTest : public ::testing::Test {
  protected:

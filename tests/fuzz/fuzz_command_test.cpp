@@ -24,6 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::Outcome;
+using test::read_csv;
 using test::slurp;
 
 using test::source_file;
@@ -87,30 +88,6 @@ TEST_F(FuzzCommandTest, ACutInYieldsFindingsWithinTheBudget) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + summary["evaluations"].get<int>());
   EXPECT_NE(csv.find("ego.init.speed"), std::string::npos);
   EXPECT_NE(run.out.find("finding"), std::string::npos) << run.out;
-}
-
-// evaluations.csv as rows of fields (RFC 4180: quoted fields hold commas), the header first.
-std::vector<std::vector<std::string>> read_csv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows(1);
-  std::string field;
-  bool quoted = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (quoted && c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
-      field += '"';
-      ++i;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (!quoted && (c == ',' || c == '\n')) {
-      rows.back().push_back(field);
-      field.clear();
-      if (c == '\n') rows.emplace_back();
-    } else {
-      field += c;
-    }
-  }
-  rows.pop_back();  // after the last line break
-  return rows;
 }
 
 TEST_F(FuzzCommandTest, OneFindingPerFailureModeItsMostViolatingEvaluation) {

@@ -34,17 +34,15 @@ const std::string kCutIn = test::source_file("corpora/avunit/cut_in_straight.avu
 // findings of summary.json without their folder, and every finding file with the folder's name
 // taken out.
 std::string search_result(const fs::path& out) {
-  std::istringstream csv(slurp(out / "evaluations.csv"));
-  std::string result, line;
-  std::getline(csv, line);
-  const std::size_t wall = static_cast<std::size_t>(
-      std::count(line.begin(), line.begin() + static_cast<long>(line.find("wall_seconds")), ','));
-  result += line + "\n";
-  while (std::getline(csv, line)) {
-    std::stringstream fields(line);
-    std::size_t i = 0;
-    for (std::string field; std::getline(fields, field, ','); ++i)
-      if (i != wall) result += field + ",";
+  // Fields are compared as read (quoted ones may hold commas), all but the wall time.
+  const auto rows = test::read_csv(slurp(out / "evaluations.csv"));
+  const auto& header = rows.front();
+  const auto wall = static_cast<std::size_t>(
+      std::find(header.begin(), header.end(), "wall_seconds") - header.begin());
+  std::string result;
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i)
+      if (i != wall || &row == &rows.front()) result += row[i] + "\x1f";
     result += "\n";
   }
   nlohmann::json findings = nlohmann::json::parse(slurp(out / "summary.json"))["findings"];
