@@ -243,7 +243,10 @@ FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecV
   if (verdict.name == kNoCollisionSpec)
     mode.atom = "collision";
   else
-    mode.atom = verdict.name + ": " + (verdict.atom_text.empty() ? "-" : verdict.atom_text);
+    mode.atom = verdict.name + ": " +
+                (!verdict.mode_text.empty()   ? verdict.mode_text
+                 : !verdict.atom_text.empty() ? verdict.atom_text
+                                              : "-");
   if (trace.sample_count() == 0 || trace.actors.empty()) return mode;
   std::size_t at = sample_at_time(trace, verdict.time);
   std::optional<ActorId> other;

@@ -109,6 +109,31 @@ std::string atom_text(const SourceFile& file, const SourceLocation& atom) {
   return file.text().substr(atom.offset, atom.length);
 }
 
+// The nodes from `node` down to `target` (a node of its tree), or false when it is not there.
+bool path_to(const Formula& node, const Formula& target, std::vector<const Formula*>& path) {
+  path.push_back(&node);
+  if (&node == &target) return true;
+  for (const Formula& operand : node.operands)
+    if (path_to(operand, target, path)) return true;
+  path.pop_back();
+  return false;
+}
+
+// What names a violation's failure mode: its atom, unless a disjunction or implication lies
+// above it (then which side gave the value is happenstance: `near -> slow` is violated by
+// `near` and `slow` together), when the highest such subformula as written.
+std::string mode_text(const SourceFile& file, const Formula& root, const Formula& atom,
+                      const std::string& atom_text_) {
+  std::vector<const Formula*> path;
+  if (!path_to(root, atom, path)) return atom_text_;
+  for (const Formula* node : path)
+    if (node->kind == FormulaKind::disjunction || node->kind == FormulaKind::implication) {
+      std::string text = atom_text(file, node->location);
+      return text.size() > atom_text_.size() ? text : atom_text_;
+    }
+  return atom_text_;
+}
+
 // When the window of an F at t = 0 closes: its upper bound, or the end of the run.
 double window_end(const Formula& eventually, const Trace& trace) {
   const double end = trace.time.empty() ? 0.0 : trace.time.back();
@@ -137,6 +162,7 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
     if (witness.atom) {
       violated.atom = witness.atom->location;
       violated.atom_text = atom_text(file, violated.atom);
+      violated.mode_text = mode_text(file, conjunct, *witness.atom, violated.atom_text);
     }
     verdict.conjuncts.push_back(std::move(violated));
   }
@@ -148,6 +174,7 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
   verdict.time = verdict.conjuncts.front().time;
   verdict.atom = verdict.conjuncts.front().atom;
   verdict.atom_text = verdict.conjuncts.front().atom_text;
+  verdict.mode_text = verdict.conjuncts.front().mode_text;
 }
 
 }  // namespace
@@ -182,6 +209,7 @@ std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
     if (witness.atom) {
       verdict.atom = witness.atom->location;
       verdict.atom_text = atom_text(file, verdict.atom);
+      verdict.mode_text = mode_text(file, spec.formula, *witness.atom, verdict.atom_text);
     }
     if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, verdict);
     verdicts.push_back(std::move(verdict));

@@ -39,6 +39,7 @@ struct ViolatedConjunct {
   double time = 0;
   SourceLocation atom;
   std::string atom_text;
+  std::string mode_text;  // what names its failure mode (see SpecVerdict)
 };
 
 struct SpecVerdict {
@@ -49,6 +50,9 @@ struct SpecVerdict {
   SourceLocation atom;    // the responsible atom in the file; unknown for the collision oracle
                           // and for an infinity no atom gives
   std::string atom_text;  // that atom as written, or for the collision oracle which bodies
+  // What names the failure mode: the atom, or, when a disjunction or implication lies above it
+  // (which side gave the value is then happenstance), the highest such subformula as written.
+  std::string mode_text;
   // What a search minimises: the robustness, or for a conjunction the conjunct guide
   // (search_guide.hpp); negative exactly when the robustness is.
   double guide = 0;

@@ -259,5 +259,26 @@ trace |= reach & clear;
   EXPECT_LE(verdict.conjuncts[0].time, verdict.conjuncts[1].time);
 }
 
+TEST(JudgeTest, AnImplicationNamesTheFailureModeWholeNotBySide) {
+  // `near -> slow` is violated by being near and fast together: which comparison the witness
+  // lands on is happenstance, so the mode is named by the implication.
+  const JudgedRun run = judge_text(R"(
+ego = AV((("east_0"->20), , 15), (("east_0"->400), , ));
+npc = Vehicle(("east_0"->80, , 10.0));
+scenario = CreateScenario{load("straight?two_way=0&lanes=1"); ego; {npc}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+npc_truth = trace[truth][npc];
+calm = G ((dis(ego_state, npc_truth) < 60.0) -> (spd(ego_state, 0) < 1.0));
+trace |= calm;
+)");
+  ASSERT_TRUE(run.trace) << run.errors;
+  ASSERT_EQ(run.verdicts.size(), 1u);
+  ASSERT_TRUE(run.verdicts[0].violated());
+  EXPECT_EQ(run.verdicts[0].mode_text,
+            "(dis(ego_state, npc_truth) < 60.0) -> (spd(ego_state, 0) < 1.0)");
+  EXPECT_NE(run.verdicts[0].atom_text, run.verdicts[0].mode_text);
+}
+
 }  // namespace
 }  // namespace scenfuzz
