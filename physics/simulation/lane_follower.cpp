@@ -419,7 +419,7 @@ void LaneFollower::advance(double acceleration, double dt) {
     if (!leaves_at_end_) next = 0;
   }
   segment_ = segment_at_from(path_, s_, segment_);
-  state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt);
+  state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt, segment_);
   state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
   // On a straight segment the heading stays the same, and so do its cosine and sine.
   if (state_.heading != heading) facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
