@@ -259,6 +259,16 @@ std::size_t LaneFollower::first_within(MapPoint point, double reach) const {
   return first_segment_reaching(path_, segment_, s_ + clear);
 }
 
+// Whether anything in the path within `reach` of `point` (reaching `extent` along it either way)
+// lies at a gap of at least `gap`. The path point found is ahead at s_ + d with d at least the
+// point's straight-line distance less the reach (chord <= arc), so the gap in_path computes is at
+// least that less half this body's length and the extent (1 mm of margin for rounding).
+bool LaneFollower::surely_no_nearer(MapPoint point, double reach, double extent, double gap) const {
+  const double dx = point.x - state_.x, dy = point.y - state_.y;
+  constexpr double kMargin = 1e-3;
+  return std::sqrt(dx * dx + dy * dy) - reach - body_.length / 2 - extent - kMargin >= gap;
+}
+
 // Actor k as something to stop behind: where it is, or where it will be within the prediction
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
 // ahead. A vehicle coming the other way counts as standing.
@@ -285,6 +295,11 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
   std::optional<Stop> best;
   for (int which = 0; which < (tau > 0 ? 2 : 1); ++which) {
+    // Where it will be cannot be nearer than where it is when the path is too far along there
+    // (most leaders drive on ahead): the search would be rejected by the gap test below.
+    if (best &&
+        surely_no_nearer(points[which], reach, (world.lengths[k] + world.widths[k]) / 2, best->gap))
+      break;
     PolylineProjection nearest =
         nearest_on_path(path_, boxes_, frames_, points[which], first_within(points[which], reach),
                         s_ + lookahead, reach);

@@ -93,6 +93,7 @@ class LaneFollower {
   // (too far off, or behind), which is the answer for most actors at most scans.
   bool surely_not_in_path(const WorldSnapshot& world, std::uint32_t k) const;
   std::size_t first_within(MapPoint point, double reach) const;
+  bool surely_no_nearer(MapPoint point, double reach, double extent, double gap) const;
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
   bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
