@@ -40,8 +40,12 @@ double extent_across(const WorldObject& object, double relative_heading) {
 // At least extent_across and extent_along at any heading.
 double greatest_extent(const WorldObject& object) { return (object.length + object.width) / 2; }
 
+// s within which a vehicle moving towards the ego's path counts as in it.
+constexpr double kVehicleEntryTime = 1.0;
 // The longest time_to_enter that puts an object in the ego's path (collect_object_constraints).
-constexpr double kLongestEntryTime = kPredictionTime + 2.0;
+double longest_entry_time(const WorldObject& object) {
+  return object.kind == TraceActorKind::pedestrian ? kPredictionTime + 2.0 : kVehicleEntryTime;
+}
 // m added to a bound before an object is rejected by it unlocated: above locate's 1e-6 for an
 // end point and the rounding of the bounding boxes, below anything that matters.
 constexpr double kSurelyAside = 1e-3;
@@ -205,7 +209,8 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     if (!overtake_.active &&
         route_.surely_farther({object.x, object.y}, stretch,
                               greatest_extent(object) + half_width +
-                                  std::abs(object.speed) * kLongestEntryTime + kSurelyAside))
+                                  std::abs(object.speed) * longest_entry_time(object) +
+                                  kSurelyAside))
       continue;
     auto at = route_.locate({object.x, object.y}, stretch, horizon);
     // Beside or behind the ego's centre, or past the end of the route (where the ego stops).
@@ -232,7 +237,7 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
       // Moving towards the path: will it be there by the time the ego is?
       double time_to_enter = clearance / std::abs(lateral_speed);
       double time_to_arrive = gap / std::max(ego.speed, 1.0);
-      double window = pedestrian ? time_to_arrive + 2.0 : 1.0;
+      double window = pedestrian ? time_to_arrive + 2.0 : kVehicleEntryTime;
       in_path = time_to_enter < std::min(window, kPredictionTime + (pedestrian ? 2.0 : 0.0));
       if (in_path && pedestrian) lead_speed = 0;  // it will stand in the way, not drive ahead
     }
