@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/map/segment_walk.hpp"
+
 namespace scenfuzz {
 namespace {
 
@@ -116,10 +118,11 @@ double planning_radius(const ActorClass& body) {
   return kLockMargin * body.min_turning_radius();
 }
 
-KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
-                             double speed, double acceleration) {
-  s = std::clamp(s, 0.0, path.length());
-  std::size_t segment = path.segment_at(s);
+namespace {
+
+// The state at clamped arc length s, which lies on `segment`.
+KinematicState state_on_segment(const Polyline& path, std::span<const double> headings,
+                                std::size_t segment, double s, double speed, double acceleration) {
   const MapPoint& a = path.points()[segment];
   const MapPoint& b = path.points()[segment + 1];
   double t = (s - path.arc_lengths()[segment]) / segment_length(path, segment);
@@ -132,6 +135,20 @@ KinematicState state_on_path(const Polyline& path, std::span<const double> headi
   state.acceleration = acceleration;
   state.yaw_rate = speed * direction.curvature;
   return state;
+}
+
+}  // namespace
+
+KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
+                             double speed, double acceleration) {
+  s = std::clamp(s, 0.0, path.length());
+  return state_on_segment(path, headings, path.segment_at(s), s, speed, acceleration);
+}
+
+KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
+                             double speed, double acceleration, std::size_t hint) {
+  s = std::clamp(s, 0.0, path.length());
+  return state_on_segment(path, headings, segment_at_from(path, s, hint), s, speed, acceleration);
 }
 
 }  // namespace scenfuzz

@@ -49,5 +49,9 @@ double planning_radius(const ActorClass& body);
 // yaw rate is speed x curvature.
 KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
                              double speed, double acceleration);
+// The same, finding s's segment by walking from segment `hint` (an actor's last one) instead of
+// a binary search over the whole path: the same state bit for bit, sooner on long paths.
+KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
+                             double speed, double acceleration, std::size_t hint);
 
 }  // namespace scenfuzz

@@ -37,6 +37,18 @@ double extent_across(const WorldObject& object, double relative_heading) {
   return std::abs(std::sin(relative_heading)) * object.length / 2 +
          std::abs(std::cos(relative_heading)) * object.width / 2;
 }
+// At least extent_across and extent_along at any heading.
+double greatest_extent(const WorldObject& object) { return (object.length + object.width) / 2; }
+
+// s within which a vehicle moving towards the ego's path counts as in it.
+constexpr double kVehicleEntryTime = 1.0;
+// The longest time_to_enter that puts an object in the ego's path (collect_object_constraints).
+double longest_entry_time(const WorldObject& object) {
+  return object.kind == TraceActorKind::pedestrian ? kPredictionTime + 2.0 : kVehicleEntryTime;
+}
+// m added to a bound before an object is rejected by it unlocated: above locate's 1e-6 for an
+// end point and the rounding of the bounding boxes, below anything that matters.
+constexpr double kSurelyAside = 1e-3;
 
 }  // namespace
 
@@ -121,9 +133,13 @@ std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) 
       continue;
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
+    // Farther from the path than any extent across it reaches: not across the lane (below).
+    if (route_.surely_farther({object.x, object.y}, stretch,
+                              greatest_extent(object) + half_width + kSurelyAside))
+      continue;
     auto at = route_.locate({object.x, object.y}, stretch, horizon);
     if (!at || at->beyond_end) continue;
-    double relative = angle_difference(object.heading, route_.heading_at(at->s));
+    double relative = angle_difference(object.heading, route_.heading_at(at->s, at->segment));
     if (std::abs(at->lateral) - extent_across(object, relative) - half_width > 0) continue;
     double along = extent_along(object, relative);
     double velocity = object.reversing ? -object.speed : object.speed;
@@ -188,10 +204,18 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
   for (const WorldObject& object : input.objects) {
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
+    // Too far aside to be in the path or to enter it in time, however it moves (below; off the
+    // path, the ego's own lateral plan would shift it).
+    if (!overtake_.active &&
+        route_.surely_farther({object.x, object.y}, stretch,
+                              greatest_extent(object) + half_width +
+                                  std::abs(object.speed) * longest_entry_time(object) +
+                                  kSurelyAside))
+      continue;
     auto at = route_.locate({object.x, object.y}, stretch, horizon);
     // Beside or behind the ego's centre, or past the end of the route (where the ego stops).
     if (!at || at->beyond_end || at->s <= route_.progress()) continue;
-    double path_heading = route_.heading_at(at->s);
+    double path_heading = route_.heading_at(at->s, at->segment);
     double relative = angle_difference(object.heading, path_heading);
     // Sideways from where the ego will be there (off the path while it overtakes).
     double lateral = at->lateral - planned_lateral(overtake_, at->s);
@@ -213,7 +237,7 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
       // Moving towards the path: will it be there by the time the ego is?
       double time_to_enter = clearance / std::abs(lateral_speed);
       double time_to_arrive = gap / std::max(ego.speed, 1.0);
-      double window = pedestrian ? time_to_arrive + 2.0 : 1.0;
+      double window = pedestrian ? time_to_arrive + 2.0 : kVehicleEntryTime;
       in_path = time_to_enter < std::min(window, kPredictionTime + (pedestrian ? 2.0 : 0.0));
       if (in_path && pedestrian) lead_speed = 0;  // it will stand in the way, not drive ahead
     }

@@ -8,6 +8,7 @@
 
 #include "physics/actors/path_pose.hpp"
 #include "physics/actors/trajectory.hpp"
+#include "physics/map/segment_walk.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -53,6 +54,7 @@ RouteTracker::RouteTracker(const RoadMap& map, const LaneRoute& route,
 
   headings_ = segment_headings(path_);
   frames_ = SegmentFrames(path_);
+  boxes_ = PolylineBoxes(path_);
   const auto& points = path_.points();
   const auto& arc = path_.arc_lengths();
   curvature_.assign(points.size(), 0.0);
@@ -104,6 +106,10 @@ double RouteTracker::heading_at(double s) const {
   return headings_[path_.segment_at(std::clamp(s, 0.0, length()))];
 }
 
+double RouteTracker::heading_at(double s, std::size_t hint) const {
+  return headings_[segment_at_from(path_, std::clamp(s, 0.0, length()), hint)];
+}
+
 double RouteTracker::curvature_at(double s) const {
   if (curvature_.empty()) return 0;
   std::size_t segment = path_.segment_at(s);
@@ -120,6 +126,15 @@ PathWindow RouteTracker::window(double behind, double ahead) const {
   if (empty()) return {};
   return {path_.segment_at(std::max(0.0, progress_ - behind)),
           path_.segment_at(std::min(length(), progress_ + ahead))};
+}
+
+bool RouteTracker::surely_farther(MapPoint point, PathWindow window, double distance) const {
+  if (empty() || !(distance >= 0)) return false;
+  const double squared = distance * distance;
+  constexpr std::size_t run = PolylineBoxes::kRun;
+  for (std::size_t box = window.first / run; box <= window.last / run && box < boxes_.size(); ++box)
+    if (!(boxes_.distance_squared(box, point) > squared)) return false;
+  return true;
 }
 
 std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, PathWindow window,
@@ -142,15 +157,26 @@ std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, PathWindow wi
   std::size_t from =
       std::max(first, nearest_vertex > kCoarseStride ? nearest_vertex - kCoarseStride : 0);
   std::size_t to = std::min(last, nearest_vertex + kCoarseStride);
-  std::optional<PolylineProjection> best;
+  // The first nearest segment, as comparing every projection's distance would find it: squares
+  // first (a larger square is no nearer), and a root only for a candidate.
+  std::size_t best = to + 1;
+  double best_squared = std::numeric_limits<double>::infinity();
+  double best_distance = best_squared;
   for (std::size_t segment = from; segment <= to; ++segment) {
-    PolylineProjection projection = frames_.project(path_, point, segment);
-    if (!best || projection.distance < best->distance) best = projection;
+    const double squared = frames_.distance_squared(path_, point, segment);
+    const bool any = best <= to;  // the first projection is taken whatever it is (NaN too)
+    if (any && squared > best_squared) continue;
+    const double distance = std::sqrt(squared);
+    if (any && !(distance < best_distance)) continue;  // equally near: the first found stays
+    best = segment;
+    best_squared = squared;
+    best_distance = distance;
   }
-  if (!best || best->distance > max_lateral) return std::nullopt;
+  if (best > to || best_distance > max_lateral) return std::nullopt;
+  const PolylineProjection projection = frames_.project(path_, point, best);
   // The nearest point is an end point when it lies off the normal through it.
-  bool beyond_end = best->distance > std::abs(best->lateral) + 1e-6;
-  return PathCoordinate{best->s, best->lateral, beyond_end};
+  bool beyond_end = projection.distance > std::abs(projection.lateral) + 1e-6;
+  return PathCoordinate{projection.s, projection.lateral, beyond_end, best};
 }
 
 }  // namespace scenfuzz

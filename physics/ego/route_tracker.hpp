@@ -13,6 +13,7 @@
 #include "physics/actors/trajectory.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
+#include "physics/map/polyline_boxes.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/map/segment_frames.hpp"
 
@@ -43,6 +44,7 @@ struct PathCoordinate {
   double s = 0;
   double lateral = 0;
   bool beyond_end = false;  // past either end of the stretch searched: s is that end's
+  std::size_t segment = 0;  // the path segment s lies on (a hint for heading_at)
 };
 
 class RouteTracker {
@@ -69,6 +71,8 @@ class RouteTracker {
   std::optional<RouteLanePosition> lane_at(double s) const;
   // path().heading_at(s), from headings computed once (the driver asks for several a step).
   double heading_at(double s) const;
+  // The same, walking from segment `hint` (a located coordinate's) instead of a binary search.
+  double heading_at(double s, std::size_t hint) const;
   // The path's curvature (1/m, unsigned) around arc length s.
   double curvature_at(double s) const;
 
@@ -79,6 +83,10 @@ class RouteTracker {
   // The same in two parts: the stretch (valid until the progress moves), then a point in it.
   PathWindow window(double behind, double ahead) const;
   std::optional<PathCoordinate> locate(MapPoint point, PathWindow window, double max_lateral) const;
+  // Whether `point` is surely farther than `distance` from every segment of the stretch (from
+  // bounding boxes of runs of segments, up to rounding far below a micrometre): then locate finds
+  // it nowhere nearer, and a caller that would reject it as too far aside need not locate it.
+  bool surely_farther(MapPoint point, PathWindow window, double distance) const;
 
  private:
   Polyline path_;
@@ -89,6 +97,7 @@ class RouteTracker {
   std::vector<double> curvature_;              // per path vertex
   std::vector<double> headings_;               // per path segment
   SegmentFrames frames_;                       // of path segments, for locate's projections
+  PolylineBoxes boxes_;                        // of runs of path segments, for surely_farther
   std::size_t segment_ = 0;
   double progress_ = 0;
 };

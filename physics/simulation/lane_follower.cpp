@@ -175,6 +175,20 @@ double LaneFollower::idm(const Stop& stop) const {
   return a * (1 - fourth_power(v / std::max(desired_speed_, kStandingDesire)) - ratio * ratio);
 }
 
+bool LaneFollower::surely_not_in_path(const WorldSnapshot& world, std::uint32_t k) const {
+  const double lookahead =
+      std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  const KinematicState& other = world.states[k];
+  const double dx = other.x - state_.x, dy = other.y - state_.y;
+  const double reach_k = lookahead + world.lengths[k];
+  if (dx * dx + dy * dy > reach_k * reach_k) return true;
+  // Behind this actor's front it is in nobody's way ahead (paths do not turn back within the
+  // lookahead), wherever it moves in the next seconds.
+  const double ahead = dx * facing_.x + dy * facing_.y;
+  const double tau = other.speed > kPredictedMinSpeed ? settings_.prediction_time : 0;
+  return ahead < -(world.lengths[k] + other.speed * tau);
+}
+
 // Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
 // leader. Every actor is looked at every scan interval, as a driver's glance goes round; between
 // scans only the leader is followed (its gap and speed every step).
@@ -186,7 +200,7 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
     leader_ = -1;
     double best_gap = kInfinity;
     auto look_at = [&](std::uint32_t k) {
-      if (k == self || !present_in(world, k)) return;
+      if (k == self || !present_in(world, k) || surely_not_in_path(world, k)) return;
       auto stop = in_path(world, k);
       if (stop && stop->gap < best_gap) {
         best_gap = stop->gap;
@@ -231,23 +245,41 @@ bool LaneFollower::near_path(const WorldSnapshot& world, std::vector<std::uint32
   return true;
 }
 
+// The first segment from this follower's on that can come within `reach` of `point`. The
+// follower is on its path at s_, and a path point s' is at most |s' - s_| from it in a straight
+// line: a point D away is out of reach of every point nearer than D - reach along the path, so
+// the segments that lie wholly there are skipped without looking at their boxes (nearest_on_path
+// would find none of them within reach).
+std::size_t LaneFollower::first_within(MapPoint point, double reach) const {
+  const double dx = point.x - state_.x, dy = point.y - state_.y;
+  // Far above the rounding of arc lengths and of the follower's position on its path.
+  constexpr double kMargin = 1e-3;
+  const double clear = std::sqrt(dx * dx + dy * dy) - reach - kMargin;
+  if (!(clear > s_ - path_.arc_lengths()[segment_])) return segment_;
+  return first_segment_reaching(path_, segment_, s_ + clear);
+}
+
+// Whether anything in the path within `reach` of `point` (reaching `extent` along it either way)
+// lies at a gap of at least `gap`. The path point found is ahead at s_ + d with d at least the
+// point's straight-line distance less the reach (chord <= arc), so the gap in_path computes is at
+// least that less half this body's length and the extent (1 mm of margin for rounding).
+bool LaneFollower::surely_no_nearer(MapPoint point, double reach, double extent, double gap) const {
+  const double dx = point.x - state_.x, dy = point.y - state_.y;
+  constexpr double kMargin = 1e-3;
+  return std::sqrt(dx * dx + dy * dy) - reach - body_.length / 2 - extent - kMargin >= gap;
+}
+
 // Actor k as something to stop behind: where it is, or where it will be within the prediction
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
 // ahead. A vehicle coming the other way counts as standing.
 std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& world,
                                                         std::uint32_t k) const {
+  if (surely_not_in_path(world, k)) return std::nullopt;
   const double lookahead =
       std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
   const KinematicState& other = world.states[k];
-  const double dx = other.x - state_.x, dy = other.y - state_.y;
-  const double reach_k = lookahead + world.lengths[k];
-  if (dx * dx + dy * dy > reach_k * reach_k) return std::nullopt;
-  // Behind this actor's front it is in nobody's way ahead (paths do not turn back within the
-  // lookahead), wherever it moves in the next seconds.
-  const double ahead = dx * facing_.x + dy * facing_.y;
   const bool moving = other.speed > kPredictedMinSpeed;
   const double tau = moving ? settings_.prediction_time : 0;
-  if (ahead < -(world.lengths[k] + other.speed * tau)) return std::nullopt;
   const double velocity = longitudinal_velocity(other);
   // Where it will be: the simulation's prediction for every follower of the step when it made one
   // for this horizon, else the same computed here.
@@ -261,11 +293,16 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   const double half_width = body_.width / 2;
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
-  const std::size_t first = segment_;
   std::optional<Stop> best;
   for (int which = 0; which < (tau > 0 ? 2 : 1); ++which) {
+    // Where it will be cannot be nearer than where it is when the path is too far along there
+    // (most leaders drive on ahead): the search would be rejected by the gap test below.
+    if (best &&
+        surely_no_nearer(points[which], reach, (world.lengths[k] + world.widths[k]) / 2, best->gap))
+      break;
     PolylineProjection nearest =
-        nearest_on_path(path_, boxes_, frames_, points[which], first, s_ + lookahead, reach);
+        nearest_on_path(path_, boxes_, frames_, points[which], first_within(points[which], reach),
+                        s_ + lookahead, reach);
     if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
     double relative = angle_difference(other.heading, headings_[nearest.segment]);
     double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
@@ -419,7 +456,7 @@ void LaneFollower::advance(double acceleration, double dt) {
     if (!leaves_at_end_) next = 0;
   }
   segment_ = segment_at_from(path_, s_, segment_);
-  state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt);
+  state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt, segment_);
   state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
   // On a straight segment the heading stays the same, and so do its cosine and sine.
   if (state_.heading != heading) facing_ = {std::cos(state_.heading), std::sin(state_.heading)};

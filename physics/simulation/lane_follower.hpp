@@ -89,6 +89,11 @@ class LaneFollower {
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
   bool near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const;
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k) const;
+  // in_path's first tests, inlined into the scan: whether actor k is surely not in the path
+  // (too far off, or behind), which is the answer for most actors at most scans.
+  bool surely_not_in_path(const WorldSnapshot& world, std::uint32_t k) const;
+  std::size_t first_within(MapPoint point, double reach) const;
+  bool surely_no_nearer(MapPoint point, double reach, double extent, double gap) const;
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
   bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
