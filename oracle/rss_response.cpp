@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "oracle/pair_geometry.hpp"
 #include "oracle/right_of_way.hpp"
@@ -18,6 +19,10 @@ constexpr double kAccelerationAllowance = 0.5;  // m/s^2
 constexpr double kBrakingShare = 0.9;           // of the owed speed drop
 constexpr double kBrakingAllowance = 0.5;       // m/s of the owed speed drop
 constexpr double kLateralAllowance = 0.2;       // m/s sideways
+// A lane change has ended once both cars have kept to one lane, moving sideways towards each
+// other slower than this, for this long.
+constexpr double kSettledSideways = 0.1;  // m/s
+constexpr double kSettleTime = 1;         // s
 
 struct Safety {
   bool lon_safe = true;
@@ -111,6 +116,25 @@ void check_lateral(const Trace& trace, const RoadMap& map, ActorId other, ActorI
   }
 }
 
+// The first sample from which the pair has been in one lane, neither moving sideways towards
+// the other, for kSettleTime: a lane change that ended with one car behind the other.
+std::optional<std::size_t> lane_change_settled(const Trace& trace, const RoadMap& map,
+                                               ActorId other, std::size_t from,
+                                               std::size_t collision) {
+  const std::size_t hold = samples_in(trace, kSettleTime);
+  std::size_t calm = 0;
+  for (std::size_t i = from; i < collision; ++i) {
+    const PairGeometry g = pair_geometry(trace, map, kEgo, other, i);
+    const std::int32_t lane = trace.actors[kEgo].lane[i];
+    const bool settled = lane >= 0 && lane == trace.actors[other].lane[i] &&
+                         std::abs(g.reference_towards()) < kSettledSideways &&
+                         std::abs(g.other_towards()) < kSettledSideways;
+    calm = settled ? calm + 1 : 0;
+    if (calm >= hold) return i + 1 - hold;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 double rss_response_time(ActorId actor, const RssParameters& rss) {
@@ -172,6 +196,17 @@ std::vector<ResponseViolation> rss_improper_responses(const Trace& trace, const 
     check_lateral(trace, map, other, kEgo, b, collision_sample, rss, out);
     check_lateral(trace, map, other, other, b, collision_sample, rss, out);
   }
+  // A lane change that ended well before the impact with one car behind the other left a
+  // longitudinal danger: from then on the rear car owes RSS's braking too (it had its response
+  // time to see the car ahead), and the front one must not brake harder than RSS allows.
+  if (blame.which == RssCase::lateral)
+    if (const auto settled = lane_change_settled(trace, map, other, b, collision_sample)) {
+      const bool ego_behind = ego_is_behind(trace, map, other, *settled);
+      const ActorId rear = ego_behind ? kEgo : other;
+      const ActorId front = ego_behind ? other : kEgo;
+      check_braking(trace, rear, *settled, collision_sample, rss.brake_min, rss, out);
+      check_leading(trace, front, *settled, collision_sample, rss, out);
+    }
   return out;
 }
 

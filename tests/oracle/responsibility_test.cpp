@@ -272,6 +272,22 @@ TEST(ResponsibilityTest, EgoChangingLaneInFrontOfAFasterCarSaysHowFarAheadItWas)
   EXPECT_EQ(r.reason.find("alongside"), std::string::npos) << r.reason;
 }
 
+TEST(ResponsibilityTest, ACarThatNeverBrakesLongAfterTheEgoChangedLaneInFrontSharesIt) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(20);
+  // The ego at 12 m/s moves into east_0 25 m ahead of a car there at 14 m/s, finishing after
+  // 4 s; the car closes at 2 m/s for another 6 s without ever braking.
+  move(trace, map, trace.actors[0], sidestep_east(35, kEast1, 12, 0.5, 1, 1, -3.5));
+  move(trace, map, trace.actors[1], cruise_east(10, kEast0, 14));
+  end_at_contact(trace);
+  ASSERT_GT(trace.time.back(), 9.0);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::shared) << r.reason;
+  EXPECT_EQ(r.reason.rfind("changed lane ", 0), 0u) << r.reason;
+  EXPECT_NE(r.reason.find("hit from behind by a car that braked at 0 m/s^2"), std::string::npos)
+      << r.reason;
+}
+
 TEST(ResponsibilityTest, BothChangingLaneIntoEachOtherShareIt) {
   const RoadMap map = builtin("straight");
   Trace trace = two_actor_trace(10);
