@@ -342,8 +342,9 @@ std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorI
     if (trace.actors[other].kind != TraceActorKind::pedestrian) return std::nullopt;
     return Verdict{Responsibility::other, "a pedestrian walked into the side of the moving ego"};
   }
-  const std::string no_brake = "the ego did not brake at " + format_number(rss.brake_min) +
-                               " m/s^2 once " + definite(other_name) + " was in its path";
+  // Follows "..., and the ego " in a shared verdict.
+  const std::string no_brake = "did not brake at " + format_number(rss.brake_min) + " m/s^2 once " +
+                               definite(other_name) + " was in its path";
   const bool ego_at_fault = !ego_responded || ego_unsafe;
   const bool other_at_fault = other_unsafe;
   std::string ego_part = ego_unsafe

@@ -359,6 +359,20 @@ TEST(ResponsibilityTest, EgoHittingAPedestrianItHadRoomToStopForIsAtFault) {
   EXPECT_EQ(r.reason.rfind("hit a pedestrian that entered its path", 0), 0u) << r.reason;
 }
 
+TEST(ResponsibilityTest, APedestrianSteppingInTooCloseAndAnEgoThatNeverBrakesShareIt) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10, TraceActorKind::pedestrian);
+  // The pedestrian walks from east_0 into east_1 at 0.5 m/s about 50 m ahead of the ego at
+  // 15 m/s (less than its safe distance); the ego never brakes in the 3.5 s it has.
+  move(trace, map, trace.actors[0], cruise_east(0, kEast1, 15));
+  move(trace, map, trace.actors[1], [](double t) { return State{100, -5 + 0.5 * t, 0, 0.5}; });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::shared) << r.reason;
+  EXPECT_NE(r.reason.find(", and the ego did not brake at 4 m/s^2"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.reason.find("the ego the ego"), std::string::npos) << r.reason;
+}
+
 TEST(ResponsibilityTest, DrivingIntoAnObstacleIsTheEgos) {
   const RoadMap map = builtin("straight");
   Trace trace = two_actor_trace(10, TraceActorKind::obstacle);
