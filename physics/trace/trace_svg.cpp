@@ -11,8 +11,8 @@
 
 #include "physics/collision/body_side.hpp"
 #include "physics/map/map_svg.hpp"
-#include "physics/trace/picture_regions.hpp"
 #include "physics/map/svg_writing.hpp"
+#include "physics/trace/picture_regions.hpp"
 #include "physics/trace/trace_moment.hpp"
 #include "physics/trace/trace_svg_parts.hpp"
 

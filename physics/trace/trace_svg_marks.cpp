@@ -7,8 +7,8 @@
 #include <numbers>
 #include <span>
 
-#include "physics/trace/picture_regions.hpp"
 #include "physics/map/svg_writing.hpp"
+#include "physics/trace/picture_regions.hpp"
 #include "physics/trace/trace_svg_parts.hpp"
 
 namespace scenfuzz {
