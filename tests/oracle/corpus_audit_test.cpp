@@ -36,8 +36,6 @@ constexpr AuditKind kLimits[] = {AuditKind::speed_limit, AuditKind::lateral_acce
 using test::corpus_seeds;
 using test::parse_seed;
 
-MapSearchPath search_path() { return test::corpus_map_search_path(); }
-
 bool is_limit(AuditKind kind) {
   return std::find(std::begin(kLimits), std::end(kLimits), kind) != std::end(kLimits);
 }
@@ -54,20 +52,17 @@ TEST(CorpusAuditTest, NoSeedsActorBeatsItsClassOrTurnsWithoutItsHeading) {
     for (double point : kPoints) {
       const std::vector<double> values =
           decode(space, std::vector<double>(space.dimensions.size(), point));
-      std::optional<RoadMap> map;
-      try {
-        map.emplace(load_scenario_map(scenario->map, search_path(), values));
-      } catch (const MapError& error) {
-        ASSERT_FALSE(test::have_shared_dir()) << error.what();
+      const test::SeedRun run = test::simulate_seed(*file, *scenario, values);
+      if (run.map_missing) {
+        ASSERT_FALSE(test::have_shared_dir()) << run.error;
         skipped << "  " << path.filename().string() << " (its map is in the shared folder)\n";
         break;
       }
-      Diagnostics diagnostics;
-      auto setup = prepare_simulation(*scenario, values, *map, 1, diagnostics);
-      ASSERT_TRUE(setup) << format_diagnostics(*file, diagnostics);
-      const Trace trace = simulate(*map, *setup, {});
+      ASSERT_TRUE(run.trace) << run.error;
+      const Trace& trace = *run.trace;
+      const RoadMap& map = *run.map;
       ++runs;
-      for (const AuditIssue& issue : audit_trace(trace, *map).issues)
+      for (const AuditIssue& issue : audit_trace(trace, map).issues)
         (is_limit(issue.kind) ? limits : others)
             << "  " << path.filename().string() << " at " << point << ": " << issue.actor_name
             << " " << audit_kind_name(issue.kind) << " " << issue.worst << " (limit " << issue.limit

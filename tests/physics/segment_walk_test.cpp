@@ -13,22 +13,13 @@
 
 #include "physics/map/polyline_boxes.hpp"
 #include "physics/map/segment_frames.hpp"
+#include "tests/support/random_paths.hpp"
 
 namespace scenfuzz {
 namespace {
 
-// A wiggly path of uneven segments (0.2 m to 3 m) at UTM-like coordinates.
 Polyline wiggly_path(std::mt19937_64& random, std::size_t points) {
-  std::uniform_real_distribution<double> step(0.2, 3.0), turn(-0.4, 0.4);
-  std::vector<MapPoint> vertices{{552000.5, 4182000.25}};
-  double heading = 0.3;
-  for (std::size_t i = 1; i < points; ++i) {
-    heading += turn(random);
-    double length = step(random);
-    vertices.push_back({vertices.back().x + length * std::cos(heading),
-                        vertices.back().y + length * std::sin(heading)});
-  }
-  return Polyline(vertices);
+  return test::random_path(random, points, 0.4);
 }
 
 TEST(SegmentWalk, SegmentAtFromAnyHintIsSegmentAt) {

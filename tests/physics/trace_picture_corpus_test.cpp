@@ -33,8 +33,6 @@ namespace fs = std::filesystem;
 using test::corpus_seeds;
 using test::parse_seed;
 
-MapSearchPath search_path() { return test::corpus_map_search_path(); }
-
 bool have_rsvg_convert() { return std::system("command -v rsvg-convert >/dev/null 2>&1") == 0; }
 
 // "" when rsvg-convert turns `svg` into a PNG of width x height pixels; else what went wrong.
@@ -78,18 +76,15 @@ TEST(TracePictureCorpus, EverySeedsPictureRendersWithItsLabelsOnTheCanvasApart) 
     const ParameterSpace space = parameter_space(*scenario);
     const std::vector<double> values =
         decode(space, std::vector<double>(space.dimensions.size(), 0.5));
-    std::optional<RoadMap> map;
-    try {
-      map.emplace(load_scenario_map(scenario->map, search_path(), values));
-    } catch (const MapError& error) {
-      ASSERT_FALSE(test::have_shared_dir()) << error.what();
+    const test::SeedRun run = test::simulate_seed(*file, *scenario, values);
+    if (run.map_missing) {
+      ASSERT_FALSE(test::have_shared_dir()) << run.error;
       skipped << "  " << path.filename().string() << " (its map is in the shared folder)\n";
       continue;
     }
-    Diagnostics diagnostics;
-    auto setup = prepare_simulation(*scenario, values, *map, 1, diagnostics);
-    ASSERT_TRUE(setup) << format_diagnostics(*file, diagnostics);
-    const Trace trace = simulate(*map, *setup, {});
+    ASSERT_TRUE(run.trace) << run.error;
+    const Trace& trace = *run.trace;
+    const RoadMap& map = *run.map;
     // A caption as long as a finding's, to make the title wrap.
     TraceSvgOptions options;
     options.caption.spec = "no_collision_with_any_vehicle_or_pedestrian";
@@ -99,7 +94,7 @@ TEST(TracePictureCorpus, EverySeedsPictureRendersWithItsLabelsOnTheCanvasApart) 
     options.caption.reason =
         "the other entered the ego's lane 1.1 s before impact, less than the ego's stopping "
         "time at 8 m/s2";
-    const std::string svg = render_trace_svg(*map, trace, options);
+    const std::string svg = render_trace_svg(map, trace, options);
     ++pictures;
     EXPECT_EQ(test::layout_problems(svg), "");
     if (!rsvg) continue;
