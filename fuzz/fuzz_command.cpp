@@ -327,6 +327,7 @@ int exit_status(const SearchSession& session, const SearchOutputs& outputs,
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
   std::optional<ScenarioFile> input = read_scenario(options.path, "search", err);
   if (!input) return kExitBadInput;
+  apply_scenario_overrides(options.simulation, input->scenario);
   std::optional<ScenarioEvaluator> evaluator = make_evaluator(options, *input, err);
   if (!evaluator) return kExitBadInput;
   std::optional<SearchOptions> search = search_options(options, *evaluator, err);

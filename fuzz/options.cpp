@@ -255,6 +255,11 @@ SimulationOptions simulation_options(const SimulationCommandOptions& options) {
   return simulation;
 }
 
+void apply_scenario_overrides(const SimulationCommandOptions& options, ScenarioTemplate& scenario) {
+  if (std::optional<NpcBehaviour> behaviour = simulation_options(options).npc_behaviour)
+    scenario.npc_behaviour = behaviour;
+}
+
 JudgeOptions judge_options(const SimulationCommandOptions& options) {
   JudgeOptions judge;
   judge.all_collisions = options.all_collisions;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fuzz/commands.hpp"
+#include "lang/scenario.hpp"
 #include "lang/spec.hpp"
 #include "oracle/judge.hpp"
 #include "physics/simulation/simulation.hpp"
@@ -100,6 +101,10 @@ std::vector<std::string> duration_warnings(const SimulationCommandOptions& optio
 
 // What the simulation is asked for by the command line's options (the seed apart).
 SimulationOptions simulation_options(const SimulationCommandOptions& options);
+
+// The scenario as the command line overrides it: --npc-behaviour replaces the scenario's own
+// switch, so that setting up the simulation (its warnings included) sees the behaviour it runs.
+void apply_scenario_overrides(const SimulationCommandOptions& options, ScenarioTemplate& scenario);
 
 // How the oracle judges collisions by the command line's options (--rss already checked).
 JudgeOptions judge_options(const SimulationCommandOptions& options);
