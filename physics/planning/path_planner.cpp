@@ -441,27 +441,34 @@ std::int8_t direction_at(const Curve& curve, double at) {
   return curve.stretches().back().direction;
 }
 
-// Poses every `spacing` metres along the leg's curves, plus each cusp (where the direction of
-// motion flips) and the exact end.
+// Poses evenly between the leg's start, its cusps (where the direction of motion flips) and its
+// end, at most `spacing` metres apart. Even, so that no sliver of a segment is left before a cusp
+// or the end: a path's heading turns through a vertex over half its shorter segment
+// (path_pose.hpp), and a sliver would turn it in one step, tighter than any vehicle can.
 LegSamples sample_leg(const std::vector<Curve>& curves, double spacing, const MapPose& end,
                       ob::State* scratch) {
   std::vector<double> curve_start{0};
   for (const Curve& curve : curves) curve_start.push_back(curve_start.back() + curve.length());
   const double length = curve_start.back();
 
-  std::vector<double> at;
-  for (double k = 0; k * spacing < length - kSameArcLength; ++k) at.push_back(k * spacing);
+  std::vector<double> breaks{0};
   std::int8_t previous_direction = direction_at(curves.front(), 0);
   for (std::size_t c = 0; c < curves.size(); ++c) {
     double stretch_start = curve_start[c];
     for (const Stretch& stretch : curves[c].stretches()) {
-      if (stretch.direction != previous_direction) at.push_back(stretch_start);
+      if (stretch.direction != previous_direction) breaks.push_back(stretch_start);
       previous_direction = stretch.direction;
       stretch_start += stretch.length;
     }
   }
+  breaks.push_back(length);
+  std::vector<double> at;
+  for (std::size_t piece = 0; piece + 1 < breaks.size(); ++piece) {
+    const double from = breaks[piece], piece_length = breaks[piece + 1] - from;
+    const double steps = std::max(1.0, std::ceil(piece_length / spacing - kSameArcLength));
+    for (double k = 0; k < steps; ++k) at.push_back(from + piece_length * k / steps);
+  }
   at.push_back(length);
-  std::sort(at.begin(), at.end());
 
   LegSamples samples;
   for (double arc_length : at) {

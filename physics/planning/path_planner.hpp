@@ -23,7 +23,7 @@ struct PathRequest {
   std::function<bool(const MapPose&)> is_free;
   std::uint64_t seed = 0;
   double time_limit = 0.5;  // s of planning per leg for the sampling planner
-  double spacing = 0.5;     // m between the returned poses
+  double spacing = 0.5;     // m at most between the returned poses, evenly along each leg
   // Index of waypoints.front() in a longer path of which this plans a part: errors name legs and
   // waypoints, and legs draw their seeds, by their place in the whole path.
   std::size_t first_leg = 0;

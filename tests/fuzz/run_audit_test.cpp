@@ -74,5 +74,26 @@ TEST_F(RunAuditTest, APlausibleRunSaysSo) {
   EXPECT_TRUE(summary["audit"].empty());
 }
 
+// corpora/avunit/overtaking_oncoming.avu at one point of its space: an oncoming car drifts to
+// the centre line and back into west_1 over 23.5 m, both legs planned (Dubins). The planner's
+// last pose fell 3 cm before the waypoint, and the car, slowed to 2 m/s there, turned through
+// that vertex in one step at 1.1 rad/s, tighter than full lock.
+constexpr const char* kDriftBack =
+    "ego = AV((\"east_0\"->30, , 14), ((400.0, -5.25)));\n"
+    "truck = Vehicle((\"east_0\"->100, , 8), uniform((\"east_0\"->100, , 8)), "
+    "(\"east_0\"->495));\n"
+    "car = Vehicle((\"west_1\"->171.06232483593, , 16.562891084606733), "
+    "Waypoint(((103.461715147, -0.032532884349), , 16.562891084606733), "
+    "(\"west_1\"->420, , 16.562891084606733)), (\"west_1\"->490), (\"Sedan\", red));\n"
+    "scenario = CreateScenario{load(\"straight\"); ego; {truck, car}; {}; {};};\n"
+    "Trace trace = EXE(scenario);\n";
+
+TEST_F(RunAuditTest, APlannedLegEndsWithoutASliverThatTurnsTooTightly) {
+  const Outcome outcome = run(write("drift.avu", kDriftBack), false);
+  ASSERT_NE(outcome.exit_code, 2) << outcome.err;
+  EXPECT_EQ(outcome.out.find("tighter than full lock"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("every actor drove plausibly"), std::string::npos) << outcome.out;
+}
+
 }  // namespace
 }  // namespace scenfuzz

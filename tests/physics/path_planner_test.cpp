@@ -63,6 +63,10 @@ void expect_consistent(const PlannedPath& path, const PathRequest& request) {
     const double step = path.s[i + 1] - path.s[i];
     EXPECT_GT(step, 0) << "at pose " << i;
     EXPECT_LE(step, request.spacing + 1e-9) << "at pose " << i;
+    // Evenly spaced: no sliver before a waypoint, whose vertex would turn the heading in one step.
+    if (path.direction[i] == path.direction[i + 1] && path.length > request.spacing) {
+      EXPECT_GE(step, 0.5 * request.spacing - 1e-9) << "at pose " << i;
+    }
     // Consecutive poses lie on a curve between them, never further apart than its length.
     EXPECT_LE(distance(path.poses[i].position, path.poses[i + 1].position), step + 1e-9);
   }
