@@ -1,6 +1,8 @@
+// The default duration of a run (default_duration.hpp says the rule).
 #include "physics/simulation/default_duration.hpp"
 
 #include <algorithm>
+#include <set>
 
 #include "lang/spec_horizon.hpp"
 #include "physics/ego/reference_driver.hpp"
@@ -23,12 +25,42 @@ double route_time_at_limits(const RoadMap& map, const LaneRoute& route,
   return seconds;
 }
 
-double default_duration(std::span<const Spec> specs, std::optional<double> route_time) {
+namespace {
+
+// Seconds a fixed-time plan shows anything but green in one cycle.
+double non_green_time(const SignalPlan& plan) {
+  double seconds = 0;
+  for (const SignalPhase& phase : plan.phases)
+    if (phase.colour != SignalColour::green) seconds += phase.duration;
+  return seconds;
+}
+
+bool controls_route(const TrafficLight& light, const LaneRoute& route) {
+  for (const LaneCrossing& crossing : light.lanes)
+    for (const RouteSegment& segment : route.segments)
+      if (segment.lane == crossing.lane) return true;
+  return false;
+}
+
+}  // namespace
+
+double route_waits(const RoadMap& map, const LaneRoute& route) {
+  std::set<std::uint32_t> junctions;
+  for (const RouteSegment& segment : route.segments)
+    if (const auto junction = map.lane(segment.lane).junction) junctions.insert(*junction);
+  double seconds = kJunctionWait * static_cast<double>(junctions.size());
+  for (const TrafficLight& light : map.traffic_lights())
+    if (light.plan && controls_route(light, route)) seconds += non_green_time(*light.plan);
+  return seconds;
+}
+
+double default_duration(std::span<const Spec> specs, std::optional<double> route_time,
+                        double waits) {
   double duration = kDefaultDuration;
   if (const std::optional<SpecHorizon> longest = longest_horizon(specs))
     duration = std::max(duration, longest->seconds);
   if (route_time)
-    duration = std::max(duration, kRouteTimeMargin * *route_time + kStartStopAllowance);
+    duration = std::max(duration, kRouteTimeMargin * *route_time + kStartStopAllowance + waits);
   return duration;
 }
 

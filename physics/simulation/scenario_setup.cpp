@@ -686,7 +686,8 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   if (!own_duration && setup.ego_target)
     context.duration = default_duration(
         scenario.specs,
-        route_time_at_limits(map, setup.ego_route, setup.speed_limits, setup.ego_body.max_speed));
+        route_time_at_limits(map, setup.ego_route, setup.speed_limits, setup.ego_body.max_speed),
+        route_waits(map, setup.ego_route));
   setup.duration = context.duration;
 
   // Obstacles first: vehicles' paths are planned around them.

@@ -93,5 +93,22 @@ TEST(DefaultDurationTest, AScenarioDurationShorterThanASpecReadsIsWarnedNamingTh
   EXPECT_NE(prepared.diagnostics.find("40 s"), std::string::npos) << prepared.diagnostics;
 }
 
+TEST(DefaultDurationTest, LeavesTimeToWaitAtTheJunctionAndItsLightOnTheRoute) {
+  // West to east through the built-in crossroads: west_in_0 from s = 20 (130 m), the 20 m
+  // connector and 100 m of east_out_0 at 13.9 m/s, through one junction whose light shows red and
+  // amber 35 s of its 60 s cycle.
+  const Prepared prepared = prepare(R"(
+ego = AV((("west_in_0"->20), , 0), (("east_out_0"->100), , ));
+scenario = CreateScenario{load("crossroads"); ego; {}; {}; {};};
+)");
+  ASSERT_TRUE(prepared.setup) << prepared.diagnostics;
+  const double at_limit = 250 / 13.9;
+  EXPECT_NEAR(prepared.setup->duration,
+              kRouteTimeMargin * at_limit + kStartStopAllowance + kJunctionWait + 35, 0.5);
+  // Arriving as the light turns red, the reference driver still gets there within it.
+  const Trace trace = simulate(*prepared.map, *prepared.setup, {});
+  EXPECT_EQ(trace.end, EndReason::target_reached) << trace.time.back();
+}
+
 }  // namespace
 }  // namespace scenfuzz
