@@ -43,9 +43,16 @@ std::string without_wall_times(const std::string& csv) {
   const auto wall = static_cast<std::size_t>(std::find(names.begin(), names.end(), "wall_seconds") -
                                              names.begin());
   for (result = header + "\n"; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::stringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    // Split on commas outside quotes: a collision_reason may hold a quoted comma.
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (const char c : line) {
+      if (c == '"') quoted = !quoted;
+      if (c == ',' && !quoted)
+        cells.emplace_back();
+      else
+        cells.back() += c;
+    }
     for (std::size_t i = 0; i < cells.size(); ++i)
       if (i != wall) result += cells[i] + ",";
     result += "\n";
@@ -91,7 +98,8 @@ TEST_F(FuzzCommandTest, ACutInYieldsFindingsWithinTheBudget) {
 }
 
 TEST_F(FuzzCommandTest, OneFindingPerFailureModeItsMostViolatingEvaluation) {
-  ASSERT_EQ(fuzz(kCutIn, {"--budget", "200", "--seed", "1"}).exit_code, 1);
+  // Seed 6: a search in which some mode's first evaluation is later outdone (asserted below).
+  ASSERT_EQ(fuzz(kCutIn, {"--budget", "200", "--seed", "6"}).exit_code, 1);
   const nlohmann::json summary = this->summary();
   // The journal's evaluations by failure mode: how many, and the most violating (the earliest
   // among equals).
