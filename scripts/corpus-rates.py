@@ -74,7 +74,8 @@ def count_evaluations(evaluations_csv: Path, specs: list[str]) -> tuple[int, dic
                 continue
             judged += 1
             endings = parse_endings(row.get("endings", ""))
-            if " / " in row.get("signature", ""):
+            # The responsibility of the ego's first collision, '-' without one (docs/search.md).
+            if row.get("responsibility", "") not in ("", "-"):
                 collisions += 1
             for spec in specs:
                 value = row.get(f"robustness.{spec}", "")
