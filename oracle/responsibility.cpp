@@ -1,9 +1,11 @@
 // The responsibility rules, tried in order (docs/oracle.md, "Responsibility"): an obstacle cannot
 // be at fault; a broken light or stop sign, then missing priority at a junction (signs, then a
-// left turn against oncoming traffic), decides a crossing; an ego standing still is not at fault
-// unless it stopped across a vehicle's path too late for it to stop; a turning ego gives way to
-// pedestrians on the crosswalk; a pedestrian or a crossing road user is judged by when it entered
-// the other's path; road users along the same road by RSS's dangerous time and proper response.
+// left turn against oncoming traffic, then priority to the right where nothing controls the
+// junction), decides a crossing, and a sign a merge along one road; an ego standing still is not at
+// fault unless it stopped across a vehicle's path too late for it to stop; a turning ego gives way
+// to pedestrians on the crosswalk; a pedestrian or a crossing road user is judged by when it
+// entered the other's path; road users along the same road by RSS's dangerous time and proper
+// response.
 #include "oracle/responsibility.hpp"
 
 #include <algorithm>
