@@ -1,9 +1,11 @@
 // The responsibility rules, tried in order (docs/oracle.md, "Responsibility"): an obstacle cannot
 // be at fault; a broken light or stop sign, then missing priority at a junction (signs, then a
-// left turn against oncoming traffic), decides a crossing; an ego standing still is not at fault
-// unless it stopped across a vehicle's path too late for it to stop; a turning ego gives way to
-// pedestrians on the crosswalk; a pedestrian or a crossing road user is judged by when it entered
-// the other's path; road users along the same road by RSS's dangerous time and proper response.
+// left turn against oncoming traffic, then priority to the right where nothing controls the
+// junction), decides a crossing, and a sign a merge along one road; an ego standing still is not at
+// fault unless it stopped across a vehicle's path too late for it to stop; a turning ego gives way
+// to pedestrians on the crosswalk; a pedestrian or a crossing road user is judged by when it
+// entered the other's path; road users along the same road by RSS's dangerous time and proper
+// response.
 #include "oracle/responsibility.hpp"
 
 #include <algorithm>
@@ -15,9 +17,11 @@
 #include "lang/number_format.hpp"
 #include "oracle/crosswalk_priority.hpp"
 #include "oracle/junction_priority.hpp"
+#include "oracle/merge_lanes.hpp"
 #include "oracle/pair_geometry.hpp"
 #include "oracle/path_intrusion.hpp"
 #include "oracle/right_of_way.hpp"
+#include "oracle/right_priority.hpp"
 #include "oracle/rss_distances.hpp"
 #include "oracle/rss_response.hpp"
 
@@ -196,14 +200,77 @@ std::optional<Verdict> turn_rule(const Trace& trace, const RoadMap& map, ActorId
   return map_fault(trace, map, priority->yielder, other, k, what, rss);
 }
 
+// Priority to the right where no light or sign controls the junction. The one with the other on
+// its right failed to give way when it came into that one's path within its safe distance (or
+// stopped in it), or, moving, drove into that one while it was in its own path; one that came into
+// the path with room to spare, or stood still, is left to the rules below.
+std::optional<Verdict> right_rule(const Trace& trace, const RoadMap& map, ActorId other,
+                                  std::size_t first, std::size_t k, const RssParameters& rss) {
+  const std::optional<RightPriority> priority = right_priority(trace, map, other, first, k);
+  if (!priority) return std::nullopt;
+  const ActorId yielder = priority->yielder;
+  const ActorId with_way = priority->priority;
+  std::string how;
+  if (const std::optional<PathIntrusion> intrusion =
+          path_intrusion(trace, map, with_way, yielder, k, rss)) {
+    if (!intrusion->unsafe()) return std::nullopt;
+    how = intrusion_text(trace, *intrusion, k);
+  } else {
+    const std::optional<PathEntry> entry =
+        lasting_entry(trace, path_entry(trace, map, yielder, with_way, k), k);
+    if (!entry || trace.actors[yielder].speed[k] <= kStandstillSpeed) return std::nullopt;
+    how = "drove into " + std::string(with_way == kEgo ? "the ego" : "it") + ", in its path " +
+          (entry->from_start ? "from the start" : "from " + before_impact(trace, entry->sample, k));
+  }
+  const std::string whom = yielder == kEgo ? described(trace.actors[other]) : "the ego";
+  return map_fault(trace, map, yielder, other, k,
+                   "did not give way to " + whom +
+                       " coming from its right at a junction without lights or signs: " + how,
+                   rss);
+}
+
+std::string sign_text(const RoadMap& map, const CrossedControl& sign) {
+  return "did not give way at the " +
+         std::string(sign.kind == FeatureKind::stop_sign ? "stop" : "yield") + " sign " +
+         control_id(map, sign) + " to traffic with priority";
+}
+
+// Along one road the map still decides a merge from a stop- or yield-controlled lane into the
+// traffic it gives way to (a roundabout's entry into the ring): whatever the angle at which they
+// met, the one that crossed the sign failed to give way when it came into the other's path within
+// that one's safe distance, the other on a lane it merges into or crosses. Otherwise RSS decides.
+std::optional<Verdict> merge_rule(const Trace& trace, const RoadMap& map, ActorId other,
+                                  std::size_t k, const std::optional<CrossedControl>& ego_sign,
+                                  const std::optional<CrossedControl>& other_sign,
+                                  const RssParameters& rss) {
+  if (ego_sign.has_value() == other_sign.has_value()) return std::nullopt;
+  const CrossedControl& sign = ego_sign ? *ego_sign : *other_sign;
+  const ActorId yielder = ego_sign ? kEgo : other;
+  const ActorId with_way = ego_sign ? other : kEgo;
+  const std::optional<PathIntrusion> intrusion =
+      path_intrusion(trace, map, with_way, yielder, k, rss);
+  if (!intrusion || !intrusion->unsafe()) return std::nullopt;
+  const std::int32_t entry = trace.actors[yielder].lane[sign.sample];
+  const std::int32_t lane = trace.actors[with_way].lane[intrusion->sample];
+  if (entry < 0 || lane < 0 ||
+      !merges_with(map, static_cast<LaneIndex>(entry), static_cast<LaneIndex>(lane)))
+    return std::nullopt;
+  return map_fault(trace, map, yielder, other, k,
+                   sign_text(map, sign) + ": " + intrusion_text(trace, *intrusion, k), rss);
+}
+
 std::optional<Verdict> map_rule(const Trace& trace, const RoadMap& map, ActorId other,
                                 std::size_t k, const RssParameters& rss) {
-  if (impact_angle(trace, other, k) < kAlongRoad) return std::nullopt;  // one road, RSS decides
   if (!is_vehicle(trace.actors[other])) return std::nullopt;
+  const bool along_road = impact_angle(trace, other, k) < kAlongRoad;
   const auto memory = static_cast<std::size_t>(kRightOfWayMemory / trace.dt);
   const std::size_t first = k > memory ? k - memory : 0;
   const std::vector<CrossedControl> ego_crossed = controls_crossed(trace, map, kEgo, first, k);
   const std::vector<CrossedControl> other_crossed = controls_crossed(trace, map, other, first, k);
+  // Priority: a stop or yield sign gives way to a road without one.
+  const std::optional<CrossedControl> ego_sign = first_sign(ego_crossed);
+  const std::optional<CrossedControl> other_sign = first_sign(other_crossed);
+  if (along_road) return merge_rule(trace, map, other, k, ego_sign, other_sign, rss);
   const std::optional<CrossedControl> ego_broke = first_violation(ego_crossed);
   const std::optional<CrossedControl> other_broke = first_violation(other_crossed);
   if (ego_broke && other_broke)
@@ -215,16 +282,13 @@ std::optional<Verdict> map_rule(const Trace& trace, const RoadMap& map, ActorId 
     return map_fault(trace, map, kEgo, other, k, violation_text(trace, map, *ego_broke, k), rss);
   if (other_broke)
     return map_fault(trace, map, other, other, k, violation_text(trace, map, *other_broke, k), rss);
-  // Priority: a stop or yield sign gives way to a road without one.
-  const std::optional<CrossedControl> ego_sign = first_sign(ego_crossed);
-  const std::optional<CrossedControl> other_sign = first_sign(other_crossed);
-  if (ego_sign.has_value() == other_sign.has_value())
-    return turn_rule(trace, map, other, first, k, rss);
+  if (ego_sign.has_value() == other_sign.has_value()) {
+    if (std::optional<Verdict> verdict = turn_rule(trace, map, other, first, k, rss))
+      return verdict;
+    return right_rule(trace, map, other, first, k, rss);
+  }
   const CrossedControl& sign = ego_sign ? *ego_sign : *other_sign;
-  const std::string what = "did not give way at the " +
-                           std::string(sign.kind == FeatureKind::stop_sign ? "stop" : "yield") +
-                           " sign " + control_id(map, sign) + " to traffic with priority";
-  return map_fault(trace, map, ego_sign ? kEgo : other, other, k, what, rss);
+  return map_fault(trace, map, ego_sign ? kEgo : other, other, k, sign_text(map, sign), rss);
 }
 
 // ---- an ego standing still ----
