@@ -74,6 +74,10 @@ std::string intrusion_text(const Trace& trace, const PathIntrusion& intrusion, s
          tenths(intrusion.safe_distance) + " m";
 }
 
+BodySide ego_side(const Collision& collision) {
+  return collision.first == kEgo ? collision.first_side : collision.second_side;
+}
+
 std::size_t sample_of(const Trace& trace, double time) {
   const auto i = static_cast<std::size_t>(std::llround(time / trace.dt));
   return std::min(i, trace.sample_count() - 1);
@@ -320,7 +324,7 @@ std::optional<Verdict> stationary_rule(const Trace& trace, const RoadMap& map,
   const TraceActor& ego = trace.actors[kEgo];
   if (ego.speed[k] > kStandstillSpeed || (k > 0 && ego.speed[k - 1] > kStandstillSpeed))
     return std::nullopt;
-  const BodySide side = collision.first == kEgo ? collision.first_side : collision.second_side;
+  const BodySide side = ego_side(collision);
   if (trace.actors[other].kind == TraceActorKind::pedestrian)
     return Verdict{Responsibility::other, "a pedestrian walked into the " +
                                               std::string(body_side_name(side)) +
@@ -386,7 +390,7 @@ double safe_distance_at_entry(const Trace& trace, const PathEntry& entry,
 // The other came into the ego's path (or the ego into the other's): the entrant is at fault when
 // it left less than the RSS safe distance; the one whose path it was when it then did not brake.
 std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorId other,
-                                  std::size_t k, const RssParameters& rss) {
+                                  BodySide ego_side, std::size_t k, const RssParameters& rss) {
   const std::string other_name = described(trace.actors[other]);
   const std::optional<PathEntry> into_ego =
       lasting_entry(trace, path_entry(trace, map, kEgo, other, k), k);
@@ -404,7 +408,11 @@ std::optional<Verdict> entry_rule(const Trace& trace, const RoadMap& map, ActorI
   const bool ego_unsafe = into_other && into_other->unsafe();
   if (!into_ego && !ego_unsafe) {
     if (trace.actors[other].kind != TraceActorKind::pedestrian) return std::nullopt;
-    return Verdict{Responsibility::other, "a pedestrian walked into the side of the moving ego"};
+    // Not in the ego's path before the impact: it walked into the ego's side, or into a front
+    // corner as it stepped out.
+    return Verdict{Responsibility::other, "a pedestrian walked into the " +
+                                              std::string(body_side_name(ego_side)) +
+                                              " of the moving ego"};
   }
   // Follows "..., and the ego " in a shared verdict.
   const std::string no_brake = "did not brake at " + format_number(rss.brake_min) + " m/s^2 once " +
@@ -549,7 +557,8 @@ Verdict decide(const Trace& trace, const RoadMap& map, const Collision& collisio
   const double angle = t.impact_angle;
   const bool crossing = angle >= kAlongRoad && angle <= 180 - kAlongRoad;
   if (o.kind == TraceActorKind::pedestrian || crossing)
-    if (std::optional<Verdict> verdict = entry_rule(trace, map, other, k, rss)) return *verdict;
+    if (std::optional<Verdict> verdict = entry_rule(trace, map, other, ego_side(collision), k, rss))
+      return *verdict;
   return rss_rule(trace, map, other, k, t, rss);
 }
 

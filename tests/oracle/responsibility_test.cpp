@@ -269,6 +269,19 @@ TEST(ResponsibilityTest, APedestrianWalkingIntoTheSideOfAStationaryEgoIsAtFault)
   EXPECT_EQ(r.reason, "a pedestrian walked into the right of the stopped ego");
 }
 
+TEST(ResponsibilityTest, APedestrianRunningIntoTheFrontCornerOfAMovingEgoIsNamedByTheSideHit) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10, TraceActorKind::pedestrian);
+  // A child runs north out of east_0 at 3 m/s into the front corner of an ego passing at 5 m/s in
+  // east_1: in the ego's path for less than 0.1 s before the contact.
+  move(trace, map, trace.actors[0], cruise_east(0, kEast1, 5));
+  move(trace, map, trace.actors[1], [](double t) { return State{7.9, -6 + 3 * t, 0, 3}; });
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason, "a pedestrian walked into the front of the moving ego");
+}
+
 TEST(ResponsibilityTest, EgoHittingAPedestrianItHadRoomToStopForIsAtFault) {
   const RoadMap map = builtin("straight");
   Trace trace = two_actor_trace(10, TraceActorKind::pedestrian);
