@@ -1,13 +1,15 @@
 // The reference driver: lateral control by pure pursuit on the route's path, longitudinal
 // control by the Intelligent Driver Model (Treiber, Hennecke, Helbing 2000) against every
 // constraint ahead (perceived objects, stop lines, crosswalks with pedestrians, the target),
-// overridden by full braking when the time to collision with an object gets short.
+// overridden by full braking when the time to collision with an object gets short, and capped by
+// the speed from which it can stop within its sight distance.
 #include "physics/ego/reference_driver.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "physics/ego/sight_distance.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/polygon.hpp"
 
@@ -40,11 +42,24 @@ double extent_across(const WorldObject& object, double relative_heading) {
 // At least extent_across and extent_along at any heading.
 double greatest_extent(const WorldObject& object) { return (object.length + object.width) / 2; }
 
+// s more a crossing pedestrian might take to reach the ego's path, or the ego to clear it, than
+// their speeds say: people hurry, hesitate and change their minds.
+constexpr double kCrossingMargin = 2.0;
+// m/s a pedestrian crossing the road may break into (a jog) when it sees a car coming.
+constexpr double kPedestrianHurry = 3.0;
+
 // s within which a vehicle moving towards the ego's path counts as in it.
 constexpr double kVehicleEntryTime = 1.0;
 // The longest time_to_enter that puts an object in the ego's path (collect_object_constraints).
 double longest_entry_time(const WorldObject& object) {
   return object.kind == TraceActorKind::pedestrian ? kPredictionTime + 2.0 : kVehicleEntryTime;
+}
+// The farthest an object can move sideways in that time (a pedestrian at least at a jog: the
+// crossing rule, add_crossing_pedestrian, heeds ones that could hurry into the path).
+double farthest_entry(const WorldObject& object) {
+  double speed = std::abs(object.speed);
+  if (object.kind == TraceActorKind::pedestrian) speed = std::max(speed, kPedestrianHurry);
+  return speed * longest_entry_time(object);
 }
 // m added to a bound before an object is rejected by it unlocated: above locate's 1e-6 for an
 // end point and the rounding of the bounding boxes, below anything that matters.
@@ -54,12 +69,18 @@ constexpr double kSurelyAside = 1e-3;
 
 ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
                                  const ActorClass& vehicle, bool route_ends_at_target,
-                                 const DriverSettings& settings)
+                                 const DriverSettings& settings, const PerceptionSettings& sensing)
     : map_(map),
       route_(route),
       vehicle_(vehicle),
       route_ends_at_target_(route_ends_at_target),
       settings_(settings),
+      sight_speed_(vehicle.max_deceleration > 0
+                       ? sight_speed(sensing, vehicle.length / 2,
+                                     settings.sight.deceleration > 0 ? settings.sight.deceleration
+                                                                     : vehicle.max_deceleration,
+                                     settings.sight)
+                       : std::numeric_limits<double>::infinity()),
       stop_sign_served_(route.features().size(), false) {
   // The speed the driver may have at each path vertex: the limit, the bend, and what braking
   // comfortably for the bends and limits further on allows (one backward pass).
@@ -206,11 +227,9 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
     // Too far aside to be in the path or to enter it in time, however it moves (below; off the
     // path, the ego's own lateral plan would shift it).
-    if (!overtake_.active &&
-        route_.surely_farther({object.x, object.y}, stretch,
-                              greatest_extent(object) + half_width +
-                                  std::abs(object.speed) * longest_entry_time(object) +
-                                  kSurelyAside))
+    if (!overtake_.active && route_.surely_farther({object.x, object.y}, stretch,
+                                                   greatest_extent(object) + half_width +
+                                                       farthest_entry(object) + kSurelyAside))
       continue;
     auto at = route_.locate({object.x, object.y}, stretch, horizon);
     // Beside or behind the ego's centre, or past the end of the route (where the ego stops).
@@ -233,7 +252,8 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     bool in_path = clearance <= 0;
     // A pedestrian standing beside the path is not about to enter it (what perception makes of
     // its speed and heading is noise).
-    if (!in_path && !standing && lateral_speed * lateral < 0) {
+    bool approaching = !in_path && !standing && lateral_speed * lateral < 0;
+    if (approaching) {
       // Moving towards the path: will it be there by the time the ego is?
       double time_to_enter = clearance / std::abs(lateral_speed);
       double time_to_arrive = gap / std::max(ego.speed, 1.0);
@@ -241,7 +261,11 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
       in_path = time_to_enter < std::min(window, kPredictionTime + (pedestrian ? 2.0 : 0.0));
       if (in_path && pedestrian) lead_speed = 0;  // it will stand in the way, not drive ahead
     }
-    if (!in_path) continue;
+    if (!in_path) {
+      if (approaching && pedestrian)
+        add_crossing_pedestrian(object, ego.speed, gap, clearance, lateral_speed, lead_speed);
+      continue;
+    }
     if (standing) held_by_standing_ = true;
     DriverReason reason = pedestrian ? DriverReason::pedestrian : DriverReason::lead;
     // Behind something it means to pass, the ego keeps room to pull out, as much as it still
@@ -253,6 +277,32 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
                      std::max(settings_.standstill_gap, settings_.overtaking.waiting_gap));
     constraints_.push_back({gap, clearance_kept, std::max(lead_speed, 0.0), true, reason});
   }
+}
+
+// A pedestrian on the carriageway walking towards the ego's path, not (yet) counted as in it:
+// the ego gets ready to stop before the point where it would cross the path, as a careful driver
+// slows for someone crossing the road ahead, unless the ego will be past that point before the
+// pedestrian can reach it. `gap` is from the ego's front to the pedestrian's near side along the
+// path, `clearance` sideways from the corridor, the speeds along and across the path.
+void ReferenceDriver::add_crossing_pedestrian(const WorldObject& object, double ego_speed,
+                                              double gap, double clearance, double lateral_speed,
+                                              double along_speed) {
+  // Slower across than a standing pedestrian seems to drift: walking along the road, not across.
+  if (std::abs(lateral_speed) < settings_.standing_speed) return;
+  // Where its line of walking meets the corridor, and how soon it could be there if it hurried.
+  double crossing_gap = gap + clearance * along_speed / std::abs(lateral_speed);
+  double hurried = kPedestrianHurry * std::abs(lateral_speed) / std::max(object.speed, 1e-6);
+  double time_to_enter = clearance / std::max(std::abs(lateral_speed), hurried);
+  if (crossing_gap <= 0) return;  // beside or behind the front: stopping cannot help
+  // The ego is past the crossing point (its rear, with a margin) before the pedestrian gets there.
+  double time_to_clear =
+      (crossing_gap + vehicle_.length + greatest_extent(object)) / std::max(ego_speed, 1.0);
+  if (time_to_enter > time_to_clear + kCrossingMargin) return;
+  // On the pavement the ego only heeds pedestrians about to enter its path (above).
+  auto lane = project_to_lane(map_, {object.x, object.y});
+  if (!lane || !lane->inside) return;
+  constraints_.push_back(
+      {crossing_gap, settings_.standstill_gap, 0, false, DriverReason::pedestrian});
 }
 
 void ReferenceDriver::collect_feature_constraints(const DriverInput& input, double front_s) {
@@ -392,6 +442,16 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   double a = settings_.comfortable_acceleration;
   double acceleration = a * (1 - fourth_power(ego.speed / desired));
   reason_ = creeping_ ? DriverReason::creeping : DriverReason::cruise;
+  if (sight_speed_ < desired) {
+    // What it can see caps the speed as a lower desired speed would; found above it (a scenario
+    // starting fast in fog), it slows firmly, not at IDM's full braking for v >> v0.
+    double sighted =
+        std::max(a * (1 - fourth_power(ego.speed / sight_speed_)), -settings_.sight_braking);
+    if (sighted < acceleration) {
+      acceleration = sighted;
+      reason_ = DriverReason::sight;
+    }
+  }
   for (const Constraint& constraint : constraints_) {
     double candidate = idm_acceleration(ego.speed, desired, constraint);
     if (candidate < acceleration) {

@@ -4,8 +4,10 @@
 // short time-to-collision, stops for red (and catchable yellow) lights, stops at stop signs and
 // then goes on, passes stopped or much slower vehicles, cyclists and obstacles when a lane beside
 // allows it (overtaking.hpp), yields to pedestrians on or walking into its path and in crosswalks
-// ahead but not to ones standing beside it, and stops at its target. It sees only what
-// perception gives it.
+// ahead but not to ones standing beside it, slows for pedestrians on the carriageway walking
+// towards its path, never drives faster than it can stop within what it can see in the weather
+// and light (sight_distance.hpp), and stops at its target. It sees only what perception gives
+// it.
 #pragma once
 
 #include <optional>
@@ -17,6 +19,7 @@
 #include "physics/ego/overtaking.hpp"
 #include "physics/ego/perception.hpp"
 #include "physics/ego/route_tracker.hpp"
+#include "physics/ego/sight_distance.hpp"
 
 namespace scenfuzz {
 
@@ -39,6 +42,9 @@ struct DriverSettings {
   double standing_speed = 0.4;     // m/s: a pedestrian slower than this (smoothed) is standing
   double pedestrian_patience = 5;  // s held by standing pedestrians before creeping on
   double creeping_speed = 1.5;     // m/s past standing pedestrians after that
+  SightSettings sight;             // the speed limit of what it can see
+  double sight_braking = 4.0;      // m/s^2 at most when it finds itself faster than that limit
+                                   // (starting in fog, say): firm, not full
   OvertakingSettings overtaking;
 };
 
@@ -61,12 +67,16 @@ enum class DriverReason {
   target,
   lane_change,  // waiting for a gap in the next lane
   creeping,     // past pedestrians that stood in its way longer than its patience
+  sight,        // no faster than it can stop within what it can see
 };
 
 class ReferenceDriver {
  public:
+  // `sensing` is its perception's settings in the scenario's weather and light (degraded): the
+  // ranges it can see to. The default, clear daylight.
   ReferenceDriver(const RoadMap& map, const RouteTracker& route, const ActorClass& vehicle,
-                  bool route_ends_at_target, const DriverSettings& settings = {});
+                  bool route_ends_at_target, const DriverSettings& settings = {},
+                  const PerceptionSettings& sensing = {});
 
   VehicleControl step(const DriverInput& input);
   DriverReason last_reason() const { return reason_; }
@@ -91,6 +101,8 @@ class ReferenceDriver {
   void collect_feature_constraints(const DriverInput& input, double front_s);
   void collect_lane_change_constraints(const DriverInput& input, double front_s);
   void add_road_end(double speed);
+  void add_crossing_pedestrian(const WorldObject& object, double ego_speed, double gap,
+                               double clearance, double lateral_speed, double along_speed);
   double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
 
   const RoadMap& map_;
@@ -98,6 +110,7 @@ class ReferenceDriver {
   ActorClass vehicle_;
   bool route_ends_at_target_;
   DriverSettings settings_;
+  double sight_speed_;  // m/s: it can stop within its sight distance from this speed
   std::vector<double> speed_envelope_;  // per path vertex: the speed limit and bends, braked back
   std::vector<Constraint> constraints_;
   std::vector<bool> stop_sign_served_;  // per route feature

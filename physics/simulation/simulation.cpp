@@ -273,7 +273,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                        sensing.pedestrian_range < options.perception.pedestrian_range};
   if (setup.ego_target) trace.ego_target = setup.ego_target->position;
   RouteTracker route(map, setup.ego_route, setup.speed_limits, options.driver.default_speed_limit);
-  ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver);
+  ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver,
+                         sensing);
   TrafficSignals signals(map, setup.lights);
   std::vector<LaneTracker> lanes(actor_count, LaneTracker(widest_half_lane(map)));
   std::vector<LaneFix> fixes(actor_count);

@@ -1,12 +1,15 @@
 // The reference driver on small scenarios where a real driver would not get stuck: it passes a
 // stopped car when the lane beside is free, passes a cyclist through a clear oncoming lane but
 // follows it while an oncoming car makes that unsafe, does not wait for a pedestrian standing at
-// the kerb, and still stops for one walking into its lane.
+// the kerb, and still stops for one walking into its lane; in fog it drives no faster than it can
+// stop within what it sees, and it slows for a pedestrian crossing the road towards its lane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 
+#include "physics/actors/actor_class.hpp"
+#include "physics/ego/sight_distance.hpp"
 #include "simulation_fixtures.hpp"
 
 namespace scenfuzz {
@@ -168,6 +171,74 @@ TEST(ReferenceDriverTest, StopsForAPedestrianWalkingIntoItsLane) {
   const TraceActor& ego = trace.actors[0];
   EXPECT_LT(ego.speed.back(), 0.2) << "the ego waits for the pedestrian in its lane";
   EXPECT_LT(largest(ego.x), 90.0);
+}
+
+// Thick fog by day: perception sees pedestrians to 12 m and vehicles to 22.5 m. A car stands in
+// the ego's only lane (a kerb each side: no passing), so it comes into sight at the edge of the
+// ego's sight range; the ego starts at 25 m/s on a 30 m/s road. It slows to the speed from which
+// it can stop within its sight and stops behind the car (without the limit it found the car about
+// 20 m ahead at 25 m/s and hit it).
+TEST(ReferenceDriverTest, InFogDrivesNoFasterThanItCanStopWithinItsSight) {
+  const std::string text =
+      "ego = AV((\"east_0\"->20, , 25), (\"east_0\"->400));\n"
+      "parked = Vehicle((\"east_0\"->250, , 0));\n"
+      "env = Environment(12:00, {fog: 1.0});\n"
+      "scenario = CreateScenario{load(\"straight?two_way=0&lanes=1&speed_limit=30\");\n"
+      "ego; {parked}; {}; {}; env;};\n";
+  auto run = simulate_text(text, lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_GT(closest_approach(trace, 0, 1), 0.5);
+  const TraceActor& ego = trace.actors[0];
+  EXPECT_LT(ego.speed.back(), 0.2) << "the ego waits behind the car";
+  const PerceptionSettings fog = degraded({}, {.fog = 1.0});
+  const double limit =
+      sight_speed(fog, ego.length / 2, actor_class(ActorCategory::car).max_deceleration);
+  EXPECT_LT(limit, 8.0);
+  // Slowing from 25 m/s at its firm 4 m/s^2 takes under 5 s, settling on the limit a little more.
+  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+    if (trace.time[i] >= 8.0) {
+      ASSERT_LE(ego.speed[i], limit * 1.02) << "at " << trace.time[i];
+    }
+  }
+}
+
+TEST(SightDistanceTest, TheSightSpeedStopsWithinTheSightDistance) {
+  const PerceptionSettings night_fog = degraded({}, {.fog = 0.7, .darkness = 1});
+  const SightSettings settings;
+  const double speed = sight_speed(night_fog, 2.5, 8.0, settings);
+  EXPECT_NEAR(stopping_distance(speed, settings.reaction_time, 8.0) + 2.5 + settings.object_extent +
+                  settings.margin,
+              sight_distance(night_fog), 1e-9);
+  EXPECT_EQ(speed_to_stop_within(0, 0.75, 8.0), 0);
+  EXPECT_EQ(sight_speed(degraded({}, {}), 2.5, 8.0, settings) > 29, true)
+      << "clear daylight: no limit below 29 m/s";
+}
+
+// Four lanes, clear daylight: a pedestrian on the carriageway (in west_1) walks slowly across
+// towards the ego's lane east_1. It needs some 10 s to reach the ego's path, longer than the ego
+// needs to get there, so the ego used to pass it at 13.9 m/s 3 m away; now it slows so that it
+// could stop before the pedestrian's crossing point, should the pedestrian hurry.
+TEST(ReferenceDriverTest, SlowsForAPedestrianOnTheRoadWalkingTowardsItsLane) {
+  auto run = simulate_text(
+      scenario("straight", "", "ped", "",
+               "ego = AV((\"east_1\"->20, , 13.9), (\"east_1\"->400));\n"
+               "ped = Pedestrian(((120, 6.0), -90 deg, 0.6), , ((120, -8.5), -90 deg, 0));\n"),
+      lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  const TraceActor& ego = trace.actors[0];
+  const TraceActor& ped = trace.actors[1];
+  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+    const double front = ego.x[i] + ego.length / 2;
+    if (front > ped.x[i] - 10 && ego.x[i] < ped.x[i] && ped.y[i] > -0.75) {
+      ASSERT_LT(ego.speed[i], 8.0)
+          << "at " << trace.time[i] << " s, the pedestrian at y " << ped.y[i];
+    }
+  }
 }
 
 }  // namespace
