@@ -75,12 +75,10 @@ ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
       vehicle_(vehicle),
       route_ends_at_target_(route_ends_at_target),
       settings_(settings),
-      sight_speed_(vehicle.max_deceleration > 0
-                       ? sight_speed(sensing, vehicle.length / 2,
-                                     settings.sight.deceleration > 0 ? settings.sight.deceleration
-                                                                     : vehicle.max_deceleration,
-                                     settings.sight)
-                       : std::numeric_limits<double>::infinity()),
+      sight_speed_(
+          vehicle.max_deceleration > 0
+              ? sight_speed(sensing, vehicle.length / 2, vehicle.max_deceleration, settings.sight)
+              : std::numeric_limits<double>::infinity()),
       stop_sign_served_(route.features().size(), false) {
   // The speed the driver may have at each path vertex: the limit, the bend, and what braking
   // comfortably for the bends and limits further on allows (one backward pass).

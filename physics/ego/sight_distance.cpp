@@ -26,10 +26,19 @@ double sight_distance(const PerceptionSettings& sensing) {
   return std::min(sensing.vehicle_range, sensing.pedestrian_range);
 }
 
-double sight_speed(const PerceptionSettings& sensing, double front_overhang, double deceleration,
-                   const SightSettings& settings) {
+double planned_deceleration(const PerceptionSettings& sensing, double max_deceleration,
+                            const SightSettings& settings) {
+  SCENFUZZ_DEMAND(max_deceleration > 0 && settings.clear_sight > 0);
+  const double comfortable = std::min(settings.comfortable_deceleration, max_deceleration);
+  const double fraction = std::clamp(sight_distance(sensing) / settings.clear_sight, 0.0, 1.0);
+  return comfortable + (max_deceleration - comfortable) * fraction * fraction;
+}
+
+double sight_speed(const PerceptionSettings& sensing, double front_overhang,
+                   double max_deceleration, const SightSettings& settings) {
   const double room =
       sight_distance(sensing) - front_overhang - settings.object_extent - settings.margin;
+  const double deceleration = planned_deceleration(sensing, max_deceleration, settings);
   return std::max(settings.minimum_speed,
                   speed_to_stop_within(room, settings.reaction_time, deceleration));
 }

@@ -208,9 +208,19 @@ TEST(SightDistanceTest, TheSightSpeedStopsWithinTheSightDistance) {
   const PerceptionSettings night_fog = degraded({}, {.fog = 0.7, .darkness = 1});
   const SightSettings settings;
   const double speed = sight_speed(night_fog, 2.5, 8.0, settings);
-  EXPECT_NEAR(stopping_distance(speed, settings.reaction_time, 8.0) + 2.5 + settings.object_extent +
-                  settings.margin,
+  const double planned = planned_deceleration(night_fog, 8.0, settings);
+  EXPECT_NEAR(stopping_distance(speed, settings.reaction_time, planned) + 2.5 +
+                  settings.object_extent + settings.margin,
               sight_distance(night_fog), 1e-9);
+  // The poorer the sight, the gentler the braking planned: from the comfortable 2.5 m/s^2 with
+  // no sight to full braking in clear daylight, continuously.
+  EXPECT_NEAR(planned_deceleration(degraded({}, {.fog = 1.0, .darkness = 1}), 8.0, settings), 2.5,
+              0.1);
+  EXPECT_DOUBLE_EQ(planned_deceleration(degraded({}, {}), 8.0, settings), 8.0);
+  PerceptionSettings almost_clear = degraded({}, {});
+  almost_clear.pedestrian_range -= 0.01;
+  EXPECT_NEAR(sight_speed(almost_clear, 2.5, 8.0, settings),
+              sight_speed(degraded({}, {}), 2.5, 8.0, settings), 0.01);
   EXPECT_EQ(speed_to_stop_within(0, 0.75, 8.0), 0);
   EXPECT_EQ(sight_speed(degraded({}, {}), 2.5, 8.0, settings) > 29, true)
       << "clear daylight: no limit below 29 m/s";
