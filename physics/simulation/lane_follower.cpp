@@ -235,6 +235,49 @@ std::size_t LaneFollower::first_within(MapPoint point, double reach) const {
   return first_segment_reaching(path_, segment_, s_ + clear);
 }
 
+// first_within's answer, or an earlier segment (so the same search result), found by walking back
+// from `segment`, which is within `reach` of `point`: it can come within reach, so the first that
+// can is no later. Near the point the walk is short; a long one ends in first_within's search.
+std::size_t LaneFollower::first_within_from(MapPoint point, double reach,
+                                            std::size_t segment) const {
+  const double dx = point.x - state_.x, dy = point.y - state_.y;
+  constexpr double kMargin = 1e-3;  // as first_within's
+  const double clear = std::sqrt(dx * dx + dy * dy) - reach - kMargin;
+  const auto& arc = path_.arc_lengths();
+  if (!(clear > s_ - arc[segment_])) return segment_;
+  const double target = s_ + clear;
+  constexpr int kWalk = 8;
+  std::size_t first = segment;
+  for (int step = 0; first > segment_ && arc[first] >= target; ++step) {
+    if (step == kWalk) return std::min(segment, first_segment_reaching(path_, segment_, target));
+    --first;  // segment first - 1 ends at or beyond the target: it can come within reach too
+  }
+  return first;
+}
+
+std::size_t LaneFollower::descend(MapPoint point, std::size_t segment, double until) const {
+  constexpr int kWalk = 16;  // segments either way; farther moves keep a farther seed
+  const auto& arc = path_.arc_lengths();
+  const std::size_t count = path_.segment_count();
+  segment = std::min(segment, count - 1);
+  double best = frames_.distance_squared(path_, point, segment);
+  const std::size_t start = segment;
+  for (int step = 0; step < kWalk && segment + 1 < count && arc[segment + 1] <= until; ++step) {
+    const double next = frames_.distance_squared(path_, point, segment + 1);
+    if (!(next < best)) break;
+    best = next;
+    ++segment;
+  }
+  if (segment != start) return segment;
+  for (int step = 0; step < kWalk && segment > segment_; ++step) {
+    const double previous = frames_.distance_squared(path_, point, segment - 1);
+    if (!(previous < best)) break;
+    best = previous;
+    --segment;
+  }
+  return segment;
+}
+
 // Whether anything in the path within `reach` of `point` (reaching `extent` along it either way)
 // lies at a gap of at least `gap`. The path point found is ahead at s_ + d with d at least the
 // point's straight-line distance less the reach (chord <= arc), so the gap in_path computes is at
@@ -249,7 +292,7 @@ bool LaneFollower::surely_no_nearer(MapPoint point, double reach, double extent,
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
 // ahead. A vehicle coming the other way counts as standing.
 std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& world,
-                                                        std::uint32_t k) const {
+                                                        std::uint32_t k) {
   if (surely_not_in_path(world, k)) return std::nullopt;
   const double lookahead =
       std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
@@ -266,6 +309,7 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
                     ? world.predicted[k]
                     : predicted_point(other, tau);
   const MapPoint points[] = {{other.x, other.y}, predicted};
+  if (hints_.size() < 2 * world.states.size()) hints_.resize(2 * world.states.size(), 0);
   const double half_width = body_.width / 2;
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
@@ -276,9 +320,20 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
     if (best &&
         surely_no_nearer(points[which], reach, (world.lengths[k] + world.widths[k]) / 2, best->gap))
       break;
+    const double until = s_ + lookahead;
+    std::uint32_t& hint = hints_[2 * std::size_t{k} + static_cast<std::size_t>(which)];
+    double known = kInfinity;
+    std::size_t first = 0;
+    if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
+      const std::size_t near = descend(points[which], hint - 1, until);
+      known = std::sqrt(frames_.distance_squared(path_, points[which], near));
+      first = first_within_from(points[which], std::min(reach, known), near);
+    } else {
+      first = first_within(points[which], reach);
+    }
     PolylineProjection nearest =
-        nearest_on_path(path_, boxes_, frames_, points[which], first_within(points[which], reach),
-                        s_ + lookahead, reach);
+        nearest_on_path(path_, boxes_, frames_, points[which], first, until, reach, known);
+    hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;
     if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
     double relative = angle_difference(other.heading, headings_[nearest.segment]);
     double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
