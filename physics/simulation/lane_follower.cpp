@@ -255,29 +255,6 @@ std::size_t LaneFollower::first_within_from(MapPoint point, double reach,
   return first;
 }
 
-std::size_t LaneFollower::descend(MapPoint point, std::size_t segment, double until) const {
-  constexpr int kWalk = 16;  // segments either way; farther moves keep a farther seed
-  const auto& arc = path_.arc_lengths();
-  const std::size_t count = path_.segment_count();
-  segment = std::min(segment, count - 1);
-  double best = frames_.distance_squared(path_, point, segment);
-  const std::size_t start = segment;
-  for (int step = 0; step < kWalk && segment + 1 < count && arc[segment + 1] <= until; ++step) {
-    const double next = frames_.distance_squared(path_, point, segment + 1);
-    if (!(next < best)) break;
-    best = next;
-    ++segment;
-  }
-  if (segment != start) return segment;
-  for (int step = 0; step < kWalk && segment > segment_; ++step) {
-    const double previous = frames_.distance_squared(path_, point, segment - 1);
-    if (!(previous < best)) break;
-    best = previous;
-    --segment;
-  }
-  return segment;
-}
-
 // Whether anything in the path within `reach` of `point` (reaching `extent` along it either way)
 // lies at a gap of at least `gap`. The path point found is ahead at s_ + d with d at least the
 // point's straight-line distance less the reach (chord <= arc), so the gap in_path computes is at
@@ -325,7 +302,9 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
     double known = kInfinity;
     std::size_t first = 0;
     if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
-      const std::size_t near = descend(points[which], hint - 1, until);
+      // The segment nearest at the last look, as it is: walking on to a nearer neighbour cost
+      // more than the tighter bound saved (measured).
+      const std::size_t near = hint - 1;
       known = std::sqrt(frames_.distance_squared(path_, points[which], near));
       first = first_within_from(points[which], std::min(reach, known), near);
     } else {

@@ -95,9 +95,6 @@ class LaneFollower {
   std::size_t first_within(MapPoint point, double reach) const;
   // The same, walking back from `segment`, a segment within `reach` of the point.
   std::size_t first_within_from(MapPoint point, double reach, std::size_t segment) const;
-  // From `segment` (of the stretch up to arc length `until`), on to neighbours nearer to `point`
-  // while there are: where an actor's point was at the last look, moved to where it is now.
-  std::size_t descend(MapPoint point, std::size_t segment, double until) const;
   bool surely_no_nearer(MapPoint point, double reach, double extent, double gap) const;
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
@@ -125,9 +122,9 @@ class LaneFollower {
   // segment nearest to that point when in_path last looked, or 0. A search seeded with a nearby
   // segment's distance skips most boxes (nearest_on_path's `known`); its answer is the same.
   std::vector<std::uint32_t> hints_;
-  double next_scan_ = 0;                   // s: when every actor is looked at again
-  bool scanning_ = false;                  // this step is a scan
-  std::int64_t leader_ = -1;               // the actor followed between scans, or -1
+  double next_scan_ = 0;      // s: when every actor is looked at again
+  bool scanning_ = false;     // this step is a scan
+  std::int64_t leader_ = -1;  // the actor followed between scans, or -1
   ActorClass body_;
   double desired_speed_ = 0;
   bool leaves_at_end_ = false;

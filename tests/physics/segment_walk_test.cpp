@@ -76,6 +76,29 @@ TEST(PolylineBoxes, BoxDistanceIsAtMostEverySegmentsOfItsRun) {
   EXPECT_GT(outside, 1000);  // the bound is not trivially 0
 }
 
+// Group rejection is exact only if a group's box is never farther than one of its boxes, not
+// even by rounding: checked as an inequality of the computed squares, with no tolerance.
+TEST(PolylineBoxes, AGroupIsNoFartherThanAnyOfItsBoxesExactly) {
+  std::mt19937_64 random(31);
+  Polyline path = wiggly_path(random, 700);
+  PolylineBoxes boxes(path);
+  constexpr std::size_t group = PolylineBoxes::kGroup;
+  std::uniform_int_distribution<std::size_t> vertex(0, path.points().size() - 1);
+  std::uniform_real_distribution<double> offset(-40, 40);
+  int apart = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const MapPoint& near_vertex = path.points()[vertex(random)];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    for (std::size_t box = 0; box < boxes.size(); ++box) {
+      const double group_squared = boxes.group_distance_squared(box / group, point);
+      ASSERT_LE(group_squared, boxes.distance_squared(box, point))
+          << "point " << i << " box " << box;
+      apart += group_squared > 0;
+    }
+  }
+  EXPECT_GT(apart, 10000);  // the bound is not trivially 0
+}
+
 TEST(PolylineBoxes, ABoxHoldsItsRunsVertices) {
   std::vector<MapPoint> straight;
   for (int i = 0; i <= 20; ++i) straight.push_back({static_cast<double>(i), 0.5 * i});
