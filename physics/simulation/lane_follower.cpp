@@ -235,24 +235,16 @@ std::size_t LaneFollower::first_within(MapPoint point, double reach) const {
   return first_segment_reaching(path_, segment_, s_ + clear);
 }
 
-// first_within's answer, or an earlier segment (so the same search result), found by walking back
-// from `segment`, which is within `reach` of `point`: it can come within reach, so the first that
-// can is no later. Near the point the walk is short; a long one ends in first_within's search.
-std::size_t LaneFollower::first_within_from(MapPoint point, double reach,
-                                            std::size_t segment) const {
+// first_within's answer exactly, walking from segment `from` (where the answer was at the last
+// look, or the segment nearest then) instead of galloping from this follower's: between looks it
+// moves by a few segments. A long walk ends in first_within's search.
+std::size_t LaneFollower::first_within_from(MapPoint point, double reach, std::size_t from) const {
   const double dx = point.x - state_.x, dy = point.y - state_.y;
   constexpr double kMargin = 1e-3;  // as first_within's
   const double clear = std::sqrt(dx * dx + dy * dy) - reach - kMargin;
   const auto& arc = path_.arc_lengths();
   if (!(clear > s_ - arc[segment_])) return segment_;
-  const double target = s_ + clear;
-  constexpr int kWalk = 8;
-  std::size_t first = segment;
-  for (int step = 0; first > segment_ && arc[first] >= target; ++step) {
-    if (step == kWalk) return std::min(segment, first_segment_reaching(path_, segment_, target));
-    --first;  // segment first - 1 ends at or beyond the target: it can come within reach too
-  }
-  return first;
+  return first_segment_reaching_from(path_, segment_, s_ + clear, from);
 }
 
 // Whether anything in the path within `reach` of `point` (reaching `extent` along it either way)
@@ -286,7 +278,10 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
                     ? world.predicted[k]
                     : predicted_point(other, tau);
   const MapPoint points[] = {{other.x, other.y}, predicted};
-  if (hints_.size() < 2 * world.states.size()) hints_.resize(2 * world.states.size(), 0);
+  if (hints_.size() < 2 * world.states.size()) {
+    hints_.resize(2 * world.states.size(), 0);
+    starts_.resize(2 * world.states.size(), 0);
+  }
   const double half_width = body_.width / 2;
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
@@ -298,7 +293,9 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
         surely_no_nearer(points[which], reach, (world.lengths[k] + world.widths[k]) / 2, best->gap))
       break;
     const double until = s_ + lookahead;
-    std::uint32_t& hint = hints_[2 * std::size_t{k} + static_cast<std::size_t>(which)];
+    const std::size_t slot = 2 * std::size_t{k} + static_cast<std::size_t>(which);
+    std::uint32_t& hint = hints_[slot];
+    std::uint32_t& start = starts_[slot];
     double known = kInfinity;
     std::size_t first = 0;
     if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
@@ -307,9 +304,12 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
       const std::size_t near = hint - 1;
       known = std::sqrt(frames_.distance_squared(path_, points[which], near));
       first = first_within_from(points[which], std::min(reach, known), near);
+    } else if (start != 0) {
+      first = first_within_from(points[which], reach, start - 1);
     } else {
       first = first_within(points[which], reach);
     }
+    start = static_cast<std::uint32_t>(first + 1);
     PolylineProjection nearest =
         nearest_on_path(path_, boxes_, frames_, points[which], first, until, reach, known);
     hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;

@@ -53,6 +53,29 @@ TEST(SegmentWalk, FirstSegmentReachingIsTheLinearScan) {
     }
 }
 
+// Walking from where the answer was at the last look must give the search's answer, from any
+// start: near the answer, far from it (the walk gives up and searches), before the first segment
+// allowed, past the end.
+TEST(SegmentWalk, FirstSegmentReachingFromAnyStartIsTheSearchsAnswer) {
+  std::mt19937_64 random(37);
+  Polyline path = wiggly_path(random, 300);
+  const auto& arc = path.arc_lengths();
+  std::uniform_real_distribution<double> target(-5, path.length() + 20);
+  std::uniform_int_distribution<std::size_t> anywhere(0, path.segment_count() + 3);
+  std::uniform_int_distribution<int> nearby(-6, 6);
+  for (std::size_t start = 0; start < path.segment_count(); start += 5)
+    for (int i = 0; i < 60; ++i) {
+      const double s = i == 0 ? arc[start + 1] : target(random);
+      const std::size_t expected = first_segment_reaching(path, start, s);
+      const auto near = static_cast<std::ptrdiff_t>(expected) + nearby(random);
+      for (std::size_t from :
+           {anywhere(random), static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, near)), start,
+            std::size_t{0}})
+        ASSERT_EQ(first_segment_reaching_from(path, start, s, from), expected)
+            << start << " " << s << " from " << from;
+    }
+}
+
 TEST(PolylineBoxes, BoxDistanceIsAtMostEverySegmentsOfItsRun) {
   std::mt19937_64 random(13);
   Polyline path = wiggly_path(random, 150);
