@@ -132,8 +132,18 @@ bool RouteTracker::surely_farther(MapPoint point, PathWindow window, double dist
   if (empty() || !(distance >= 0)) return false;
   const double squared = distance * distance;
   constexpr std::size_t run = PolylineBoxes::kRun;
-  for (std::size_t box = window.first / run; box <= window.last / run && box < boxes_.size(); ++box)
+  constexpr std::size_t group = PolylineBoxes::kGroup;
+  const std::size_t last = std::min(window.last / run, boxes_.size() - 1);
+  for (std::size_t box = window.first / run; box <= last; ++box) {
+    // A group's box is no farther than any of its boxes (exactly): when it is farther, so is
+    // each of them, and the group is passed over at once.
+    if ((box % group == 0 || box == window.first / run) &&
+        boxes_.group_distance_squared(box / group, point) > squared) {
+      box = (box / group + 1) * group - 1;
+      continue;
+    }
     if (!(boxes_.distance_squared(box, point) > squared)) return false;
+  }
   return true;
 }
 

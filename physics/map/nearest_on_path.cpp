@@ -17,16 +17,26 @@ constexpr double kRoundingMargin = 1e-6;
 
 PolylineProjection nearest_on_path(const Polyline& path, const PolylineBoxes& boxes,
                                    const SegmentFrames& frames, MapPoint point, std::size_t first,
-                                   double until, double reach) {
+                                   double until, double reach, double known) {
   const auto& arc = path.arc_lengths();
   const std::size_t count = path.segment_count();
   constexpr std::size_t run = PolylineBoxes::kRun;
+  constexpr std::size_t group = PolylineBoxes::kGroup;
   std::size_t best = count;
   double best_squared = kInfinity, best_distance = kInfinity;
-  // A box farther than this holds no segment within reach, nor one nearer than the best found.
-  double bound = reach + kRoundingMargin;
+  // A box farther than this holds no segment within reach, nor one nearer than the best found
+  // (or than the known segment: the nearest is no farther than that one).
+  double bound = std::min(reach, known) + kRoundingMargin;
   double bound_squared = bound * bound;
   for (std::size_t box = first / run; box < boxes.size() && arc[box * run] <= until; ++box) {
+    // At a group's first box (or the stretch's), the whole group may be out of the bound: its
+    // box is no farther than any of its boxes, so each of them would be skipped below.
+    if (box % group == 0 || box == first / run) {
+      if (boxes.group_distance_squared(box / group, point) > bound_squared) {
+        box = (box / group + 1) * group - 1;
+        continue;
+      }
+    }
     if (boxes.distance_squared(box, point) > bound_squared) continue;
     const std::size_t end = std::min(box * run + run, count);
     for (std::size_t seg = std::max(first, box * run); seg < end && arc[seg] <= until; ++seg) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 
 #include "physics/map/map_point.hpp"
 #include "physics/map/polyline.hpp"
@@ -17,8 +18,13 @@ namespace scenfuzz {
 // the projection onto the nearest to `point` (SegmentFrames::project's, bit for bit; of equally
 // near segments the first), when its distance is at most `reach`; otherwise a projection whose
 // distance is infinite. `boxes` and `frames` are those of `path`.
+//
+// `known`, when finite, must be a distance from `point` to some segment of that stretch (or more):
+// a caller that knows where the point was last (a segment near it) passes that segment's
+// distance, and boxes farther than it are skipped from the start. The answer is the same.
 PolylineProjection nearest_on_path(const Polyline& path, const PolylineBoxes& boxes,
                                    const SegmentFrames& frames, MapPoint point, std::size_t first,
-                                   double until, double reach);
+                                   double until, double reach,
+                                   double known = std::numeric_limits<double>::infinity());
 
 }  // namespace scenfuzz

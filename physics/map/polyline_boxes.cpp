@@ -14,6 +14,15 @@ PolylineBoxes::PolylineBoxes(const Polyline& path) {
     }
     boxes_.push_back(box);
   }
+  for (std::size_t start = 0; start < boxes_.size(); start += kGroup) {
+    Box group = boxes_[start];
+    for (std::size_t k = start + 1; k < std::min(start + kGroup, boxes_.size()); ++k) {
+      group.low = {std::min(group.low.x, boxes_[k].low.x), std::min(group.low.y, boxes_[k].low.y)};
+      group.high = {std::max(group.high.x, boxes_[k].high.x),
+                    std::max(group.high.y, boxes_[k].high.y)};
+    }
+    groups_.push_back(group);
+  }
 }
 
 }  // namespace scenfuzz

@@ -1,6 +1,8 @@
 // Axis-aligned bounding boxes of runs of a polyline's segments, for rejection tests that are
 // exact: a point farther from a run's box than some distance is farther than that from every
-// segment of the run, so none of them needs projecting to know it is out of reach.
+// segment of the run, so none of them needs projecting to know it is out of reach. Groups of runs
+// have boxes too (each the smallest holding its runs' boxes), so that a long stretch far from the
+// point is ruled out a group at a time.
 #pragma once
 
 #include <algorithm>
@@ -16,6 +18,8 @@ class PolylineBoxes {
  public:
   // Segments per box: runs of a few metres on paths sampled every metre or so.
   static constexpr std::size_t kRun = 8;
+  // Boxes per group: group g holds boxes g * kGroup ... g * kGroup + kGroup - 1.
+  static constexpr std::size_t kGroup = 8;
 
   PolylineBoxes() = default;
   explicit PolylineBoxes(const Polyline& path);
@@ -28,17 +32,27 @@ class PolylineBoxes {
   // to any of the segments box * kRun ... box * kRun + kRun - 1 (up to rounding, about 1e-12 of
   // the coordinates).
   double distance_squared(std::size_t box, MapPoint point) const {
-    const Box& b = boxes_[box];
-    const double dx = std::max({b.low.x - point.x, 0.0, point.x - b.high.x});
-    const double dy = std::max({b.low.y - point.y, 0.0, point.y - b.high.y});
-    return dx * dx + dy * dy;
+    return box_distance_squared(boxes_[box], point);
+  }
+
+  // The squared distance from `point` to group `group`'s box: at most distance_squared(box,
+  // point) of each of its boxes, exactly (the group's box holds theirs, and every operation on
+  // the way is monotone under rounding), so a group farther than a bound has no box within it.
+  double group_distance_squared(std::size_t group, MapPoint point) const {
+    return box_distance_squared(groups_[group], point);
   }
 
  private:
   struct Box {
     MapPoint low, high;
   };
-  std::vector<Box> boxes_;  // box k holds segments k * kRun .. k * kRun + kRun - 1
+  static double box_distance_squared(const Box& b, MapPoint point) {
+    const double dx = std::max({b.low.x - point.x, 0.0, point.x - b.high.x});
+    const double dy = std::max({b.low.y - point.y, 0.0, point.y - b.high.y});
+    return dx * dx + dy * dy;
+  }
+  std::vector<Box> boxes_;   // box k holds segments k * kRun .. k * kRun + kRun - 1
+  std::vector<Box> groups_;  // group g holds boxes g * kGroup .. g * kGroup + kGroup - 1
 };
 
 }  // namespace scenfuzz

@@ -39,4 +39,26 @@ inline std::size_t first_segment_reaching(const Polyline& path, std::size_t segm
   return static_cast<std::size_t>(end - arc.begin()) - 1;
 }
 
+// first_segment_reaching(path, segment, s), walking from segment `from` (any index; cheap when
+// the answer is a few segments from it, as between two looks at a moving point). After `limit`
+// steps either way it searches as first_segment_reaching does.
+inline std::size_t first_segment_reaching_from(const Polyline& path, std::size_t segment, double s,
+                                               std::size_t from, int limit = 8) {
+  if (s != s) return first_segment_reaching(path, segment, s);  // NaN: whatever that makes of it
+  const auto& arc = path.arc_lengths();
+  const std::size_t count = path.segment_count();
+  // The answer is the least j from segment on with arc[j + 1] >= s (count when none), or segment
+  // itself; arc lengths do not decrease.
+  std::size_t first = std::clamp(from, segment, std::max(segment, count));
+  for (int step = 0; first > segment && arc[first] >= s; ++step) {
+    if (step == limit) return first_segment_reaching(path, segment, s);
+    --first;  // segment first - 1 reaches s too
+  }
+  for (int step = 0; first < count && arc[first + 1] < s; ++step) {
+    if (step == limit) return first_segment_reaching(path, segment, s);
+    ++first;  // segment first ends before s
+  }
+  return first;
+}
+
 }  // namespace scenfuzz

@@ -235,6 +235,18 @@ std::size_t LaneFollower::first_within(MapPoint point, double reach) const {
   return first_segment_reaching(path_, segment_, s_ + clear);
 }
 
+// first_within's answer exactly, walking from segment `from` (where the answer was at the last
+// look, or the segment nearest then) instead of galloping from this follower's: between looks it
+// moves by a few segments. A long walk ends in first_within's search.
+std::size_t LaneFollower::first_within_from(MapPoint point, double reach, std::size_t from) const {
+  const double dx = point.x - state_.x, dy = point.y - state_.y;
+  constexpr double kMargin = 1e-3;  // as first_within's
+  const double clear = std::sqrt(dx * dx + dy * dy) - reach - kMargin;
+  const auto& arc = path_.arc_lengths();
+  if (!(clear > s_ - arc[segment_])) return segment_;
+  return first_segment_reaching_from(path_, segment_, s_ + clear, from);
+}
+
 // Whether anything in the path within `reach` of `point` (reaching `extent` along it either way)
 // lies at a gap of at least `gap`. The path point found is ahead at s_ + d with d at least the
 // point's straight-line distance less the reach (chord <= arc), so the gap in_path computes is at
@@ -249,7 +261,7 @@ bool LaneFollower::surely_no_nearer(MapPoint point, double reach, double extent,
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
 // ahead. A vehicle coming the other way counts as standing.
 std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& world,
-                                                        std::uint32_t k) const {
+                                                        std::uint32_t k) {
   if (surely_not_in_path(world, k)) return std::nullopt;
   const double lookahead =
       std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
@@ -266,6 +278,10 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
                     ? world.predicted[k]
                     : predicted_point(other, tau);
   const MapPoint points[] = {{other.x, other.y}, predicted};
+  if (hints_.size() < 2 * world.states.size()) {
+    hints_.resize(2 * world.states.size(), 0);
+    starts_.resize(2 * world.states.size(), 0);
+  }
   const double half_width = body_.width / 2;
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
@@ -276,9 +292,27 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
     if (best &&
         surely_no_nearer(points[which], reach, (world.lengths[k] + world.widths[k]) / 2, best->gap))
       break;
+    const double until = s_ + lookahead;
+    const std::size_t slot = 2 * std::size_t{k} + static_cast<std::size_t>(which);
+    std::uint32_t& hint = hints_[slot];
+    std::uint32_t& start = starts_[slot];
+    double known = kInfinity;
+    std::size_t first = 0;
+    if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
+      // The segment nearest at the last look, as it is: walking on to a nearer neighbour cost
+      // more than the tighter bound saved (measured).
+      const std::size_t near = hint - 1;
+      known = std::sqrt(frames_.distance_squared(path_, points[which], near));
+      first = first_within_from(points[which], std::min(reach, known), near);
+    } else if (start != 0) {
+      first = first_within_from(points[which], reach, start - 1);
+    } else {
+      first = first_within(points[which], reach);
+    }
+    start = static_cast<std::uint32_t>(first + 1);
     PolylineProjection nearest =
-        nearest_on_path(path_, boxes_, frames_, points[which], first_within(points[which], reach),
-                        s_ + lookahead, reach);
+        nearest_on_path(path_, boxes_, frames_, points[which], first, until, reach, known);
+    hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;
     if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
     double relative = angle_difference(other.heading, headings_[nearest.segment]);
     double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +

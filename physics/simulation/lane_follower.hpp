@@ -88,11 +88,13 @@ class LaneFollower {
   double bend_acceleration() const;
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
   bool near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const;
-  std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k) const;
+  std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
   // in_path's first tests, inlined into the scan: whether actor k is surely not in the path
   // (too far off, or behind), which is the answer for most actors at most scans.
   bool surely_not_in_path(const WorldSnapshot& world, std::uint32_t k) const;
   std::size_t first_within(MapPoint point, double reach) const;
+  // The same, walking from segment `from` (cheap when the answer is near it).
+  std::size_t first_within_from(MapPoint point, double reach, std::size_t from) const;
   bool surely_no_nearer(MapPoint point, double reach, double extent, double gap) const;
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
@@ -116,9 +118,14 @@ class LaneFollower {
   std::size_t next_feature_ = 0;           // the first not yet passed
   std::vector<Stop> stops_;                // this step's, kept to reuse its memory
   std::vector<std::uint32_t> candidates_;  // the actors a scan looks at (near_path)
-  double next_scan_ = 0;                   // s: when every actor is looked at again
-  bool scanning_ = false;                  // this step is a scan
-  std::int64_t leader_ = -1;               // the actor followed between scans, or -1
+  // For actor k, hints_[2k] (where it is) and hints_[2k + 1] (where it will be): 1 + the path
+  // segment nearest to that point when in_path last looked, or 0. A search seeded with a nearby
+  // segment's distance skips most boxes (nearest_on_path's `known`); its answer is the same.
+  std::vector<std::uint32_t> hints_;
+  std::vector<std::uint32_t> starts_;  // the same slots: 1 + first_within's answer then, or 0
+  double next_scan_ = 0;               // s: when every actor is looked at again
+  bool scanning_ = false;              // this step is a scan
+  std::int64_t leader_ = -1;           // the actor followed between scans, or -1
   ActorClass body_;
   double desired_speed_ = 0;
   bool leaves_at_end_ = false;

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace scenfuzz {
 namespace {
@@ -49,23 +52,35 @@ bool surely_farther(const Polyline& line, std::size_t k, MapPoint point, double 
 
 // The nearest segment among first..last, the first of them on a tie. Segments surely farther
 // than one already projected are skipped: they are not the nearest, so skipping them cannot change
-// which one is, and the segment the actor was on last step is usually still the nearest.
+// which one is, and the segment the actor was on last step is usually still the nearest. Starting
+// from that one, the best so far is simply compared with each candidate (distance, then index).
 PolylineProjection nearest_in_window(const Polyline& centre, std::size_t first, std::size_t last,
                                      std::size_t hint, MapPoint point) {
-  const PolylineProjection at_hint = centre.project_to_segment(point, hint);
-  std::optional<PolylineProjection> best;
+  PolylineProjection best = centre.project_to_segment(point, hint);
+  // Not a number (a point that is not one): every comparison fails, and the first segment of the
+  // window is the answer, as in a scan from it that keeps the first.
+  if (best.distance != best.distance)
+    return first == hint ? best : centre.project_to_segment(point, first);
   for (std::size_t k = first; k <= last; ++k) {
-    const double known = best ? std::min(best->distance, at_hint.distance) : at_hint.distance;
-    if (k != hint && surely_farther(centre, k, point, known)) continue;
-    const PolylineProjection candidate = k == hint ? at_hint : centre.project_to_segment(point, k);
-    if (!best || candidate.distance < best->distance) best = candidate;
+    if (k == hint || surely_farther(centre, k, point, best.distance)) continue;
+    const PolylineProjection candidate = centre.project_to_segment(point, k);
+    if (candidate.distance < best.distance ||
+        (candidate.distance == best.distance && k < best.segment))
+      best = candidate;
   }
-  return *best;
+  return best;
 }
 
+// Far above width_at's rounding (an interpolation between two samples lies within a few ulps of
+// the nearer one's range), far below anything that matters.
+constexpr double kWidthMargin = 1e-9;
+
 // Looks for `point` on `lane` among the segments around `segment` (the whole lane when the
-// nearest is at the edge of that window).
-LaneLook look_on(const RoadMap& map, LaneIndex lane, std::size_t segment, MapPoint point) {
+// nearest is at the edge of that window). `narrowest`, when given, holds the lane's narrowest
+// width on each side (left, right): a point nearer the centre line than that is within the width
+// wherever it is along the lane, and the width need not be looked up.
+LaneLook look_on(const RoadMap& map, LaneIndex lane, std::size_t segment, MapPoint point,
+                 const std::pair<double, double>* narrowest = nullptr) {
   const Polyline& centre = map.lane(lane).centre_line;
   std::size_t first = segment > kSearchSegments ? segment - kSearchSegments : 0;
   std::size_t last = std::min(segment + kSearchSegments, centre.segment_count() - 1);
@@ -78,11 +93,30 @@ LaneLook look_on(const RoadMap& map, LaneIndex lane, std::size_t segment, MapPoi
   LaneLook look;
   look.segment = best.segment;
   look.past_end = !beside && best.s >= centre.length() - 1e-9;
+  if (!beside) return look;
+  if (narrowest != nullptr &&
+      std::abs(best.lateral) <=
+          (best.lateral >= 0 ? narrowest->first : narrowest->second) - kWidthMargin) {
+    look.fix = LaneFix{static_cast<std::int32_t>(lane), best.s};
+    return look;
+  }
   double width = best.lateral >= 0 ? lane_left_width_at(map, lane, best.s)
                                    : lane_right_width_at(map, lane, best.s);
-  if (beside && std::abs(best.lateral) <= width)
-    look.fix = LaneFix{static_cast<std::int32_t>(lane), best.s};
+  if (std::abs(best.lateral) <= width) look.fix = LaneFix{static_cast<std::int32_t>(lane), best.s};
   return look;
+}
+
+}  // namespace
+
+namespace {
+
+// The least width of the samples (width_at interpolates between them); minus infinity, so that no
+// point is taken as within it, for a side without samples.
+double narrowest_width(const std::vector<WidthSample>& samples) {
+  if (samples.empty()) return -std::numeric_limits<double>::infinity();
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (const WidthSample& sample : samples) narrowest = std::min(narrowest, sample.width);
+  return narrowest;
 }
 
 }  // namespace
@@ -90,7 +124,12 @@ LaneLook look_on(const RoadMap& map, LaneIndex lane, std::size_t segment, MapPoi
 LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) {
   if (lane_ >= 0) {
     const auto lane = static_cast<LaneIndex>(lane_);
-    LaneLook here = look_on(map, lane, segment_, point);
+    if (narrowest_lane_ != lane_) {
+      narrowest_lane_ = lane_;
+      narrowest_ = {narrowest_width(map.lane(lane).left_width),
+                    narrowest_width(map.lane(lane).right_width)};
+    }
+    LaneLook here = look_on(map, lane, segment_, point, &narrowest_);
     if (here.fix) {
       segment_ = here.segment;
       return *here.fix;

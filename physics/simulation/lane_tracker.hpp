@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/map_point.hpp"
@@ -29,6 +30,9 @@ class LaneTracker {
   double widest_half_lane_;
   std::int32_t lane_ = -1;
   std::size_t segment_ = 0;
+  // The narrowest width of lane narrowest_lane_ on its left and right (or -1: none yet).
+  std::int32_t narrowest_lane_ = -1;
+  std::pair<double, double> narrowest_{0, 0};
   bool off_lanes_ = false;
   MapPoint off_lanes_at_;       // where the map last said: on no lane
   double off_lanes_reach_ = 0;  // how far from there no lane can begin

@@ -25,13 +25,45 @@ inline MapPoint predicted_point(const KinematicState& state, double horizon) {
 }
 
 // predicted_point(states[k], horizon) for every actor k that moves (kPredictedMinSpeed), and its
+// position for one that stands, into `points`, step after step. Most actors keep their heading
+// from one step to the next (a lane follower on a straight segment, a walking pedestrian), so the
+// cosine and sine of each actor's last heading are kept: the same numbers without a sincos.
+class PointPredictor {
+ public:
+  void predict(std::span<const KinematicState> states, double horizon,
+               std::vector<MapPoint>& points) {
+    points.resize(states.size());
+    if (headings_.size() != states.size()) {
+      headings_.assign(states.size(), std::nan(""));  // equal to no heading: computed first time
+      facings_.assign(states.size(), MapPoint{});
+    }
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      const KinematicState& state = states[k];
+      if (!(state.speed > kPredictedMinSpeed)) {
+        points[k] = {state.x, state.y};
+        continue;
+      }
+      if (!(state.heading == headings_[k])) {
+        headings_[k] = state.heading;
+        facings_[k] = {std::cos(state.heading), std::sin(state.heading)};
+      }
+      // predicted_point's arithmetic, in its order.
+      const double velocity = longitudinal_velocity(state);
+      points[k] = {state.x + facings_[k].x * velocity * horizon,
+                   state.y + facings_[k].y * velocity * horizon};
+    }
+  }
+
+ private:
+  std::vector<double> headings_;   // of each actor when its cosine and sine were taken
+  std::vector<MapPoint> facings_;  // their cosine and sine
+};
+
+// predicted_point(states[k], horizon) for every actor k that moves (kPredictedMinSpeed), and its
 // position for one that stands, into `points` (reused from step to step).
 inline void predict_points(std::span<const KinematicState> states, double horizon,
                            std::vector<MapPoint>& points) {
-  points.resize(states.size());
-  for (std::size_t k = 0; k < states.size(); ++k)
-    points[k] = states[k].speed > kPredictedMinSpeed ? predicted_point(states[k], horizon)
-                                                     : MapPoint{states[k].x, states[k].y};
+  PointPredictor().predict(states, horizon, points);
 }
 
 }  // namespace scenfuzz

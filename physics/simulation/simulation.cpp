@@ -291,6 +291,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   // Where every actor will be, predicted once per step for every lane follower's scan.
   const double prediction_time = FollowerSettings{}.prediction_time;
   std::vector<MapPoint> predicted;
+  PointPredictor predictor;
   // With many actors most are far from any one follower: a grid lets each scan skip them. With
   // few, building it costs more than looking at them all (benchmarks: 30 actors on one road).
   constexpr std::size_t kGridFromActors = 48;
@@ -377,7 +378,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       if (watches_manoeuvres)
         for (std::size_t k = 0; k < first_obstacle; ++k)
           manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
-      predict_points(states, prediction_time, predicted);
+      predictor.predict(states, prediction_time, predicted);
       if (uses_grid)
         grid.build(states, predicted, lengths, widths,
                    traffic.empty() ? std::span<const std::uint8_t>{}

@@ -72,6 +72,51 @@ TEST(NearestOnPath, IsTheNearestOfEverySegmentBitForBit) {
   EXPECT_GT(none, 2000);
 }
 
+// A caller seeding the search with the distance to a segment of the stretch (a lane follower's
+// segment from its last look at the actor) gets the same answer, bit for bit, also when that
+// segment is far from the nearest or out of reach.
+TEST(NearestOnPath, AKnownSegmentsDistanceChangesNothing) {
+  std::mt19937_64 random(29);
+  Polyline path = winding_path(random, 900);  // longer than a group of boxes several times
+  PolylineBoxes boxes(path);
+  SegmentFrames frames(path);
+  std::uniform_int_distribution<std::size_t> start(0, path.segment_count() - 1), later(0, 60);
+  std::uniform_real_distribution<double> offset(-10, 10), reach(0.5, 6), ahead(5, 300), extra(0, 3);
+  int found = 0, seeded = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const std::size_t first = start(random);
+    const MapPoint& near_vertex =
+        path.points()[std::min(first + later(random), path.segment_count())];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    if (i % 10 == 0) point = near_vertex;
+    const double until = path.arc_lengths()[first] + ahead(random);
+    const double r = reach(random);
+    // Some segment of the stretch, often the nearest's neighbourhood, and its distance or more.
+    std::size_t last = first;
+    while (last + 1 < path.segment_count() && path.arc_lengths()[last + 1] <= until) ++last;
+    std::uniform_int_distribution<std::size_t> in_stretch(first, last);
+    const PolylineProjection plain = nearest_on_path(path, boxes, frames, point, first, until, r);
+    std::size_t seed = in_stretch(random);
+    if (i % 2 == 0 && std::isfinite(plain.distance)) seed = std::min(last, plain.segment + i % 5);
+    const double known =
+        std::sqrt(frames.distance_squared(path, point, seed)) + (i % 3 == 0 ? extra(random) : 0.0);
+    const PolylineProjection got =
+        nearest_on_path(path, boxes, frames, point, first, until, r, known);
+    seeded += known < r;
+    if (!std::isfinite(plain.distance)) {
+      EXPECT_FALSE(std::isfinite(got.distance)) << "point " << i;
+      continue;
+    }
+    ++found;
+    EXPECT_EQ(got.segment, plain.segment) << "point " << i;
+    EXPECT_EQ(got.distance, plain.distance) << "point " << i;
+    EXPECT_EQ(got.s, plain.s) << "point " << i;
+    EXPECT_EQ(got.lateral, plain.lateral) << "point " << i;
+  }
+  EXPECT_GT(found, 2000);
+  EXPECT_GT(seeded, 2000);  // the seed was tighter than the reach often enough to matter
+}
+
 TEST(NearestOnPath, LooksOnlyFromFirstToUntil) {
   std::vector<MapPoint> straight;
   for (int i = 0; i <= 40; ++i) straight.push_back({static_cast<double>(i), 0});

@@ -53,6 +53,29 @@ TEST(SegmentWalk, FirstSegmentReachingIsTheLinearScan) {
     }
 }
 
+// Walking from where the answer was at the last look must give the search's answer, from any
+// start: near the answer, far from it (the walk gives up and searches), before the first segment
+// allowed, past the end.
+TEST(SegmentWalk, FirstSegmentReachingFromAnyStartIsTheSearchsAnswer) {
+  std::mt19937_64 random(37);
+  Polyline path = wiggly_path(random, 300);
+  const auto& arc = path.arc_lengths();
+  std::uniform_real_distribution<double> target(-5, path.length() + 20);
+  std::uniform_int_distribution<std::size_t> anywhere(0, path.segment_count() + 3);
+  std::uniform_int_distribution<int> nearby(-6, 6);
+  for (std::size_t start = 0; start < path.segment_count(); start += 5)
+    for (int i = 0; i < 60; ++i) {
+      const double s = i == 0 ? arc[start + 1] : target(random);
+      const std::size_t expected = first_segment_reaching(path, start, s);
+      const auto near = static_cast<std::ptrdiff_t>(expected) + nearby(random);
+      for (std::size_t from :
+           {anywhere(random), static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, near)), start,
+            std::size_t{0}})
+        ASSERT_EQ(first_segment_reaching_from(path, start, s, from), expected)
+            << start << " " << s << " from " << from;
+    }
+}
+
 TEST(PolylineBoxes, BoxDistanceIsAtMostEverySegmentsOfItsRun) {
   std::mt19937_64 random(13);
   Polyline path = wiggly_path(random, 150);
@@ -74,6 +97,29 @@ TEST(PolylineBoxes, BoxDistanceIsAtMostEverySegmentsOfItsRun) {
     }
   }
   EXPECT_GT(outside, 1000);  // the bound is not trivially 0
+}
+
+// Group rejection is exact only if a group's box is never farther than one of its boxes, not
+// even by rounding: checked as an inequality of the computed squares, with no tolerance.
+TEST(PolylineBoxes, AGroupIsNoFartherThanAnyOfItsBoxesExactly) {
+  std::mt19937_64 random(31);
+  Polyline path = wiggly_path(random, 700);
+  PolylineBoxes boxes(path);
+  constexpr std::size_t group = PolylineBoxes::kGroup;
+  std::uniform_int_distribution<std::size_t> vertex(0, path.points().size() - 1);
+  std::uniform_real_distribution<double> offset(-40, 40);
+  int apart = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const MapPoint& near_vertex = path.points()[vertex(random)];
+    MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    for (std::size_t box = 0; box < boxes.size(); ++box) {
+      const double group_squared = boxes.group_distance_squared(box / group, point);
+      ASSERT_LE(group_squared, boxes.distance_squared(box, point))
+          << "point " << i << " box " << box;
+      apart += group_squared > 0;
+    }
+  }
+  EXPECT_GT(apart, 10000);  // the bound is not trivially 0
 }
 
 TEST(PolylineBoxes, ABoxHoldsItsRunsVertices) {
