@@ -22,6 +22,31 @@ double smoothstep(double x) {
   return x * x * (3 - 2 * x);
 }
 
+// Where smoothstep reaches `fraction` (in [0, 1]): bisection, smoothstep being increasing.
+double smoothstep_reaching(double fraction) {
+  double low = 0, high = 1;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (low + high);
+    (smoothstep(mid) < fraction ? low : high) = mid;
+  }
+  return high;
+}
+
+// The longest pull-out from a standstill `room` metres behind a standing blocker: one whose body
+// is clear of the blocker's side (its own width and a margin across, the blocker no wider than
+// its lane) by the time its front reaches the blocker, rather than one fully in the next lane.
+// nullopt when even the tightest move its steering allows (a smoothstep of length L bends at most
+// 6 |offset| / L^2) cannot do that. Stopped close behind a blocker while traffic went by, the
+// driver would otherwise wait there for ever: its usual pull-out needs 12 m.
+std::optional<double> standing_pull_out(double room, double offset, const ActorClass& vehicle) {
+  constexpr double kSideMargin = 0.5;  // m between its side and the blocker's when level
+  const double fraction = std::min(1.0, (vehicle.width + kSideMargin) / std::abs(offset));
+  const double longest = 0.9 * room / smoothstep_reaching(fraction);
+  const double tightest = std::sqrt(6 * std::abs(offset) * 1.2 * vehicle.min_turning_radius());
+  if (tightest > longest) return std::nullopt;
+  return longest;
+}
+
 // Whether a lane boundary may be crossed to pass an object moving at `speed`: broken lines and
 // unknown ones (maps that do not say) always; solid and double lines only to pass something
 // standing or as slow as a bicycle (as UK Highway Code rule 129 and many US states allow);
@@ -257,7 +282,14 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
     double quickest = std::max(settings.shortest_move,
                                ego.speed * std::abs(*offset) / settings.fastest_lateral_speed);
     double length = std::min(usual, 0.9 * room);
-    if (length < quickest ||
+    double shortest = quickest;
+    if (length < quickest && ego.speed < 0.1 && standing) {
+      if (std::optional<double> pull_out = standing_pull_out(room, *offset, context.vehicle)) {
+        length = std::min(*pull_out, usual);
+        shortest = length;
+      }
+    }
+    if (length < shortest ||
         !passing_lane_clear(context, candidate, cluster, timing, settings, ignored)) {
       waiting = true;
       continue;
