@@ -494,12 +494,20 @@ std::string trace_json(const Trace& trace) {
     collisions.push_back(collision_json(collision));
   ordered_json events = ordered_json::array();
   for (const TraceEvent& event : trace.events) events.push_back(event_json(event));
+  const ordered_json target = trace.ego_target
+                                  ? ordered_json::array({trace.ego_target->x, trace.ego_target->y})
+                                  : ordered_json(nullptr);
+  const ordered_json sensing{{"vehicle_range", trace.sensing.vehicle_range},
+                             {"pedestrian_range", trace.sensing.pedestrian_range},
+                             {"limited", trace.sensing.limited}};
   const ordered_json document{{"format", trace_format_name},
                               {"version", trace_format_version},
                               {"map", trace.map_name},
                               {"seed", trace.seed},
                               {"dt", trace.dt},
                               {"end", end_reason_name(trace.end)},
+                              {"ego_target", target},
+                              {"sensing", sensing},
                               {"time", trace.time},
                               {"actors", std::move(actors)},
                               {"perceived", std::move(perceived)},
@@ -507,6 +515,28 @@ std::string trace_json(const Trace& trace) {
                               {"collisions", std::move(collisions)},
                               {"events", std::move(events)}};
   return document.dump() + "\n";
+}
+
+// The ego's target and its perception's reach: optional, so that traces written before they were
+// recorded still read (no target, sensing not recorded).
+void read_ego_target_and_sensing(const json& document, Trace& trace) {
+  if (const auto target = document.find("ego_target");
+      target != document.end() && !target->is_null()) {
+    const json& point = require_array(*target, "ego_target");
+    if (point.size() != 2) fail("ego_target", "expected [x, y]");
+    trace.ego_target =
+        MapPoint{read_number(point[0], "ego_target[0]"), read_number(point[1], "ego_target[1]")};
+  }
+  if (const auto sensing = document.find("sensing"); sensing != document.end()) {
+    const json& object = require_object(*sensing, "sensing");
+    trace.sensing.vehicle_range =
+        read_number(member(object, "vehicle_range", "sensing"), "sensing.vehicle_range");
+    trace.sensing.pedestrian_range =
+        read_number(member(object, "pedestrian_range", "sensing"), "sensing.pedestrian_range");
+    const json& limited = member(object, "limited", "sensing");
+    if (!limited.is_boolean()) fail("sensing.limited", "expected true or false");
+    trace.sensing.limited = limited.get<bool>();
+  }
 }
 
 Trace trace_from_json(const std::string& text) {
@@ -532,6 +562,7 @@ Trace trace_from_json(const std::string& text) {
   trace.seed = seed.get<std::uint64_t>();
   trace.dt = read_number(member(document, "dt", top), "dt");
   trace.end = read_enum(member(document, "end", top), "end", all_end_reasons, end_reason_name);
+  read_ego_target_and_sensing(document, trace);
   const json& time = require_array(member(document, "time", top), "time");
   for (std::size_t i = 0; i < time.size(); ++i)
     trace.time.push_back(read_number(time[i], element_path("time", i)));

@@ -144,6 +144,14 @@ void expect_equal_traces(const Trace& actual, const Trace& expected) {
   EXPECT_EQ(actual.seed, expected.seed);
   EXPECT_EQ(actual.dt, expected.dt);
   EXPECT_EQ(actual.end, expected.end);
+  EXPECT_EQ(actual.ego_target.has_value(), expected.ego_target.has_value());
+  if (actual.ego_target && expected.ego_target) {
+    EXPECT_EQ(actual.ego_target->x, expected.ego_target->x);
+    EXPECT_EQ(actual.ego_target->y, expected.ego_target->y);
+  }
+  EXPECT_EQ(actual.sensing.vehicle_range, expected.sensing.vehicle_range);
+  EXPECT_EQ(actual.sensing.pedestrian_range, expected.sensing.pedestrian_range);
+  EXPECT_EQ(actual.sensing.limited, expected.sensing.limited);
   expect_same_column(actual.time, expected.time, "time");
   ASSERT_EQ(actual.actors.size(), expected.actors.size());
   for (std::size_t i = 0; i < actual.actors.size(); ++i) {
@@ -315,6 +323,23 @@ TEST(TraceExport, JsonRoundTripGivesAnEqualTrace) {
   expect_equal_traces(trace_from_json(json), trace);
   // And the reloaded trace writes the same text.
   EXPECT_EQ(trace_json(trace_from_json(json)), json);
+}
+
+TEST(TraceExport, JsonKeepsTheEgosTargetAndItsSensing) {
+  Trace trace = sample_trace();
+  trace.ego_target = MapPoint{412.5, -5.25};
+  trace.sensing = {38.5, 21.25, true};
+  const std::string json = trace_json(trace);
+  EXPECT_NE(json.find("\"ego_target\":[412.5,-5.25]"), std::string::npos) << json.substr(0, 300);
+  EXPECT_NE(json.find("\"limited\":true"), std::string::npos);
+  expect_equal_traces(trace_from_json(json), trace);
+  // Written before they were recorded: no target, sensing not recorded.
+  const std::string older =
+      std::regex_replace(json, std::regex(R"("ego_target":\[[^\]]*\],"sensing":\{[^}]*\},)"), "");
+  ASSERT_EQ(older.find("sensing"), std::string::npos);
+  const Trace read = trace_from_json(older);
+  EXPECT_FALSE(read.ego_target);
+  EXPECT_EQ(read.sensing.vehicle_range, 0);
 }
 
 TEST(TraceExport, JsonRoundTripOfAnEmptyTrace) {
