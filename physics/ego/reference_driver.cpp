@@ -79,7 +79,8 @@ ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
           vehicle.max_deceleration > 0
               ? sight_speed(sensing, vehicle.length / 2, vehicle.max_deceleration, settings.sight)
               : std::numeric_limits<double>::infinity()),
-      stop_sign_served_(route.features().size(), false) {
+      stop_sign_served_(route.features().size(), false),
+      left_turn_(map, route, vehicle, settings.left_turn) {
   // The speed the driver may have at each path vertex: the limit, the bend, and what braking
   // comfortably for the bends and limits further on allows (one backward pass).
   const auto& arc = route.path().arc_lengths();
@@ -251,6 +252,9 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     // A pedestrian standing beside the path is not about to enter it (what perception makes of
     // its speed and heading is noise).
     bool approaching = !in_path && !standing && lateral_speed * lateral < 0;
+    // Committed to a left turn, the ego clears the oncoming lanes: an oncoming vehicle coming
+    // towards its path must wait (stopping in its lane would not help); one in it still counts.
+    if (approaching && turn_committed_ && left_turn_.is_oncoming(object)) approaching = false;
     if (approaching) {
       // Moving towards the path: will it be there by the time the ego is?
       double time_to_enter = clearance / std::abs(lateral_speed);
@@ -430,6 +434,13 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   constraints_.clear();
   held_by_standing_ = false;
   creeping_ = false;
+  GapDecision gap =
+      left_turn_.decide(ego, input.objects, speed_envelope_,
+                        std::min(sight_speed_, vehicle_.max_speed), vehicle_.max_deceleration);
+  turn_committed_ = gap.committed;
+  if (gap.wait_gap)
+    constraints_.push_back(
+        {*gap.wait_gap, settings_.stop_line_gap, 0, false, DriverReason::give_way});
   collect_object_constraints(input, front_s);
   collect_feature_constraints(input, front_s);
   collect_lane_change_constraints(input, front_s);

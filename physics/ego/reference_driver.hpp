@@ -5,9 +5,10 @@
 // then goes on, passes stopped or much slower vehicles, cyclists and obstacles when a lane beside
 // allows it (overtaking.hpp), yields to pedestrians on or walking into its path and in crosswalks
 // ahead but not to ones standing beside it, slows for pedestrians on the carriageway walking
-// towards its path, never drives faster than it can stop within what it can see in the weather
-// and light (sight_distance.hpp), and stops at its target. It sees only what perception gives
-// it.
+// towards its path, turning left across oncoming traffic waits for a gap and then clears the
+// oncoming lanes without stopping in them (left_turn_gap.hpp), never drives faster than it can stop
+// within what it can see in the weather and light (sight_distance.hpp), and stops at its target. It
+// sees only what perception gives it.
 #pragma once
 
 #include <optional>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
+#include "physics/ego/left_turn_gap.hpp"
 #include "physics/ego/motion_filter.hpp"
 #include "physics/ego/overtaking.hpp"
 #include "physics/ego/perception.hpp"
@@ -43,6 +45,7 @@ struct DriverSettings {
   double pedestrian_patience = 5;  // s held by standing pedestrians before creeping on
   double creeping_speed = 1.5;     // m/s past standing pedestrians after that
   SightSettings sight;             // the speed limit of what it can see
+  LeftTurnGapSettings left_turn;   // gap acceptance turning left across oncoming traffic
   double sight_braking = 4.0;      // m/s^2 at most when it finds itself faster than that limit
                                    // (starting in fog, say): firm, not full
   OvertakingSettings overtaking;
@@ -68,6 +71,7 @@ enum class DriverReason {
   lane_change,  // waiting for a gap in the next lane
   creeping,     // past pedestrians that stood in its way longer than its patience
   sight,        // no faster than it can stop within what it can see
+  give_way,     // turning left: waiting for a gap in the oncoming traffic
 };
 
 class ReferenceDriver {
@@ -124,6 +128,8 @@ class ReferenceDriver {
   double held_since_ = -1;         // since when, without a break
   bool patience_over_ = false;
   bool creeping_ = false;  // this step: creeping past standing pedestrians
+  LeftTurnGap left_turn_;
+  bool turn_committed_ = false;  // this step: inside a left turn's conflict area, clearing it
 };
 
 }  // namespace scenfuzz
