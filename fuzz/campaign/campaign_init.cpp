@@ -37,11 +37,22 @@ std::string toml_string(const std::string& text) {
   return quoted + "\"";
 }
 
-// `file` as the campaign folder `dir` sees it: relative to it, a folder with a trailing '/'.
+// Whether `a` and `b` (absolute) share more than the root: the campaign and its seeds live in one
+// tree (a repository), so a relative path keeps working when the tree moves.
+bool share_a_folder(const fs::path& a, const fs::path& b) {
+  auto a_part = a.begin(), b_part = b.begin();
+  std::size_t shared = 0;
+  for (; a_part != a.end() && b_part != b.end() && *a_part == *b_part; ++a_part, ++b_part) ++shared;
+  return shared > 1;  // more than "/"
+}
+
+// `file` as the campaign folder `dir` sees it: relative to it when they share a folder besides
+// the root, else absolute; a folder with a trailing '/'.
 std::string entry_for(const fs::path& dir, const std::string& file) {
   std::error_code error;
   const fs::path target = fs::absolute(file, error).lexically_normal();
-  fs::path relative = target.lexically_relative(fs::absolute(dir, error).lexically_normal());
+  const fs::path folder = fs::absolute(dir, error).lexically_normal();
+  fs::path relative = share_a_folder(target, folder) ? target.lexically_relative(folder) : target;
   if (relative.empty()) relative = target;
   std::string entry = relative.generic_string();
   if (fs::is_directory(file, error) && !entry.ends_with('/')) entry += '/';
@@ -65,10 +76,10 @@ std::string folder_name(const fs::path& dir) {
 }  // namespace
 
 std::string campaign_toml_text(const std::string& name,
-                               const std::vector<std::string>& seed_entries) {
+                               const std::vector<std::string>& seed_entries,
+                               const std::string& example_file) {
   std::string seeds;
   for (const std::string& entry : seed_entries) seeds += "  " + toml_string(entry) + ",\n";
-  const std::string example = seed_entries.empty() ? "x.avu" : seed_entries.front();
   return "# A scenfuzz falsification campaign (docs/campaigns.md describes every key). Paths are\n"
          "# relative to this folder.\n"
          "\n"
@@ -110,7 +121,7 @@ std::string campaign_toml_text(const std::string& name,
          "# `seeds` stands for; budget_share weighs its share of the budget (1 without one).\n"
          "# [[seed]]\n"
          "# path = " +
-         toml_string(example) +
+         toml_string(example_file) +
          "\n"
          "# budget_share = 2.0\n"
          "# algo = \"nlopt:GN_ISRES\"\n";
@@ -126,6 +137,10 @@ int run_campaign_init(const CampaignInitOptions& options, std::ostream& out, std
            "again)\n";
     return kExitBadInput;
   }
+  if (options.files.empty()) {
+    err << "scenfuzz: error: campaign init needs at least one seed scenario file or folder\n";
+    return kExitUsage;
+  }
   std::vector<std::string> entries;
   for (const std::string& file : options.files) {
     if (const std::string problem = seed_problem(file); !problem.empty()) {
@@ -139,7 +154,7 @@ int run_campaign_init(const CampaignInitOptions& options, std::ostream& out, std
     err << "scenfuzz: error: cannot create '" << dir.string() << "': " << error.message() << "\n";
     return kExitBadInput;
   }
-  const std::string text = campaign_toml_text(folder_name(dir), entries);
+  std::string text = campaign_toml_text(folder_name(dir), entries, entries.front());
   // Read back before writing: a path that TOML or the seed rules cannot take is caught here.
   const CampaignConfigResult parsed = parse_campaign_config(text, target.string());
   if (!parsed.config) {
@@ -147,6 +162,8 @@ int run_campaign_init(const CampaignInitOptions& options, std::ostream& out, std
         << "scenfuzz: error: campaign init could not write a campaign.toml for these files\n";
     return kExitBadInput;
   }
+  // The [[seed]] example names a file, not a folder; only a comment changes.
+  text = campaign_toml_text(folder_name(dir), entries, parsed.config->seed_files.front());
   if (const std::string problem = write_file_atomically(target, text); !problem.empty()) {
     err << "scenfuzz: error: " << problem << "\n";
     return kExitBadInput;

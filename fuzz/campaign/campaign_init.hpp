@@ -14,9 +14,11 @@ struct CampaignInitOptions {
 };
 
 // The commented campaign.toml of a campaign called `name` whose `seeds` are `seed_entries`
-// (relative to its folder).
+// (relative to its folder); `example_file`, one of the files they stand for, is the path of the
+// commented-out [[seed]] example.
 std::string campaign_toml_text(const std::string& name,
-                               const std::vector<std::string>& seed_entries);
+                               const std::vector<std::string>& seed_entries,
+                               const std::string& example_file);
 
 // Writes DIR/campaign.toml (atomically) and says so on `out`. kExitBadInput, with the reason on
 // `err`, when DIR/campaign.toml already exists (it is never overwritten), a FILE does not exist

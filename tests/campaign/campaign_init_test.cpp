@@ -7,6 +7,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -59,7 +61,43 @@ TEST_F(CampaignInitTest, WritesACampaignTheParserAccepts) {
   // Commented: every table says what it is for.
   const std::string text = slurp(campaign / "campaign.toml");
   EXPECT_NE(text.find("# The ego under test"), std::string::npos);
-  EXPECT_NE(text.find("# [[seed]]"), std::string::npos);
+  // The commented-out [[seed]] example names a file (the first), not the folder.
+  EXPECT_NE(text.find("# [[seed]]\n# path = \"../seeds/a.avu\"\n"), std::string::npos) << text;
+  // Uncommented, the example is accepted too.
+  std::string uncommented = text;
+  for (const char* line : {"# [[seed]]\n", "# path = ", "# budget_share = ", "# algo = "})
+    uncommented.replace(uncommented.find(line), 2, "");
+  const fs::path edited = campaign / "edited.toml";
+  std::ofstream(edited) << uncommented;
+  const CampaignConfigResult with_seed = parse(edited);
+  ASSERT_TRUE(with_seed.config) << uncommented;
+  ASSERT_EQ(with_seed.config->seed_overrides.size(), 1u);
+  EXPECT_EQ(with_seed.config->seed_overrides[0].algorithm, "nlopt:GN_ISRES");
+}
+
+TEST_F(CampaignInitTest, SeedsInAnotherTreeAreNamedAbsolutely) {
+  const std::string repository_file = source_file("corpora/avunit/cut_in_straight.avu");
+  const std::string temp_root = *dir_.begin() / *std::next(dir_.begin());
+  if (repository_file.starts_with(temp_root + "/"))
+    GTEST_SKIP() << "the repository is under " << temp_root;
+  const fs::path campaign = dir_ / "nightly";
+  const Outcome run =
+      scenfuzz({"campaign", "init", campaign.string(), repository_file, seed("a.avu")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CampaignConfigResult result = parse(campaign / "campaign.toml");
+  ASSERT_TRUE(result.config);
+  EXPECT_EQ(result.config->seed_files,
+            (std::vector<std::string>{fs::path(repository_file).lexically_normal().string(),
+                                      "../seeds/a.avu"}));
+}
+
+TEST_F(CampaignInitTest, WithoutFilesWritesNothing) {
+  std::ostringstream out, err;
+  EXPECT_EQ(run_campaign_init({(dir_ / "empty").string(), {}}, out, err), 2);
+  EXPECT_EQ(err.str(),
+            "scenfuzz: error: campaign init needs at least one seed scenario file or "
+            "folder\n");
+  EXPECT_FALSE(fs::exists(dir_ / "empty"));
 }
 
 TEST_F(CampaignInitTest, RelativeFilesAreTakenFromTheWorkingFolder) {
