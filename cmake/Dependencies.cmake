@@ -46,6 +46,13 @@ find_package(TBB REQUIRED)
 find_package(CLI11 2.1 REQUIRED CONFIG)
 find_package(nlohmann_json 3.10 REQUIRED)
 
+# Campaigns (fuzz/campaign/): toml++ 3.3 reads campaign.toml, SQLite 3.40 holds the campaign's
+# state. Each is linked PRIVATE to scenfuzz_campaign and included by one facade file only.
+# Debian's toml++ ships a CMake config (tomlplusplus::tomlplusplus, a compiled shared library);
+# SQLite comes through CMake's own FindSQLite3 module (SQLite::SQLite3).
+find_package(tomlplusplus 3 REQUIRED CONFIG)
+find_package(SQLite3 3.31 REQUIRED)
+
 if(SCENFUZZ_BUILD_TESTS)
   find_package(GTest REQUIRED)
   find_package(benchmark REQUIRED)

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/campaign/campaign_init.hpp"
 #include "fuzz/commands.hpp"
 #include "fuzz/options.hpp"
 
@@ -284,6 +285,32 @@ void declare_bench(CLI::App& app, Action& action) {
   });
 }
 
+void declare_campaign(CLI::App& app, Action& action) {
+  auto options = std::make_shared<CampaignInitOptions>();
+  CLI::App* campaign = app.add_subcommand(
+      "campaign",
+      "Nightly falsification campaigns: a folder with campaign.toml (seeds, ego, budget, search "
+      "options) and the campaign's database");
+  campaign->require_subcommand(1);
+  campaign->footer("docs/campaigns.md describes campaign.toml and the database.");
+  CLI::App* init = campaign->add_subcommand(
+      "init",
+      "Start a campaign folder: write DIR/campaign.toml, commented, listing FILES as its seeds "
+      "(never overwrites an existing one)");
+  init->add_option("DIR", options->dir, "The campaign folder, created if missing")
+      ->required()
+      ->type_name("");
+  init->add_option("FILES", options->files,
+                   "Seed scenario files (.avu, .scenest, .sdl) and folders of them")
+      ->required()
+      ->type_name("");
+  init->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      return run_campaign_init(*options, out, err);
+    };
+  });
+}
+
 int run_search_command(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
   if (options.path.empty()) {
     err << "scenfuzz: error: name a scenario to search (scenfuzz --budget 500 base.avu) or a "
@@ -305,7 +332,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   Action action;
   for (void (*declare)(CLI::App&, Action&) :
        {declare_check, declare_space, declare_map, declare_run, declare_stl, declare_convert,
-        declare_bench})
+        declare_bench, declare_campaign})
     declare(app, action);
   try {
     app.parse(argc, argv);

@@ -11,6 +11,7 @@ packages=(
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
   libprotobuf-dev protobuf-compiler              # Apollo HD maps
   libcli11-dev nlohmann-json3-dev
+  libtomlplusplus-dev libsqlite3-dev             # campaigns: campaign.toml and campaign.db
   libgtest-dev libgmock-dev libbenchmark-dev
   librsvg2-bin                                   # rsvg-convert: tests render every trace picture
 )

@@ -1,0 +1,147 @@
+// A campaign's database, DIR/campaign.db (SQLite, WAL): the single source of truth for its runs,
+// seeds (by content hash: an edited seed is a new seed), searches, their evaluations, and the
+// failure modes found. Every state change is one transaction, so a killed process loses at most
+// the change in flight. Opening a campaign for a run locks it (campaign_lock.hpp): a second run
+// is refused, naming the first. docs/campaigns.md describes the schema.
+//
+// SQLite failures after a successful open (a full disk, a database corrupted under us, a broken
+// constraint) throw CampaignDbError; the state change in flight is rolled back first.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fuzz/campaign/campaign_lock.hpp"
+
+struct sqlite3;  // sqlite3.h is for campaign_db.cpp alone
+
+namespace scenfuzz {
+
+class CampaignDbError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The schema this build reads and writes; schema_version holds the database's.
+inline constexpr std::int64_t kCampaignSchemaVersion = 1;
+
+enum class SearchStatus { running, done, stopped, failed };
+enum class FailureModeStatus { new_mode, still_failing, fixed, flaky, regressed };
+
+// The names stored in the database ("new", "still_failing", ...).
+std::string_view status_name(SearchStatus status);
+std::string_view status_name(FailureModeStatus status);
+
+struct CampaignRun {
+  std::int64_t id = 0;
+  std::string started;  // UTC, ISO 8601 ("2026-11-27T02:00:00Z")
+  std::string ended;    // empty while running, or when the run was killed
+  std::string ego_version;
+};
+
+struct CampaignSeed {
+  std::int64_t id = 0;
+  std::string path;          // relative to the campaign folder
+  std::string content_hash;  // content_hash.hpp
+};
+
+struct SearchRecord {
+  std::int64_t run_id = 0;
+  std::int64_t seed_id = 0;
+  std::string algorithm;
+  std::uint64_t budget = 0;  // simulations it was given
+  SearchStatus status = SearchStatus::done;
+  std::string output_folder;  // relative to the campaign folder
+};
+
+struct CampaignSearch {
+  std::int64_t id = 0;
+  SearchRecord record;
+};
+
+// One evaluation of a search, compactly: where it was in the search, the robustness of its
+// objective (nullopt: not judged), whether it was a finding.
+struct EvaluationRecord {
+  std::int64_t index = 0;
+  std::optional<double> robustness;
+  bool finding = false;
+};
+
+// What a search reports about a failure mode it found.
+struct FailureModeRecord {
+  std::int64_t seed_id = 0;
+  std::string signature;       // the failure-mode signature, unique per seed
+  std::string spec;            // the violated spec
+  std::string responsibility;  // ego, other, shared, or empty
+  std::string scenario_file;   // the representative concrete scenario, named by content hash
+  std::string replay_command;  // reproduces it
+};
+
+struct CampaignFailureMode {
+  std::int64_t id = 0;
+  FailureModeRecord record;
+  std::int64_t first_seen_run = 0;
+  std::int64_t last_seen_run = 0;
+  FailureModeStatus status = FailureModeStatus::new_mode;
+};
+
+class CampaignDb;
+
+// open()'s result: a database, or why there is none.
+struct CampaignDbOpening {
+  std::unique_ptr<CampaignDb> db;
+  std::string error;
+};
+
+class CampaignDb {
+ public:
+  // Locks the campaign folder `dir` for a run, then creates DIR/campaign.db with the current
+  // schema or opens it, checking its schema version. Never throws; an error names the problem
+  // (another run holds the campaign; not a database; a newer schema; cannot write).
+  static CampaignDbOpening open(const std::filesystem::path& dir);
+
+  ~CampaignDb();
+  CampaignDb(const CampaignDb&) = delete;
+  CampaignDb& operator=(const CampaignDb&) = delete;
+
+  std::int64_t schema_version();
+
+  // A run starts now with the ego `ego_version`; end_run records when it ended.
+  std::int64_t begin_run(const std::string& ego_version);
+  void end_run(std::int64_t run_id);
+
+  // The seed with this path and content, added if new; its id.
+  std::int64_t upsert_seed(const std::string& path, const std::string& content_hash);
+
+  // The search and its evaluations, together or not at all; the search's id.
+  std::int64_t record_search(const SearchRecord& search,
+                             std::span<const EvaluationRecord> evaluations);
+
+  // A failure mode found in run `run_id`. New to its seed: added as new, first and last seen in
+  // this run. Known: last seen moves to this run, and its status becomes still_failing (a fixed
+  // one: regressed; one first seen in this very run stays new). Returns it as stored.
+  CampaignFailureMode upsert_failure_mode(std::int64_t run_id, const FailureModeRecord& mode);
+  // Sets a known failure mode's status (regression replay decides it).
+  void set_failure_mode_status(std::int64_t failure_mode_id, FailureModeStatus status);
+
+  std::vector<CampaignRun> list_runs();
+  std::vector<CampaignSeed> list_seeds();
+  std::vector<CampaignSearch> list_searches();
+  std::vector<EvaluationRecord> list_evaluations(std::int64_t search_id);
+  std::vector<CampaignFailureMode> list_failure_modes();
+
+ private:
+  CampaignDb(sqlite3* connection, CampaignLock lock);
+
+  sqlite3* connection_;  // open while the object lives
+  CampaignLock lock_;
+};
+
+}  // namespace scenfuzz
