@@ -2,10 +2,12 @@
 #include "physics/simulation/default_duration.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "lang/spec_horizon.hpp"
 #include "physics/ego/reference_driver.hpp"
+#include "physics/map/lane_queries.hpp"
 
 namespace scenfuzz {
 
@@ -42,13 +44,28 @@ bool controls_route(const TrafficLight& light, const LaneRoute& route) {
   return false;
 }
 
+// Whether `point` lies inside the stretch of a lane the route drives.
+bool on_route(const RoadMap& map, const LaneRoute& route, MapPoint point) {
+  for (const RouteSegment& segment : route.segments) {
+    const PolylineProjection p = map.lane(segment.lane).centre_line.project(point);
+    if (p.s < segment.s_begin || p.s > segment.s_end) continue;
+    const double half_width = p.lateral >= 0 ? lane_left_width_at(map, segment.lane, p.s)
+                                             : lane_right_width_at(map, segment.lane, p.s);
+    if (std::abs(p.lateral) <= half_width) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
-double route_waits(const RoadMap& map, const LaneRoute& route) {
+double route_waits(const RoadMap& map, const LaneRoute& route,
+                   std::span<const MapPoint> obstacles) {
   std::set<std::uint32_t> junctions;
   for (const RouteSegment& segment : route.segments)
     if (const auto junction = map.lane(segment.lane).junction) junctions.insert(*junction);
   double seconds = kJunctionWait * static_cast<double>(junctions.size());
+  for (const MapPoint& obstacle : obstacles)
+    if (on_route(map, route, obstacle)) seconds += kJunctionWait;
   for (const TrafficLight& light : map.traffic_lights())
     if (light.plan && controls_route(light, route)) seconds += non_green_time(*light.plan);
   return seconds;

@@ -4,7 +4,9 @@
 //   duration = max(30 s, the longest spec horizon, route time)
 //   route time = 1.2 x (the ego's route driven at the speed limits along it) + 15 s + waits
 //   waits = 10 s for each junction the route passes through (giving way, pedestrians on its
-//           crossings) + for each traffic light on the route with a plan, its red and amber time
+//           crossings) and for each static obstacle in one of its lanes (waiting for a gap in
+//           the next lane to pass it) + for each traffic light on the route with a plan, its red
+//           and amber time
 // where a lane's limit is the scenario's SpeedLimit, else the map's, else the reference driver's
 // default (50 km/h), and never above the ego body's top speed; the 20 % are for bends, lane
 // changes and slower traffic, the 15 s for starting, stopping and the slow last metres to the
@@ -37,8 +39,10 @@ double route_time_at_limits(const RoadMap& map, const LaneRoute& route,
                             double max_speed);
 
 // Seconds the ego may have to wait along `route`: kJunctionWait for each junction it passes
-// through, and the red and amber time of each planned light that controls one of its lanes.
-double route_waits(const RoadMap& map, const LaneRoute& route);
+// through and for each of `obstacles` (their positions) inside one of its lanes, and the red and
+// amber time of each planned light that controls one of its lanes.
+double route_waits(const RoadMap& map, const LaneRoute& route,
+                   std::span<const MapPoint> obstacles = {});
 
 // The default duration for `specs`, and for an ego whose route to its target takes
 // `route_time` seconds at the limits (nullopt: no target) and may wait `waits` seconds.

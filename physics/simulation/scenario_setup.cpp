@@ -683,14 +683,8 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     }
     setup.speed_limits.emplace_back(*lane, evaluate(limit.upper, values));
   }
-  if (!own_duration && setup.ego_target)
-    context.duration = default_duration(
-        scenario.specs,
-        route_time_at_limits(map, setup.ego_route, setup.speed_limits, setup.ego_body.max_speed),
-        route_waits(map, setup.ego_route));
-  setup.duration = context.duration;
-
-  // Obstacles first: vehicles' paths are planned around them.
+  // Obstacles first: vehicles' paths are planned around them, and the default duration waits
+  // for those in the ego's way.
   CollisionWorld obstacles;
   for (const Obstacle& obstacle : scenario.obstacles) {
     State state;
@@ -702,6 +696,17 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     obstacles.add_body(placed.geometry, placed.pose, true);
     setup.obstacles.push_back(std::move(placed));
   }
+
+  if (!own_duration && setup.ego_target) {
+    std::vector<MapPoint> in_the_way;
+    for (const StaticObstacle& obstacle : setup.obstacles)
+      in_the_way.push_back(obstacle.pose.position);
+    context.duration = default_duration(
+        scenario.specs,
+        route_time_at_limits(map, setup.ego_route, setup.speed_limits, setup.ego_body.max_speed),
+        route_waits(map, setup.ego_route, in_the_way));
+  }
+  setup.duration = context.duration;
 
   std::size_t index = 0;
   std::vector<const Actor*> sources;

@@ -110,5 +110,18 @@ scenario = CreateScenario{load("crossroads"); ego; {}; {}; {};};
   EXPECT_EQ(trace.end, EndReason::target_reached) << trace.time.back();
 }
 
+TEST(DefaultDurationTest, LeavesTimeToPassAnObstacleInTheEgosLaneOnly) {
+  // 460 m at 10 m/s as above; a crate in the ego's lane, a wreck in the oncoming one.
+  const Prepared prepared = prepare(R"(
+ego = AV((("east_0"->20), , 0), (("east_0"->480), , ));
+crate = Obstacle("east_0"->200, (box, 1.2, 1.0, 0.8));
+wreck = Obstacle("west_0"->100, (box, 4.5, 1.9, 1.5));
+scenario = CreateScenario{load("straight?speed_limit=10"); ego; {}; {}; {crate, wreck};};
+)");
+  ASSERT_TRUE(prepared.setup) << prepared.diagnostics;
+  EXPECT_NEAR(prepared.setup->duration, kRouteTimeMargin * 46 + kStartStopAllowance + kJunctionWait,
+              0.5);
+}
+
 }  // namespace
 }  // namespace scenfuzz
