@@ -212,14 +212,14 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
 }
 
 // The actors on the lanes this follower's path runs over from a little behind it to beyond what
-// it watches, or on lanes crossing or merging with its junction lanes there, and every loose
-// actor (the world's LaneOccupancy): what a driver keeping to its lanes has to look at. False
-// when the world has no occupancy.
+// it watches, or on the lanes of the junctions it passes there (among them those crossing or
+// merging with its own), and every loose actor (the world's LaneOccupancy): what a driver
+// keeping to its lanes has to look at. False when the world has no occupancy.
 bool LaneFollower::on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) {
   if (world.occupancy == nullptr || route_starts_.empty()) return false;
   const double lookahead =
       std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
-  watch_lanes(s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
+  watch_lanes(*world.occupancy, s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
   actors.clear();
   for (LaneIndex lane : watched_) world.occupancy->append_on(lane, actors);
   const std::vector<std::uint32_t>& loose = world.occupancy->loose();
@@ -229,7 +229,7 @@ bool LaneFollower::on_lanes_ahead(const WorldSnapshot& world, std::vector<std::u
   return true;
 }
 
-void LaneFollower::watch_lanes(double from, double to) {
+void LaneFollower::watch_lanes(const LaneOccupancy& occupancy, double from, double to) {
   // The route segments ending after `from` and beginning before `to` (at least one).
   const auto begins = route_starts_.begin(), ends = route_starts_.end();
   const auto first_after = std::upper_bound(begins, ends, from);
@@ -244,9 +244,11 @@ void LaneFollower::watch_lanes(double from, double to) {
   for (std::size_t k = first; k <= last && k < route_.segments.size(); ++k) {
     const LaneIndex lane = route_.segments[k].lane;
     watched_.push_back(lane);
-    if (map_->lane(lane).junction) {
-      const std::vector<LaneIndex>& conflicts = conflicts_of(lane);
-      watched_.insert(watched_.end(), conflicts.begin(), conflicts.end());
+    // Every lane of its junction: more than those crossing or merging with it (conflicts_of),
+    // whose centre lines cost far more to test than the few actors more to look at.
+    if (auto junction = map_->lane(lane).junction) {
+      const std::vector<LaneIndex>& lanes = occupancy.junction_lanes(*junction);
+      watched_.insert(watched_.end(), lanes.begin(), lanes.end());
     }
   }
   std::sort(watched_.begin(), watched_.end());

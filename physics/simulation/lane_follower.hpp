@@ -89,10 +89,10 @@ class LaneFollower {
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
   bool near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const;
   bool on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors);
-  // The lanes of the route from route distance `from` to `to` and the lanes crossing or merging
-  // with its junction lanes there, into watched_ (kept while the stretch covers the same
-  // route segments).
-  void watch_lanes(double from, double to);
+  // The lanes of the route from route distance `from` to `to` and every lane of the junctions
+  // it runs through there, into watched_ (kept while the stretch covers the same route
+  // segments).
+  void watch_lanes(const LaneOccupancy& occupancy, double from, double to);
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
   MapPoint predicted_of(const WorldSnapshot& world, std::uint32_t k) const;
   // in_path's first tests, inlined into the scan: whether actor k is surely not in the path

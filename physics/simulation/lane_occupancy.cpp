@@ -31,6 +31,10 @@ LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map) {
   for (const Lane& lane : map.lanes())
     narrowest_.emplace_back(narrowest_width(lane.left_width), narrowest_width(lane.right_width));
   filing_.first.assign(map.lanes().size(), 0);
+  junction_lanes_.resize(map.junctions().size());
+  for (LaneIndex lane = 0; lane < map.lanes().size(); ++lane)
+    if (auto junction = map.lane(lane).junction; junction && *junction < junction_lanes_.size())
+      junction_lanes_[*junction].push_back(lane);
 }
 
 void LaneOccupancy::set_step(const OccupancyInputs& inputs) {

@@ -52,6 +52,12 @@ class LaneOccupancy {
   // Every present actor filed under no lane (ascending).
   const std::vector<std::uint32_t>& loose() const;
 
+  // Every lane of junction `junction` (ascending): those that cross or merge with one of them
+  // (lane_conflicts.hpp) among them, found without testing each pair's centre lines.
+  const std::vector<LaneIndex>& junction_lanes(std::uint32_t junction) const {
+    return junction_lanes_[junction];
+  }
+
  private:
   // The filing, kept out of the const queries' sight: it is a cache of the step's inputs.
   struct Filing {
@@ -73,6 +79,7 @@ class LaneOccupancy {
   const RoadMap* map_;
   // Of each lane: its narrowest width left and right of the centre line.
   std::vector<std::pair<double, double>> narrowest_;
+  std::vector<std::vector<LaneIndex>> junction_lanes_;  // by junction
   OccupancyInputs inputs_;
   mutable Filing filing_;
 };

@@ -293,15 +293,15 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   std::vector<MapPoint> predicted;
   PointPredictor predictor;
   // With many actors most are far from any one follower: a grid lets each scan skip them. With
-  // few, building it costs more than looking at them all (benchmarks: 30 actors on one road).
+  // few, building it costs more than looking at them all (benchmarks: 30 actors on one road);
+  // there followers look by lane (lane_occupancy.hpp), which cost more than the grid saves with
+  // 100 actors or more (benchmarks: filing them every step, flows scanning at different steps).
   constexpr std::size_t kGridFromActors = 48;
-  // Followers look by lane (lane_occupancy.hpp) when there are any; the grid is for their scans
-  // otherwise.
+  const bool uses_grid = actor_count >= kGridFromActors;
   std::optional<LaneOccupancy> occupancy;
-  if (!traffic.empty() ||
-      std::any_of(followers.begin(), followers.end(), [](const auto& f) { return f.has_value(); }))
+  if (!uses_grid && (!traffic.empty() || std::any_of(followers.begin(), followers.end(),
+                                                     [](const auto& f) { return f.has_value(); })))
     occupancy.emplace(map);
-  const bool uses_grid = actor_count >= kGridFromActors && !occupancy;
   ActorGrid grid;
   std::vector<WorldObject> on_map;       // the objects of `truth` present now, for perception
   std::vector<WorldObject> seen_on_map;  // what perception reports of them
