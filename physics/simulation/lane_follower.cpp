@@ -27,6 +27,13 @@ constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower tha
 constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term finite
 constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
 constexpr double kScanInterval = 0.2;        // s between looks at every actor (see find_leader)
+// m of route behind the follower whose lanes are watched: a lane change's sideways move
+// (route_path, 30 m) runs on past where the route enters the new lane, so the lane left may
+// still be under the follower's path.
+constexpr double kWatchedBehind = 35;
+// m of route beyond the lookahead whose lanes are watched: an actor filed on the next lane can
+// have its point within reach of the watched path's end.
+constexpr double kWatchedBeyond = 15;
 
 double fourth_power(double x) {
   double squared = x * x;
@@ -71,6 +78,11 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
                        ? body_.comfortable_lateral_acceleration
                        : body_.max_deceleration;
   envelope_ = bend_envelope(path_, headings_, lateral, body_.comfortable_deceleration);
+  double distance = 0;
+  for (const RouteSegment& segment : route_.segments) {
+    route_starts_.push_back(distance);
+    distance += segment.s_end - segment.s_begin;
+  }
   for (double from = 0; features_.size() < kFeatureLimit;) {
     auto next = next_feature_ahead(map, route_, from);
     if (!next) break;
@@ -175,23 +187,72 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
     next_scan_ = world.time + kScanInterval;
     leader_ = -1;
     double best_gap = kInfinity;
+    std::optional<Stop> best;
     auto look_at = [&](std::uint32_t k) {
       if (k == self || !present_in(world, k) || surely_not_in_path(world, k)) return;
       auto stop = in_path(world, k);
       if (stop && stop->gap < best_gap) {
         best_gap = stop->gap;
+        best = stop;
         leader_ = static_cast<std::int64_t>(k);
       }
     };
     // In ascending order either way, so that of equal gaps the same actor leads.
-    if (near_path(world, candidates_)) {
+    if (on_lanes_ahead(world, candidates_) || near_path(world, candidates_)) {
       for (std::uint32_t k : candidates_) look_at(k);
     } else {
       for (std::uint32_t k = 0; k < world.states.size(); ++k) look_at(k);
     }
+    // The leader as the scan found it (in_path would answer the same again).
+    if (best) stops.push_back(*best);
+    return;
   }
   if (leader_ < 0 || !present_in(world, static_cast<std::uint32_t>(leader_))) return;
   if (auto stop = in_path(world, static_cast<std::uint32_t>(leader_))) stops.push_back(*stop);
+}
+
+// The actors on the lanes this follower's path runs over from a little behind it to beyond what
+// it watches, or on the lanes of the junctions it passes there (among them those crossing or
+// merging with its own), and every loose actor (the world's LaneOccupancy): what a driver
+// keeping to its lanes has to look at. False when the world has no occupancy.
+bool LaneFollower::on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) {
+  if (world.occupancy == nullptr || route_starts_.empty()) return false;
+  const double lookahead =
+      std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  watch_lanes(*world.occupancy, s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
+  actors.clear();
+  for (LaneIndex lane : watched_) world.occupancy->append_on(lane, actors);
+  const std::vector<std::uint32_t>& loose = world.occupancy->loose();
+  actors.insert(actors.end(), loose.begin(), loose.end());
+  std::sort(actors.begin(), actors.end());
+  actors.erase(std::unique(actors.begin(), actors.end()), actors.end());
+  return true;
+}
+
+void LaneFollower::watch_lanes(const LaneOccupancy& occupancy, double from, double to) {
+  // The route segments ending after `from` and beginning before `to` (at least one).
+  const auto begins = route_starts_.begin(), ends = route_starts_.end();
+  const auto first_after = std::upper_bound(begins, ends, from);
+  const std::size_t first =
+      first_after == begins ? 0 : static_cast<std::size_t>(first_after - begins) - 1;
+  const auto before_to = static_cast<std::size_t>(std::lower_bound(begins, ends, to) - begins);
+  const std::size_t last = before_to == 0 ? first : std::max(first, before_to - 1);
+  if (first == watched_first_ && last == watched_last_) return;
+  watched_first_ = first;
+  watched_last_ = last;
+  watched_.clear();
+  for (std::size_t k = first; k <= last && k < route_.segments.size(); ++k) {
+    const LaneIndex lane = route_.segments[k].lane;
+    watched_.push_back(lane);
+    // Every lane of its junction: more than those crossing or merging with it (conflicts_of),
+    // whose centre lines cost far more to test than the few actors more to look at.
+    if (auto junction = map_->lane(lane).junction) {
+      const std::vector<LaneIndex>& lanes = occupancy.junction_lanes(*junction);
+      watched_.insert(watched_.end(), lanes.begin(), lanes.end());
+    }
+  }
+  std::sort(watched_.begin(), watched_.end());
+  watched_.erase(std::unique(watched_.begin(), watched_.end()), watched_.end());
 }
 
 // The actors that in_path could find in the path ahead, from the world's grid: those with a point
@@ -257,6 +318,18 @@ bool LaneFollower::surely_no_nearer(MapPoint point, double reach, double extent,
   return std::sqrt(dx * dx + dy * dy) - reach - body_.length / 2 - extent - kMargin >= gap;
 }
 
+// Where actor k will be within the prediction time (in_path's second point): the simulation's
+// prediction for every follower of the step when it made one for this horizon, else the same
+// computed here. Its position when it stands.
+MapPoint LaneFollower::predicted_of(const WorldSnapshot& world, std::uint32_t k) const {
+  const KinematicState& other = world.states[k];
+  if (!(other.speed > kPredictedMinSpeed)) return {other.x, other.y};
+  return world.predicted.size() == world.states.size() &&
+                 world.prediction_time == settings_.prediction_time
+             ? world.predicted[k]
+             : predicted_point(other, settings_.prediction_time);
+}
+
 // Actor k as something to stop behind: where it is, or where it will be within the prediction
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
 // ahead. A vehicle coming the other way counts as standing.
@@ -271,13 +344,7 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   const double velocity = longitudinal_velocity(other);
   // Where it will be: the simulation's prediction for every follower of the step when it made one
   // for this horizon, else the same computed here.
-  MapPoint predicted{other.x, other.y};
-  if (moving)
-    predicted = world.predicted.size() == world.states.size() &&
-                        world.prediction_time == settings_.prediction_time
-                    ? world.predicted[k]
-                    : predicted_point(other, tau);
-  const MapPoint points[] = {{other.x, other.y}, predicted};
+  const MapPoint points[] = {{other.x, other.y}, predicted_of(world, k)};
   if (hints_.size() < 2 * world.states.size()) {
     hints_.resize(2 * world.states.size(), 0);
     starts_.resize(2 * world.states.size(), 0);

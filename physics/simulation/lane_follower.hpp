@@ -88,7 +88,13 @@ class LaneFollower {
   double bend_acceleration() const;
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
   bool near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const;
+  bool on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors);
+  // The lanes of the route from route distance `from` to `to` and every lane of the junctions
+  // it runs through there, into watched_ (kept while the stretch covers the same route
+  // segments).
+  void watch_lanes(const LaneOccupancy& occupancy, double from, double to);
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
+  MapPoint predicted_of(const WorldSnapshot& world, std::uint32_t k) const;
   // in_path's first tests, inlined into the scan: whether actor k is surely not in the path
   // (too far off, or behind), which is the answer for most actors at most scans.
   bool surely_not_in_path(const WorldSnapshot& world, std::uint32_t k) const;
@@ -109,9 +115,12 @@ class LaneFollower {
   const RoadMap* map_;
   LaneRoute route_;
   Polyline path_;
-  std::vector<double> headings_;  // of each path segment
-  PolylineBoxes boxes_;           // of runs of path segments, for nearest_on_path
-  SegmentFrames frames_;          // of path segments, for nearest_on_path's projections
+  std::vector<double> headings_;      // of each path segment
+  PolylineBoxes boxes_;               // of runs of path segments, for nearest_on_path
+  SegmentFrames frames_;              // of path segments, for nearest_on_path's projections
+  std::vector<double> route_starts_;  // route distance where each route segment begins
+  std::vector<LaneIndex> watched_;    // on_lanes_ahead's lanes, ascending
+  std::size_t watched_first_ = 1, watched_last_ = 0;  // the route segments they are of
   std::vector<double> envelope_;  // at each vertex: the most speed from which the bends ahead
                                   // can be taken at comfortable deceleration
   std::vector<Feature> features_;

@@ -25,7 +25,8 @@ inline MapPoint predicted_point(const KinematicState& state, double horizon) {
 }
 
 // predicted_point(states[k], horizon) for every actor k that moves (kPredictedMinSpeed), and its
-// position for one that stands, into `points`, step after step. Most actors keep their heading
+// position for one that stands, into `points`, step after step; and the cosine and sine of every
+// actor's heading (facings()). Most actors keep their heading
 // from one step to the next (a lane follower on a straight segment, a walking pedestrian), so the
 // cosine and sine of each actor's last heading are kept: the same numbers without a sincos.
 class PointPredictor {
@@ -39,13 +40,13 @@ class PointPredictor {
     }
     for (std::size_t k = 0; k < states.size(); ++k) {
       const KinematicState& state = states[k];
-      if (!(state.speed > kPredictedMinSpeed)) {
-        points[k] = {state.x, state.y};
-        continue;
-      }
       if (!(state.heading == headings_[k])) {
         headings_[k] = state.heading;
         facings_[k] = {std::cos(state.heading), std::sin(state.heading)};
+      }
+      if (!(state.speed > kPredictedMinSpeed)) {
+        points[k] = {state.x, state.y};
+        continue;
       }
       // predicted_point's arithmetic, in its order.
       const double velocity = longitudinal_velocity(state);
@@ -53,6 +54,9 @@ class PointPredictor {
                    state.y + facings_[k].y * velocity * horizon};
     }
   }
+
+  // The cosine and sine of every actor's heading at the last predict (for LaneOccupancy).
+  const std::vector<MapPoint>& facings() const { return facings_; }
 
  private:
   std::vector<double> headings_;   // of each actor when its cosine and sine were taken

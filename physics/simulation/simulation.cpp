@@ -293,9 +293,15 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   std::vector<MapPoint> predicted;
   PointPredictor predictor;
   // With many actors most are far from any one follower: a grid lets each scan skip them. With
-  // few, building it costs more than looking at them all (benchmarks: 30 actors on one road).
+  // few, building it costs more than looking at them all (benchmarks: 30 actors on one road);
+  // there followers look by lane (lane_occupancy.hpp), which cost more than the grid saves with
+  // 100 actors or more (benchmarks: filing them every step, flows scanning at different steps).
   constexpr std::size_t kGridFromActors = 48;
   const bool uses_grid = actor_count >= kGridFromActors;
+  std::optional<LaneOccupancy> occupancy;
+  if (!uses_grid && (!traffic.empty() || std::any_of(followers.begin(), followers.end(),
+                                                     [](const auto& f) { return f.has_value(); })))
+    occupancy.emplace(map);
   ActorGrid grid;
   std::vector<WorldObject> on_map;       // the objects of `truth` present now, for perception
   std::vector<WorldObject> seen_on_map;  // what perception reports of them
@@ -379,6 +385,12 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
         for (std::size_t k = 0; k < first_obstacle; ++k)
           manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
       predictor.predict(states, prediction_time, predicted);
+      const std::span<const std::uint8_t> present_now =
+          traffic.empty() ? std::span<const std::uint8_t>{}
+                          : std::span<const std::uint8_t>(present);
+      if (occupancy)
+        occupancy->set_step({states, predictor.facings(), fixes, lengths, widths, kinds,
+                             present_now, prediction_time});
       if (uses_grid)
         grid.build(states, predicted, lengths, widths,
                    traffic.empty() ? std::span<const std::uint8_t>{}
@@ -400,7 +412,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                                   : std::span<const std::uint8_t>(present),
                   predicted,
                   prediction_time,
-                  uses_grid ? &grid : nullptr};
+                  uses_grid ? &grid : nullptr,
+                  occupancy ? &*occupancy : nullptr};
     }
 
     route.update({states[kEgo].x, states[kEgo].y});

@@ -10,6 +10,7 @@
 #include "physics/map/map_description.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/actor_grid.hpp"
+#include "physics/simulation/lane_occupancy.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
 #include "physics/trace/trace.hpp"
@@ -40,6 +41,8 @@ struct WorldSnapshot {
   // The actors' positions and predicted points on a grid, for the lane followers' scans; null
   // when not built (followers then look at every actor).
   const ActorGrid* grid = nullptr;
+  // The actors by the lanes they occupy, for the lane followers' scans; null when not built.
+  const LaneOccupancy* occupancy = nullptr;
 };
 
 inline bool present_in(const WorldSnapshot& world, std::uint32_t actor) {

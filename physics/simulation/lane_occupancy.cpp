@@ -1,0 +1,139 @@
+// The actors by the lanes they occupy, one step at a time (see lane_occupancy.hpp).
+#include "physics/simulation/lane_occupancy.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "physics/map/segment_walk.hpp"
+#include "physics/simulation/predicted_points.hpp"
+
+namespace scenfuzz {
+namespace {
+
+// m along the lanes beyond the body's reach that still files it on the next lane: a follower's
+// search finds a point within its reach of the path, a few metres either way.
+constexpr double kAlongMargin = 2;
+// Successor and predecessor links followed from an actor's lane: far more than a body and 1.5 s
+// of driving cross, and a bound for rings (a closed lane is its own successor).
+constexpr int kMaxDepth = 6;
+
+double narrowest_width(const std::vector<WidthSample>& samples) {
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (const WidthSample& sample : samples) narrowest = std::min(narrowest, sample.width);
+  return narrowest;
+}
+
+}  // namespace
+
+LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map) {
+  narrowest_.reserve(map.lanes().size());
+  for (const Lane& lane : map.lanes())
+    narrowest_.emplace_back(narrowest_width(lane.left_width), narrowest_width(lane.right_width));
+  filing_.first.assign(map.lanes().size(), 0);
+  junction_lanes_.resize(map.junctions().size());
+  for (LaneIndex lane = 0; lane < map.lanes().size(); ++lane)
+    if (auto junction = map.lane(lane).junction; junction && *junction < junction_lanes_.size())
+      junction_lanes_[*junction].push_back(lane);
+}
+
+void LaneOccupancy::set_step(const OccupancyInputs& inputs) {
+  inputs_ = inputs;
+  filing_.built = false;
+}
+
+void LaneOccupancy::build() const {
+  Filing& filing = filing_;
+  if (filing.built) return;
+  filing.built = true;
+  for (const auto& entry : filing.filed) filing.first[entry.first] = 0;
+  filing.filed.clear();
+  filing.loose.clear();
+  if (filing.segments.size() != inputs_.states.size())
+    filing.segments.assign(inputs_.states.size(), std::numeric_limits<std::size_t>::max());
+  for (std::size_t k = 0; k < inputs_.states.size(); ++k) {
+    if (!inputs_.present.empty() && inputs_.present[k] == 0) continue;
+    const auto actor = static_cast<std::uint32_t>(k);
+    if (!file_on_lanes(actor)) filing.loose.push_back(actor);
+  }
+  // By lane, and within a lane in ascending actor order, each actor once (rings lead back to
+  // lanes already filed under).
+  std::sort(filing.filed.begin(), filing.filed.end());
+  filing.filed.erase(std::unique(filing.filed.begin(), filing.filed.end()), filing.filed.end());
+  for (std::size_t i = filing.filed.size(); i-- > 0;)
+    filing.first[filing.filed[i].first] = static_cast<std::uint32_t>(i + 1);
+}
+
+void LaneOccupancy::append_on(LaneIndex lane, std::vector<std::uint32_t>& actors) const {
+  build();
+  const Filing& filing = filing_;
+  if (lane >= filing.first.size() || filing.first[lane] == 0) return;
+  for (std::size_t i = filing.first[lane] - 1;
+       i < filing.filed.size() && filing.filed[i].first == lane; ++i)
+    actors.push_back(filing.filed[i].second);
+}
+
+const std::vector<std::uint32_t>& LaneOccupancy::loose() const {
+  build();
+  return filing_.loose;
+}
+
+bool LaneOccupancy::file_on_lanes(std::uint32_t k) const {
+  const OccupancyInputs& inputs = inputs_;
+  if (inputs.kinds[k] != TraceActorKind::vehicle || inputs.lanes[k].lane < 0) return false;
+  const KinematicState& state = inputs.states[k];
+  const auto lane_index = static_cast<LaneIndex>(inputs.lanes[k].lane);
+  const Lane& lane = map_->lane(lane_index);
+  const Polyline& centre = lane.centre_line;
+  const double s = inputs.lanes[k].s;
+  std::size_t& segment = filing_.segments[k];
+  segment =
+      segment < centre.segment_count() ? segment_at_from(centre, s, segment) : centre.segment_at(s);
+  // The lane's direction there, and the actor's offset from its centre line and heading to it.
+  const MapPoint a = centre.points()[segment], b = centre.points()[segment + 1];
+  const double length = centre.arc_lengths()[segment + 1] - centre.arc_lengths()[segment];
+  if (!(length > 0)) return false;
+  const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
+  const double lateral = ux * (state.y - a.y) - uy * (state.x - a.x);
+  const MapPoint facing = inputs.facings[k];
+  const double cos_relative = ux * facing.x + uy * facing.y;
+  const double sin_relative = ux * facing.y - uy * facing.x;
+  const double half_length = inputs.lengths[k] / 2, half_width = inputs.widths[k] / 2;
+  const double across = std::abs(sin_relative) * half_length + std::abs(cos_relative) * half_width;
+  const bool moving = state.speed > kPredictedMinSpeed;
+  const double travel = moving ? longitudinal_velocity(state) * inputs.prediction_time : 0;
+  const double drift = sin_relative * travel;  // sideways to the lane, by the prediction time
+  const auto [left, right] = narrowest_[lane_index];
+  for (const double offset : {lateral, lateral + drift})
+    if (!(offset + across <= left && offset - across >= -right)) return false;
+  filing_.filed.emplace_back(lane_index, k);
+  const double extent = half_length + half_width + kAlongMargin;
+  const double forward = cos_relative * travel;  // along the lane, by the prediction time
+  const double ahead = s + std::max(forward, 0.0) + extent - centre.length();
+  if (ahead > 0)
+    for (LaneIndex next : lane.successors) file_ahead(next, ahead, k, 1);
+  const double behind = extent + std::max(-forward, 0.0) - s;
+  if (behind > 0)
+    for (LaneIndex previous : lane.predecessors) file_behind(previous, behind, k, 1);
+  return true;
+}
+
+// Files actor k on `lane`, which its body or predicted body reaches `reach` metres into, and on
+// the lanes after it that it reaches.
+void LaneOccupancy::file_ahead(LaneIndex lane, double reach, std::uint32_t k, int depth) const {
+  filing_.filed.emplace_back(lane, k);
+  const double beyond = reach - map_->lane(lane).length();
+  if (beyond <= 0 || depth >= kMaxDepth) return;
+  for (LaneIndex next : map_->lane(lane).successors) file_ahead(next, beyond, k, depth + 1);
+}
+
+// The same backwards: `lane` ends `reach` metres ahead of the body's rear.
+void LaneOccupancy::file_behind(LaneIndex lane, double reach, std::uint32_t k, int depth) const {
+  filing_.filed.emplace_back(lane, k);
+  const double beyond = reach - map_->lane(lane).length();
+  if (beyond <= 0 || depth >= kMaxDepth) return;
+  for (LaneIndex previous : map_->lane(lane).predecessors)
+    file_behind(previous, beyond, k, depth + 1);
+}
+
+}  // namespace scenfuzz

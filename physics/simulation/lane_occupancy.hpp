@@ -1,0 +1,87 @@
+// The actors filed by the lanes they occupy at one step, as traffic simulators find what is ahead
+// of a vehicle (SUMO: the vehicles on the lanes of its route and their foes), so that a lane
+// follower's scan looks only at the actors on the lanes its path runs over and at the lanes
+// that cross them, instead of at every actor near its path. Built once per step by the
+// simulation for all followers.
+//
+// A vehicle is filed by lane only while it keeps to its lane: its body lies within the lane's
+// narrowest width, both where it is and where it is predicted to be (predicted_points.hpp, its
+// heading held for the prediction time against the lane's direction where it is). It is filed
+// under its lane, under the successors its predicted body can reach, and under the predecessors
+// its body can reach back into. Every other actor (the ego, pedestrians, obstacles, a vehicle
+// off the lanes, changing lane or turned across its lane) is "loose": followers look at it by
+// geometry, as at every actor before.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "physics/actors/kinematics.hpp"
+#include "physics/map/map_point.hpp"
+#include "physics/map/road_map.hpp"
+#include "physics/simulation/lane_tracker.hpp"
+#include "physics/trace/trace.hpp"
+
+namespace scenfuzz {
+
+// What LaneOccupancy::build reads of one step, by actor id.
+struct OccupancyInputs {
+  std::span<const KinematicState> states;
+  std::span<const MapPoint> facings;  // cos and sin of each actor's heading
+  std::span<const LaneFix> lanes;
+  std::span<const double> lengths;
+  std::span<const double> widths;
+  std::span<const TraceActorKind> kinds;
+  std::span<const std::uint8_t> present;  // empty: every actor is present
+  double prediction_time = 0;             // s
+};
+
+class LaneOccupancy {
+ public:
+  explicit LaneOccupancy(const RoadMap& map);
+
+  // The step's actors; they are filed when first asked for (followers scan every few steps
+  // only, so most steps nobody asks). The spans must stay valid until the next call.
+  void set_step(const OccupancyInputs& inputs);
+
+  // Appends the actors filed under `lane` (ascending).
+  void append_on(LaneIndex lane, std::vector<std::uint32_t>& actors) const;
+  // Every present actor filed under no lane (ascending).
+  const std::vector<std::uint32_t>& loose() const;
+
+  // Every lane of junction `junction` (ascending): those that cross or merge with one of them
+  // (lane_conflicts.hpp) among them, found without testing each pair's centre lines.
+  const std::vector<LaneIndex>& junction_lanes(std::uint32_t junction) const {
+    return junction_lanes_[junction];
+  }
+
+ private:
+  // The filing, kept out of the const queries' sight: it is a cache of the step's inputs.
+  struct Filing {
+    std::vector<std::pair<LaneIndex, std::uint32_t>> filed;  // (lane, actor), sorted
+    // Of each lane: 1 + the index into `filed` of its first entry, or 0 (only filed lanes are
+    // set, and reset at the next build).
+    std::vector<std::uint32_t> first;
+    std::vector<std::uint32_t> loose;
+    std::vector<std::size_t> segments;  // of each actor: its lane's segment at the last build
+    bool built = false;
+  };
+
+  void build() const;
+  // Whether actor k keeps to lane fix.lane now and where predicted; files it if so.
+  bool file_on_lanes(std::uint32_t k) const;
+  void file_ahead(LaneIndex lane, double reach, std::uint32_t k, int depth) const;
+  void file_behind(LaneIndex lane, double reach, std::uint32_t k, int depth) const;
+
+  const RoadMap* map_;
+  // Of each lane: its narrowest width left and right of the centre line.
+  std::vector<std::pair<double, double>> narrowest_;
+  std::vector<std::vector<LaneIndex>> junction_lanes_;  // by junction
+  OccupancyInputs inputs_;
+  mutable Filing filing_;
+};
+
+}  // namespace scenfuzz
