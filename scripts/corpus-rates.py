@@ -11,8 +11,8 @@ every seed in corpora/ (not corpora/benchmarks/) this runs
 and prints, per seed and spec, the violated count over the judged points, the rate, the
 time-outs (a run ended by its duration while the ego still progressed: not a violation), the
 stuck runs (violations where the ego had stopped making progress), the evaluations with an ego
-collision, and, replaying each written finding that has a collision with `scenfuzz run --json`,
-how many of those collisions the responsibility oracle puts on the ego (ego or shared).
+collision, and, from summary.json, how many of the written findings' collisions the
+responsibility oracle puts on the ego (ego or shared) or on the other.
 Rates above the limit (default 20 %) are marked with '!'.
 
 Usage: scripts/corpus-rates.py [--scenfuzz BIN] [--out DIR] [--map-path DIR] [--budget N]
@@ -90,24 +90,14 @@ def count_evaluations(evaluations_csv: Path, specs: list[str]) -> tuple[int, dic
     return judged, per_spec, collisions
 
 
-def finding_responsibilities(args, summary: dict, scratch: Path) -> dict[str, int]:
-    """Replays every written finding with a collision and counts the oracle's verdicts on the
-    ego's collisions: {'ego': n, 'shared': n, 'other': n}."""
+def finding_responsibilities(summary: dict) -> dict[str, int]:
+    """The responsibility the oracle gave the collision of each written finding (summary.json's
+    per-finding `responsibility`): {'ego': n, 'shared': n, 'other': n}."""
     counts = {"ego": 0, "shared": 0, "other": 0}
     for finding in summary.get("findings", []):
-        if "collision" not in finding or "seed" not in finding:
-            continue
-        command = [args.scenfuzz, "run", finding["file"], "--seed", str(finding["seed"]),
-                   "--json", "--out", str(scratch)]
-        for folder in args.map_path:
-            command += ["--map-path", folder]
-        result = subprocess.run(command, capture_output=True, text=True)
-        if result.returncode not in (0, 1):
-            continue
-        for collision in json.loads(result.stdout).get("collisions", []):
-            verdict = collision.get("responsibility")
-            if verdict in counts:
-                counts[verdict] += 1
+        verdict = finding.get("responsibility")
+        if verdict in counts:
+            counts[verdict] += 1
     return counts
 
 
@@ -120,7 +110,7 @@ def measure(args, seed: Path) -> dict:
     judged, per_spec, collisions = count_evaluations(out / "evaluations.csv", specs)
     return {"seed": seed.relative_to(REPO / "corpora").as_posix(), "judged": judged,
             "specs": per_spec, "collisions": collisions,
-            "responsibility": finding_responsibilities(args, summary, out / "replay")}
+            "responsibility": finding_responsibilities(summary)}
 
 
 def print_table(results: list[dict], limit: float, markdown: bool) -> None:
