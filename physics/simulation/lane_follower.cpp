@@ -330,6 +330,15 @@ MapPoint LaneFollower::predicted_of(const WorldSnapshot& world, std::uint32_t k)
              : predicted_point(other, settings_.prediction_time);
 }
 
+// Actor k is behind the follower in its lane: where it will be is for it to mind (it must brake),
+// not a stop for the follower, which would otherwise brake hard for a faster car closing from
+// behind (its point 1.5 s on lies ahead of the follower).
+bool LaneFollower::behind_in_lane(const WorldSnapshot& world, std::uint32_t k) const {
+  const KinematicState& other = world.states[k];
+  const PolylineProjection p = frames_.project(path_, {other.x, other.y}, segment_);
+  return p.s < s_ && std::abs(p.lateral) <= body_.width / 2 + world.widths[k] / 2;
+}
+
 // Actor k as something to stop behind: where it is, or where it will be within the prediction
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
 // ahead. A vehicle coming the other way counts as standing.
@@ -353,7 +362,7 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
   std::optional<Stop> best;
-  for (int which = 0; which < (tau > 0 ? 2 : 1); ++which) {
+  for (int which = 0; which < (tau > 0 && !behind_in_lane(world, k) ? 2 : 1); ++which) {
     // Where it will be cannot be nearer than where it is when the path is too far along there
     // (most leaders drive on ahead): the search would be rejected by the gap test below.
     if (best &&

@@ -93,6 +93,7 @@ class LaneFollower {
   // it runs through there, into watched_ (kept while the stretch covers the same route
   // segments).
   void watch_lanes(const LaneOccupancy& occupancy, double from, double to);
+  bool behind_in_lane(const WorldSnapshot& world, std::uint32_t k) const;
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
   MapPoint predicted_of(const WorldSnapshot& world, std::uint32_t k) const;
   // in_path's first tests, inlined into the scan: whether actor k is surely not in the path
