@@ -1,13 +1,8 @@
+// The output folder's lock, what an earlier search left in it, and a killed run's temporary files.
 #include "fuzz/output_folder.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <string_view>
+#include <system_error>
 
 namespace scenfuzz {
 
@@ -17,60 +12,18 @@ namespace {
 
 constexpr std::string_view kSearchFiles[] = {"evaluations.csv", "summary.json", "search.json"};
 
-std::string lock_holder(const fs::path& lock_path) {
-  std::ifstream in(lock_path);
-  std::string pid;
-  std::getline(in, pid);
-  return pid.empty() ? "another process" : "process " + pid;
-}
-
 bool is_temporary(const fs::path& path) {
   return path.filename().string().find(".tmp.") != std::string::npos;
 }
 
 }  // namespace
 
-OutputFolderLock::~OutputFolderLock() {
-  if (descriptor_ >= 0) ::close(descriptor_);
-}
-
-OutputFolderLock::OutputFolderLock(OutputFolderLock&& other) noexcept
-    : descriptor_(other.descriptor_) {
-  other.descriptor_ = -1;
-}
-
-OutputFolderLock& OutputFolderLock::operator=(OutputFolderLock&& other) noexcept {
-  if (this != &other) {
-    if (descriptor_ >= 0) ::close(descriptor_);
-    descriptor_ = other.descriptor_;
-    other.descriptor_ = -1;
-  }
-  return *this;
-}
-
 std::string OutputFolderLock::acquire(const fs::path& dir) {
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error) return "cannot create '" + dir.string() + "': " + error.message();
-  const fs::path lock_path = dir / ".lock";
-  const int descriptor = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (descriptor < 0) return "cannot write '" + lock_path.string() + "': " + std::strerror(errno);
-  if (::flock(descriptor, LOCK_EX | LOCK_NB) != 0) {
-    const int reason = errno;
-    ::close(descriptor);
-    if (reason != EWOULDBLOCK)
-      return "cannot lock '" + lock_path.string() + "': " + std::strerror(reason);
-    return "'" + dir.string() + "' is in use by another search (" + lock_holder(lock_path) +
-           "); wait for it to end, or write into another folder with --out DIR";
-  }
-  // The pid is for the message above only; the lock itself is the flock.
-  const std::string pid = std::to_string(::getpid()) + "\n";
-  if (::ftruncate(descriptor, 0) != 0 || ::write(descriptor, pid.data(), pid.size()) < 0) {
-    // Not fatal: the lock holds; another search's message just cannot name us.
-  }
-  if (descriptor_ >= 0) ::close(descriptor_);
-  descriptor_ = descriptor;
-  return {};
+  FolderLockRefusal refusal;
+  if (lock_.acquire(dir, ".lock", refusal)) return {};
+  if (!refusal.busy) return refusal.error;
+  return "'" + dir.string() + "' is in use by another search (" + refusal.holder +
+         "); wait for it to end, or write into another folder with --out DIR";
 }
 
 bool holds_search(const fs::path& dir) {

@@ -1,83 +1,14 @@
-// CampaignLock: open, flock(LOCK_EX | LOCK_NB), then write who holds it.
+// CampaignLock: the folder lock, and the message a second run gets.
 #include "fuzz/campaign/campaign_lock.hpp"
-
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <chrono>
-#include <cstring>
-#include <ctime>
-#include <fstream>
-#include <system_error>
 
 namespace scenfuzz {
 
-namespace fs = std::filesystem;
-
-namespace {
-
-std::string holder_text() {
-  char host[256] = "";
-  if (::gethostname(host, sizeof host - 1) != 0) std::strcpy(host, "this host");
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  ::gmtime_r(&now, &utc);
-  char since[32];
-  std::strftime(since, sizeof since, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return "process " + std::to_string(::getpid()) + " on " + host + ", since " + since;
-}
-
-std::string read_holder(const fs::path& lock_path) {
-  std::ifstream in(lock_path);
-  std::string holder;
-  std::getline(in, holder);
-  return holder.empty() ? "another process" : holder;
-}
-
-}  // namespace
-
-CampaignLock::~CampaignLock() {
-  if (descriptor_ >= 0) ::close(descriptor_);
-}
-
-CampaignLock::CampaignLock(CampaignLock&& other) noexcept : descriptor_(other.descriptor_) {
-  other.descriptor_ = -1;
-}
-
-CampaignLock& CampaignLock::operator=(CampaignLock&& other) noexcept {
-  if (this != &other) {
-    if (descriptor_ >= 0) ::close(descriptor_);
-    descriptor_ = other.descriptor_;
-    other.descriptor_ = -1;
-  }
-  return *this;
-}
-
-std::string CampaignLock::acquire(const fs::path& dir) {
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error) return "cannot create '" + dir.string() + "': " + error.message();
-  const fs::path lock_path = dir / "campaign.lock";
-  const int descriptor = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (descriptor < 0) return "cannot write '" + lock_path.string() + "': " + std::strerror(errno);
-  if (::flock(descriptor, LOCK_EX | LOCK_NB) != 0) {
-    const int reason = errno;
-    ::close(descriptor);
-    if (reason != EWOULDBLOCK)
-      return "cannot lock '" + lock_path.string() + "': " + std::strerror(reason);
-    return "the campaign '" + dir.string() + "' is in use by another run (" +
-           read_holder(lock_path) + "); wait for it to end, or stop it";
-  }
-  // Who holds it is for the message above only; the lock itself is the flock.
-  const std::string holder = holder_text() + "\n";
-  if (::ftruncate(descriptor, 0) != 0 || ::write(descriptor, holder.data(), holder.size()) < 0) {
-    // Not fatal: the lock holds; a second run's message just cannot name this one.
-  }
-  if (descriptor_ >= 0) ::close(descriptor_);
-  descriptor_ = descriptor;
-  return {};
+std::string CampaignLock::acquire(const std::filesystem::path& dir) {
+  FolderLockRefusal refusal;
+  if (lock_.acquire(dir, "campaign.lock", refusal)) return {};
+  if (!refusal.busy) return refusal.error;
+  return "the campaign '" + dir.string() + "' is in use by another run (" + refusal.holder +
+         "); wait for it to end, or stop it";
 }
 
 }  // namespace scenfuzz
