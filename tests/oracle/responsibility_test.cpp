@@ -434,17 +434,21 @@ TEST(ResponsibilityTest, EgoTurningLeftIntoAnOncomingCarGoingStraightIsAtFault) 
   EXPECT_FALSE(says_zero_seconds(r.reason)) << r.reason;
 }
 
+// How far the ego's left turn at the crossroads runs until its centre is 0.5 m into the oncoming
+// lane (x = -1.25), to the centimetre.
+double distance_into_oncoming_lane(const RoadMap& map) {
+  const Motion turning = ego_turning_left(map, steady(1));
+  for (double d = 0;; d += 0.01)
+    if (turning(d).x <= -1.25) return d;
+}
+
 TEST(ResponsibilityTest, EgoStoppingInTheOncomingLaneMidTurnJustBeforeACarComesIsAtFault) {
   const RoadMap map = builtin("crossroads");
   Trace trace = two_actor_trace(20);
   add_lights(trace, SignalColour::green, SignalColour::green);
   // The ego stops with its centre 0.5 m into the oncoming lane; the car, braking at 4 m/s^2 from
   // 1 s before, hits it 1.5 s later.
-  const double stop_at = [&] {
-    const Motion turning = ego_turning_left(map, steady(1));
-    for (double d = 0;; d += 0.01)
-      if (turning(d).x <= -1.25) return d;
-  }();
+  const double stop_at = distance_into_oncoming_lane(map);
   const Distance ego = stopping_at(6, 3, stop_at);
   const double rest = time_at_x(map, ego, -1.25 + 1e-6);
   const Motion ego_motion = ego_turning_left(map, ego);
@@ -463,11 +467,7 @@ TEST(ResponsibilityTest, EgoStoppedInTheOncomingLaneLongBeforeACarRamsItIsNotAtF
   const RoadMap map = builtin("crossroads");
   Trace trace = two_actor_trace(30);
   add_lights(trace, SignalColour::green, SignalColour::green);
-  const double stop_at = [&] {
-    const Motion turning = ego_turning_left(map, steady(1));
-    for (double d = 0;; d += 0.01)
-      if (turning(d).x <= -1.25) return d;
-  }();
+  const double stop_at = distance_into_oncoming_lane(map);
   const Distance ego = stopping_at(6, 3, stop_at);
   const Motion ego_motion = ego_turning_left(map, ego);
   // Standing from about 6 s; the car arrives at 25 s, 200 m away then: room to stop.
