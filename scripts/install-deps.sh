@@ -14,6 +14,8 @@ packages=(
   libtomlplusplus-dev libsqlite3-dev             # campaigns: campaign.toml and campaign.db
   libgtest-dev libgmock-dev libbenchmark-dev
   librsvg2-bin                                   # rsvg-convert: tests render every trace picture
+  chromium                                       # the campaign report's test loads it headless
+  openmpi-bin libopenmpi-dev                     # campaigns scale out with mpirun
 )
 
 missing=()
