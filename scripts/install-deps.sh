@@ -12,6 +12,7 @@ packages=(
   libprotobuf-dev protobuf-compiler              # Apollo HD maps
   libcli11-dev nlohmann-json3-dev
   libtomlplusplus-dev libsqlite3-dev             # campaigns: campaign.toml and campaign.db
+  libpugixml-dev                                 # campaigns: JUnit XML
   libgtest-dev libgmock-dev libbenchmark-dev
   librsvg2-bin                                   # rsvg-convert: tests render every trace picture
   chromium                                       # the campaign report's test loads it headless
