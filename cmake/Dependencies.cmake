@@ -52,6 +52,8 @@ find_package(nlohmann_json 3.10 REQUIRED)
 # SQLite comes through CMake's own FindSQLite3 module (SQLite::SQLite3).
 find_package(tomlplusplus 3 REQUIRED CONFIG)
 find_package(SQLite3 3.31 REQUIRED)
+# The campaign's JUnit XML: pugixml's CMake config (pugixml::pugixml), linked PRIVATE.
+find_package(pugixml 1.11 REQUIRED CONFIG)
 
 if(SCENFUZZ_BUILD_TESTS)
   find_package(GTest REQUIRED)
