@@ -23,6 +23,14 @@ std::string trimmed(std::string text) {
   return text;
 }
 
+// read_scenario's message without the command line's "scenfuzz: error: ": the replay's error is
+// shown inside the campaign's outputs.
+std::string without_prefix(std::string text) {
+  const std::string prefix = "scenfuzz: error: ";
+  if (text.starts_with(prefix)) text.erase(0, prefix.size());
+  return text;
+}
+
 // What one seed's run said: whether it failed as the target did, or why it could not be judged.
 struct SeedVerdict {
   bool failing = false;
@@ -133,7 +141,7 @@ ReplayOutcome replay_scenario(const ReplayTarget& target, const ReplaySettings& 
     std::ostringstream diagnostics;
     std::optional<ScenarioFile> input =
         read_scenario(target.scenario.string(), "replay", diagnostics);
-    if (!input) return {0, 0, trimmed(diagnostics.str())};
+    if (!input) return {0, 0, without_prefix(trimmed(diagnostics.str()))};
     apply_scenario_overrides(settings.simulation, input->scenario);
     std::string error;
     const std::optional<ScenarioEvaluator> evaluator =

@@ -214,6 +214,34 @@ TEST_F(RegressionReplayTest, AnEgoPluginThatCrashesIsAnErrorNotACrash) {
   EXPECT_NE(outcome.error.find("ego"), std::string::npos) << outcome.error;
   EXPECT_EQ(replay_status(FailureModeStatus::new_mode, outcome), FailureModeStatus::new_mode);
 }
+
+TEST_F(RegressionReplayTest, AnEgoCrashStillFailsWithThePluginAndIsFixedWithoutIt) {
+  // A search with a plugin that crashes at its third step: one finding, ego_crash.
+  const std::string plugin = std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/libcrashing.so";
+  const fs::path out = dir_ / "search";
+  const Outcome run =
+      scenfuzz({"--budget", "8", "--seed", "0", source_file("corpora/avunit/cut_in_straight.avu"),
+                "--out", out.string(), "--ego-plugin", plugin});
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  const nlohmann::json findings = nlohmann::json::parse(slurp(out / "summary.json")).at("findings");
+  ASSERT_EQ(findings.size(), 1u);
+  ASSERT_EQ(findings[0].at("mode"), "ego_crash SIGSEGV");
+  const SearchFinding finding{findings[0].at("file").get<std::string>(), "ego_crash",
+                              "ego_crash SIGSEGV", "", findings[0].at("seed")};
+  const CampaignFailureMode mode = known_mode(finding, slurp(finding.file));
+  ReplaySettings crashing;
+  crashing.simulation.ego_plugin = plugin;
+  const ReplayOutcome still = replay_failure_mode(campaign_, mode, crashing);
+  EXPECT_EQ(still.error, "");
+  EXPECT_EQ(still.tried, kReplaySeeds);
+  EXPECT_EQ(still.failing, kReplaySeeds);
+  // The reference driver, as a campaign whose new ego no longer crashes.
+  const ReplayOutcome fixed = replay_failure_mode(campaign_, mode, ReplaySettings{});
+  EXPECT_EQ(fixed.error, "");
+  EXPECT_EQ(fixed.tried, kReplaySeeds);
+  EXPECT_EQ(fixed.failing, 0);
+  EXPECT_EQ(replay_status(FailureModeStatus::still_failing, fixed), FailureModeStatus::fixed);
+}
 #endif
 
 TEST(ReplaySeeds, TheFindingsOwnSeedFirstThenDerivedOnes) {
