@@ -52,6 +52,8 @@ find_package(nlohmann_json 3.10 REQUIRED)
 # SQLite comes through CMake's own FindSQLite3 module (SQLite::SQLite3).
 find_package(tomlplusplus 3 REQUIRED CONFIG)
 find_package(SQLite3 3.31 REQUIRED)
+# Campaigns spread over several machines under mpirun (fuzz/campaign/mpi_pool.cpp alone).
+find_package(MPI 3.1 REQUIRED COMPONENTS CXX)
 
 if(SCENFUZZ_BUILD_TESTS)
   find_package(GTest REQUIRED)
