@@ -54,6 +54,8 @@ find_package(tomlplusplus 3 REQUIRED CONFIG)
 find_package(SQLite3 3.31 REQUIRED)
 # The campaign's JUnit XML: pugixml's CMake config (pugixml::pugixml), linked PRIVATE.
 find_package(pugixml 1.11 REQUIRED CONFIG)
+# Campaigns spread over several machines under mpirun (fuzz/campaign/mpi_pool.cpp alone).
+find_package(MPI 3.1 REQUIRED COMPONENTS CXX)
 
 if(SCENFUZZ_BUILD_TESTS)
   find_package(GTest REQUIRED)
