@@ -34,6 +34,8 @@ struct ReportRun {
 struct BestSoFar {
   std::size_t simulations = 0;
   double best = 0;  // may be -infinity (the database keeps infinities)
+
+  bool operator==(const BestSoFar&) const = default;
 };
 
 // Where a run's searches of a seed began, counted in the seed's simulations: the chart marks it.

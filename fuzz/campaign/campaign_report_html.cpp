@@ -33,7 +33,7 @@ p { margin: 6px 0 12px; }
 .count { display: inline-block; min-width: 28px; padding: 0 8px; margin-left: 8px; border-radius: 14px;
   background: #eceff1; color: #263238; font-size: 15px; text-align: center; vertical-align: 2px; }
 .tiles { display: flex; flex-wrap: wrap; gap: 12px; margin: 16px 0; }
-.tile { border: 1px solid var(--line); border-radius: 8px; padding: 10px 16px; min-width: 140px; background: var(--band); }
+.tile { border: 1px solid var(--line); border-radius: 8px; padding: 10px 16px; min-width: 112px; background: var(--band); }
 .tile b { display: block; font-size: 24px; }
 .tile span { color: var(--muted); font-size: 13px; }
 .tile.new b { color: #c62828; } .tile.regressed b { color: #ef6c00; } .tile.fixed b { color: #2e7d32; }
@@ -45,12 +45,14 @@ tr:hover td { background: #fafbfc; }
 code { font: 13px/1.4 "DejaVu Sans Mono", Menlo, Consolas, monospace; background: #f1f3f4;
   padding: 2px 5px; border-radius: 4px; word-break: break-all; }
 .signature { display: block; color: var(--muted); font-size: 13px; margin-top: 2px; word-break: break-word; }
+td.replay { min-width: 320px; }
+td.when { white-space: nowrap; }
 .thumb img { width: 220px; height: auto; border: 1px solid var(--line); border-radius: 4px; display: block; }
 .badge { display: inline-block; padding: 1px 9px; border-radius: 10px; font-size: 13px; font-weight: 600; }
 .badge.ego { background: #fdecea; color: #b71c1c; } .badge.other { background: #eceff1; color: #37474f; }
 .badge.shared { background: #fff3e0; color: #e65100; } .badge.none { color: var(--muted); font-weight: 400; }
 .none-found { color: var(--muted); font-style: italic; }
-.charts { display: grid; grid-template-columns: repeat(auto-fill, minmax(600px, 1fr)); gap: 18px; }
+.charts { display: grid; grid-template-columns: repeat(auto-fill, minmax(540px, 1fr)); gap: 18px; }
 figure { margin: 0; border: 1px solid var(--line); border-radius: 8px; padding: 12px 14px; }
 figcaption { color: var(--muted); font-size: 13px; margin-bottom: 4px; }
 svg.chart { width: 100%; height: auto; display: block; font-family: inherit; }
@@ -74,9 +76,21 @@ std::string robustness_text(double value) {
   return number_text(value, 4);
 }
 
+// "2026-11-27T02:00:00Z" as people read it in a table: "2026-11-27 02:00".
+std::string short_time(const std::string& iso) {
+  if (iso.size() < 16 || iso[10] != 'T') return iso;
+  return iso.substr(0, 10) + " " + iso.substr(11, 5);
+}
+
 std::string run_text(std::int64_t id, const std::string& started) {
   return "run " + std::to_string(id) +
-         (started.empty() ? "" : "<span class=\"signature\">" + text(started) + "</span>");
+         (started.empty() ? ""
+                          : "<span class=\"signature\">" + text(short_time(started)) + "</span>");
+}
+
+// "1 search", "3 searches".
+std::string counted(std::size_t count, const std::string& one, const std::string& many) {
+  return std::to_string(count) + " " + (count == 1 ? one : many);
 }
 
 std::string responsibility_badge(const std::string& responsibility) {
@@ -107,9 +121,9 @@ std::string failure_mode_row(const ReportFailureMode& shown, const ReportPage& p
                   ? "<span class=\"muted\">seed " + std::to_string(mode.seed_id) + "</span>"
                   : text(shown.seed_path)) +
          cell(responsibility_badge(mode.responsibility)) +
-         cell(run_text(shown.mode.first_seen_run, shown.first_seen_started)) +
-         cell(run_text(shown.mode.last_seen_run, shown.last_seen_started)) +
-         cell("<code>" + text(mode.replay_command) + "</code>" + scenario) + "</tr>\n";
+         cell(run_text(shown.mode.first_seen_run, shown.first_seen_started), "when") +
+         cell(run_text(shown.mode.last_seen_run, shown.last_seen_started), "when") +
+         cell("<code>" + text(mode.replay_command) + "</code>" + scenario, "replay") + "</tr>\n";
 }
 
 struct StatusSection {
@@ -172,9 +186,9 @@ std::string runs_table(const ReportData& data) {
       "<th class=\"number\">Regressed</th><th class=\"number\">Fixed</th></tr></thead>\n<tbody>\n";
   for (const ReportRun& run : data.runs)
     html +=
-        "<tr>" + cell(std::to_string(run.run.id)) + cell(text(run.run.started)) +
+        "<tr>" + cell(std::to_string(run.run.id)) + cell(text(short_time(run.run.started))) +
         cell(run.run.ended.empty() ? "<span class=\"muted\">not ended (running, or killed)</span>"
-                                   : text(run.run.ended)) +
+                                   : text(short_time(run.run.ended))) +
         cell("<code>" + text(run.run.ego_version) + "</code>") +
         cell(std::to_string(run.searches), "number") +
         cell(std::to_string(run.simulations), "number") +
@@ -268,8 +282,9 @@ std::string seeds_section(const ReportData& data) {
   html += "</tbody>\n</table>\n<div class=\"charts\">\n";
   for (const ReportSeed& seed : data.seeds)
     html += "<figure>\n<h3>" + text(seed.seed.path) + "</h3>\n<figcaption>" +
-            std::to_string(seed.simulations) + " simulations in " + std::to_string(seed.searches) +
-            " searches; " + std::to_string(seed.failure_modes) + " failure modes</figcaption>\n" +
+            counted(seed.simulations, "simulation", "simulations") + " in " +
+            counted(seed.searches, "search", "searches") + "; " +
+            counted(seed.failure_modes, "failure mode", "failure modes") + "</figcaption>\n" +
             robustness_chart_svg(seed, "Best robustness so far of " + seed.seed.path) +
             "</figure>\n";
   return html + "</div>\n</section>\n";

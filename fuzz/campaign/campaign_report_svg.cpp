@@ -207,11 +207,13 @@ void append_run_bars(std::string& svg, const Frame& frame, const ReportRun& run,
   double base = 0;
   const auto segment = [&](std::size_t count, const char* colour, const char* css_class, double x) {
     if (count == 0) return;
+    std::string label = css_class;  // "still-failing": "still failing"
+    std::replace(label.begin(), label.end(), '-', ' ');
     const double top = base + static_cast<double>(count);
     svg += "<rect class=\"bar " + std::string(css_class) + "\" x=\"" + number(x) + "\" y=\"" +
            number(frame.y(top)) + "\" width=\"" + number(bar) + "\" height=\"" +
            number(frame.y(base) - frame.y(top)) + "\" fill=\"" + colour + "\"><title>run " +
-           std::to_string(run.run.id) + ": " + std::to_string(count) + " " + css_class +
+           std::to_string(run.run.id) + ": " + std::to_string(count) + " " + label +
            "</title></rect>\n";
     base = top;
   };
