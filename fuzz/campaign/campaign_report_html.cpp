@@ -39,15 +39,18 @@ p { margin: 6px 0 12px; }
 .tile.new b { color: #c62828; } .tile.regressed b { color: #ef6c00; } .tile.fixed b { color: #2e7d32; }
 table { border-collapse: collapse; width: 100%; margin: 8px 0 16px; }
 th, td { text-align: left; vertical-align: top; padding: 8px 10px; border-bottom: 1px solid var(--line); }
-th { background: var(--band); font-size: 13px; text-transform: uppercase; letter-spacing: .03em; color: #455a64; }
+th { background: var(--band); font-size: 13px; color: #455a64; }
 td.number, th.number { text-align: right; font-variant-numeric: tabular-nums; }
 tr:hover td { background: #fafbfc; }
 code { font: 13px/1.4 "DejaVu Sans Mono", Menlo, Consolas, monospace; background: #f1f3f4;
   padding: 2px 5px; border-radius: 4px; word-break: break-all; }
 .signature { display: block; color: var(--muted); font-size: 13px; margin-top: 2px; word-break: break-word; }
-td.replay { min-width: 320px; }
-td.when { white-space: nowrap; }
-.thumb img { width: 220px; height: auto; border: 1px solid var(--line); border-radius: 4px; display: block; }
+/* Fixed columns: long signatures and commands wrap inside their cells, never widen the page. */
+table.failure-modes { table-layout: fixed; }
+table.failure-modes td { overflow-wrap: break-word; }
+col.picture { width: 222px; } col.seed { width: 14%; } col.responsibility { width: 116px; }
+col.seen { width: 176px; } col.replay { width: 22%; }
+.thumb img { width: 200px; height: auto; border: 1px solid var(--line); border-radius: 4px; display: block; }
 .badge { display: inline-block; padding: 1px 9px; border-radius: 10px; font-size: 13px; font-weight: 600; }
 .badge.ego { background: #fdecea; color: #b71c1c; } .badge.other { background: #eceff1; color: #37474f; }
 .badge.shared { background: #fff3e0; color: #e65100; } .badge.none { color: var(--muted); font-weight: 400; }
@@ -66,6 +69,16 @@ std::string text(std::string_view raw) {
   return escaped;
 }
 
+// A path that may break after each '/' when its column is narrow, never inside a name.
+std::string path_text(std::string_view path) {
+  std::string html;
+  for (const char c : path) {
+    append_escaped(html, std::string_view(&c, 1));
+    if (c == '/') html += "<wbr>";
+  }
+  return html;
+}
+
 std::string cell(const std::string& html, const char* css_class = nullptr) {
   return css_class ? std::string("<td class=\"") + css_class + "\">" + html + "</td>"
                    : "<td>" + html + "</td>";
@@ -82,10 +95,16 @@ std::string short_time(const std::string& iso) {
   return iso.substr(0, 10) + " " + iso.substr(11, 5);
 }
 
-std::string run_text(std::int64_t id, const std::string& started) {
-  return "run " + std::to_string(id) +
-         (started.empty() ? ""
-                          : "<span class=\"signature\">" + text(short_time(started)) + "</span>");
+// First and last seen in one cell: "run 1 → run 3", then when each of those runs started.
+std::string seen_text(const ReportFailureMode& shown) {
+  const CampaignFailureMode& mode = shown.mode;
+  std::string html = "run " + std::to_string(mode.first_seen_run) + " → run " +
+                     std::to_string(mode.last_seen_run) + "<span class=\"signature\">";
+  if (!shown.first_seen_started.empty())
+    html += "first " + text(short_time(shown.first_seen_started));
+  if (!shown.last_seen_started.empty())
+    html += "<br>last " + text(short_time(shown.last_seen_started));
+  return html + "</span>";
 }
 
 // "1 search", "3 searches".
@@ -119,11 +138,9 @@ std::string failure_mode_row(const ReportFailureMode& shown, const ReportPage& p
               "</span>") +
          cell(shown.seed_path.empty()
                   ? "<span class=\"muted\">seed " + std::to_string(mode.seed_id) + "</span>"
-                  : text(shown.seed_path)) +
-         cell(responsibility_badge(mode.responsibility)) +
-         cell(run_text(shown.mode.first_seen_run, shown.first_seen_started), "when") +
-         cell(run_text(shown.mode.last_seen_run, shown.last_seen_started), "when") +
-         cell("<code>" + text(mode.replay_command) + "</code>" + scenario, "replay") + "</tr>\n";
+                  : path_text(shown.seed_path)) +
+         cell(responsibility_badge(mode.responsibility)) + cell(seen_text(shown)) +
+         cell("<code>" + text(mode.replay_command) + "</code>" + scenario) + "</tr>\n";
 }
 
 struct StatusSection {
@@ -161,8 +178,10 @@ std::string failure_mode_section(const ReportData& data, const StatusSection& se
                      "</span></h2>\n<p class=\"muted\">" + section.meaning + "</p>\n";
   if (count == 0) return html + "<p class=\"none-found\">None.</p>\n</section>\n";
   return html +
-         "<table class=\"failure-modes\">\n<thead><tr><th>Picture</th><th>Failure mode</th>"
-         "<th>Seed</th><th>Responsibility</th><th>First seen</th><th>Last seen</th>"
+         "<table class=\"failure-modes\">\n<colgroup><col class=\"picture\"><col class=\"mode\">"
+         "<col class=\"seed\"><col class=\"responsibility\"><col class=\"seen\">"
+         "<col class=\"replay\"></colgroup>\n<thead><tr><th>Picture</th><th>Failure mode</th>"
+         "<th>Seed</th><th>Responsibility</th><th>First → last seen</th>"
          "<th>Replay (from the campaign folder)</th></tr></thead>\n<tbody>\n" +
          rows + "</tbody>\n</table>\n</section>\n";
 }
@@ -257,7 +276,7 @@ std::string summary_section(const ReportData& data, const ReportPage& page) {
 std::string seed_row(const ReportSeed& seed) {
   const std::string best = seed.best.empty() ? "<span class=\"muted\">none judged</span>"
                                              : robustness_text(seed.best.back().best);
-  return "<tr>" + cell(text(seed.seed.path)) +
+  return "<tr>" + cell(path_text(seed.seed.path)) +
          cell("<code>" + text(seed.seed.content_hash) + "</code>") +
          cell(std::to_string(seed.searches), "number") +
          cell(std::to_string(seed.simulations), "number") +
