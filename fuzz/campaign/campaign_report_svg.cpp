@@ -140,12 +140,16 @@ void append_zero_line(std::string& svg, const Frame& frame) {
 }
 
 void append_run_starts(std::string& svg, const Frame& frame, const std::vector<RunStart>& starts) {
+  // A label needs about 44 pixels; with many nightly runs only some are labelled.
+  double labelled_until = -1e9;
   for (const RunStart& start : starts) {
     const double x = frame.x(static_cast<double>(start.simulations));
     append_line(svg, x, frame.top, x, frame.top + frame.plot_height(),
                 "class=\"run-start\" stroke=\"#90a4ae\" stroke-dasharray=\"2 3\"");
+    if (x < labelled_until) continue;
     append_text(svg, x + 3, frame.top - 8, "run " + std::to_string(start.run_id),
                 "font-size=\"11\" fill=\"#546e7a\"");
+    labelled_until = x + 44;
   }
 }
 
@@ -240,7 +244,7 @@ void append_legend(std::string& svg, const Frame& frame) {
     svg += "<rect x=\"" + number(x) + "\" y=\"8\" width=\"12\" height=\"12\" fill=\"" + colour +
            "\"/>\n";
     append_text(svg, x + 17, 19, label, "fill=\"#263238\"");
-    x += 30 + 8.0 * static_cast<double>(std::char_traits<char>::length(label));
+    x += 30 + 7.0 * static_cast<double>(std::char_traits<char>::length(label));
   }
 }
 

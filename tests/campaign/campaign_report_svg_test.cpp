@@ -60,6 +60,18 @@ TEST(RobustnessChartTest, AStepLineFromTheFirstJudgedSimulationToTheLast) {
   EXPECT_NE(svg.find(">100</text>"), std::string::npos);
 }
 
+TEST(RobustnessChartTest, RunStartsTooCloseForTheirLabelsAreMarkedButNotAllLabelled) {
+  ReportSeed seed = seed_with({{1, 1}}, 1000);
+  seed.run_starts.clear();
+  for (std::int64_t run = 1; run <= 100; ++run)
+    seed.run_starts.push_back({run, static_cast<std::size_t>(run - 1) * 10});
+  const std::string svg = robustness_chart_svg(seed, "t");
+  EXPECT_EQ(count(svg, "class=\"run-start\""), 100u);
+  const std::size_t labels = count(svg, ">run ");
+  EXPECT_GE(labels, 5u);
+  EXPECT_LE(labels, 14u);  // 548 pixels of plot, a label per 44 at most
+}
+
 TEST(RobustnessChartTest, InfinitiesStayInsideThePlot) {
   const double inf = std::numeric_limits<double>::infinity();
   const std::string svg = robustness_chart_svg(seed_with({{1, inf}, {5, 2}, {9, -inf}}, 10), "t");
