@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fuzz/campaign/campaign_init.hpp"
+#include "fuzz/campaign/campaign_report.hpp"
 #include "fuzz/commands.hpp"
 #include "fuzz/options.hpp"
 
@@ -285,6 +286,23 @@ void declare_bench(CLI::App& app, Action& action) {
   });
 }
 
+void declare_campaign_report(CLI::App& campaign, Action& action) {
+  auto options = std::make_shared<CampaignReportOptions>();
+  CLI::App* report = campaign.add_subcommand(
+      "report",
+      "Write the campaign's static HTML report: new, regressed, still failing, flaky and fixed "
+      "failure modes with their pictures and replay commands, per seed the best robustness "
+      "against simulations, the trend across runs (readable while a run runs)");
+  report->add_option("DIR", options->dir, "The campaign folder")->required()->type_name("");
+  report->add_option("--out", options->out, "Write the report here (default DIR/report.html)")
+      ->type_name("FILE");
+  report->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      return run_campaign_report(*options, out, err);
+    };
+  });
+}
+
 void declare_campaign(CLI::App& app, Action& action) {
   auto options = std::make_shared<CampaignInitOptions>();
   CLI::App* campaign = app.add_subcommand(
@@ -309,6 +327,7 @@ void declare_campaign(CLI::App& app, Action& action) {
       return run_campaign_init(*options, out, err);
     };
   });
+  declare_campaign_report(*campaign, action);
 }
 
 int run_search_command(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {

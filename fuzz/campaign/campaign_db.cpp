@@ -437,4 +437,48 @@ std::vector<CampaignFailureMode> CampaignDb::list_failure_modes() {
   return modes;
 }
 
+// --- Reading without the run lock (the report) ---
+
+namespace {
+
+// The schema check of a read-only connection: it may not create the schema, only find it.
+std::string check_readable_schema(sqlite3* connection) {
+  if (!has_table(connection, "schema_version"))
+    return "it is an SQLite database, but not a campaign's (no schema_version table)";
+  Statement version(connection, "SELECT version FROM schema_version");
+  const std::int64_t found = version.step() ? version.integer(0) : 0;
+  if (found == kCampaignSchemaVersion) return {};
+  return "its schema version is " + std::to_string(found) + ", this scenfuzz reads version " +
+         std::to_string(kCampaignSchemaVersion) +
+         (found > kCampaignSchemaVersion ? " (a newer scenfuzz wrote it)" : "");
+}
+
+}  // namespace
+
+CampaignDbOpening CampaignDb::open_for_reading(const fs::path& dir) {
+  CampaignDbOpening opening;
+  const fs::path path = dir / "campaign.db";
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) {
+    opening.error = "'" + dir.string() + "' is not a campaign folder: it has no campaign.db";
+    return opening;
+  }
+  sqlite3* connection = nullptr;
+  const int status = sqlite3_open_v2(path.c_str(), &connection, SQLITE_OPEN_READONLY, nullptr);
+  // An unlocked CampaignLock: this connection never writes.
+  std::unique_ptr<CampaignDb> db(new CampaignDb(connection, CampaignLock{}));
+  try {
+    if (status != SQLITE_OK) fail(connection, "opening");
+    // A reader may meet a checkpoint in progress: wait for it rather than fail.
+    sqlite3_busy_timeout(connection, 10000);
+    if (std::string problem = check_readable_schema(connection); !problem.empty())
+      throw CampaignDbError(problem);
+  } catch (const CampaignDbError& failure) {
+    opening.error = "cannot read '" + path.string() + "': " + failure.what();
+    return opening;
+  }
+  opening.db = std::move(db);
+  return opening;
+}
+
 }  // namespace scenfuzz

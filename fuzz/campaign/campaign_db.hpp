@@ -137,6 +137,14 @@ class CampaignDb {
   std::vector<EvaluationRecord> list_evaluations(std::int64_t search_id);
   std::vector<CampaignFailureMode> list_failure_modes();
 
+  // --- Reading without the run lock (the report) ---
+  // Opens an existing DIR/campaign.db read-only, without taking the campaign's lock, so that a
+  // report can be written while a run runs (in WAL mode a reader never blocks the writer). Never
+  // creates or changes the database; never throws. An error names the problem (no campaign.db;
+  // not a database; not a campaign's; another schema version). Writing through the result throws
+  // CampaignDbError.
+  static CampaignDbOpening open_for_reading(const std::filesystem::path& dir);
+
  private:
   CampaignDb(sqlite3* connection, CampaignLock lock);
 
