@@ -74,13 +74,14 @@ std::optional<CampaignConfig> read_config(const fs::path& dir, std::ostream& err
 std::int64_t run_to_use(CampaignDb& db, const std::string& ego_version, std::ostream& out) {
   if (const std::optional<CampaignRun> last = db.unfinished_run()) {
     if (last->ego_version == ego_version) {
-      out << "continuing run " << last->id << " (started " << last->started << ")\n";
+      out << "continuing run " << last->id << " (started " << last->started << ")\n"
+          << std::flush;
       return last->id;
     }
     db.end_run(last->id);
   }
   const std::int64_t run = db.begin_run(ego_version);
-  out << "run " << run << " of ego version " << ego_version << "\n";
+  out << "run " << run << " of ego version " << ego_version << "\n" << std::flush;
   return run;
 }
 

@@ -76,4 +76,18 @@ inline std::string canonical_dump(const std::filesystem::path& dir) {
   return dump.str();
 }
 
+// Where two dumps differ first: the line of each (a dump runs to thousands of lines).
+inline std::string first_difference(const std::string& a, const std::string& b) {
+  std::istringstream left(a), right(b);
+  std::string x, y;
+  for (int line = 1;; ++line) {
+    const bool more_left = static_cast<bool>(std::getline(left, x));
+    const bool more_right = static_cast<bool>(std::getline(right, y));
+    if (!more_left && !more_right) return "no difference";
+    if (x != y || more_left != more_right)
+      return "line " + std::to_string(line) + ":\n  " + (more_left ? x : "(end)") + "\n  " +
+             (more_right ? y : "(end)");
+  }
+}
+
 }  // namespace scenfuzz::test
