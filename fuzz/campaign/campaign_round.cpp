@@ -1,9 +1,11 @@
 #include "fuzz/campaign/campaign_round.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <numeric>
 #include <thread>
 
 #include "fuzz/campaign/mode_files.hpp"
@@ -114,12 +116,19 @@ bool past(const std::optional<Clock::time_point>& deadline) {
   return deadline && Clock::now() >= *deadline;
 }
 
-// Runs the tasks on `workers` threads, each taking the next task in order.
+// Runs the tasks on `workers` threads, each taking the next task, the largest first.
 class Workers {
  public:
   Workers(RoundContext& context, std::vector<CampaignSearchTask>& tasks, RoundResults& results,
           std::atomic<bool>& abort)
-      : context_(context), tasks_(tasks), results_(results), abort_(abort) {}
+      : context_(context), tasks_(tasks), results_(results), abort_(abort), order_(tasks.size()) {
+    // The largest searches first, so that the round does not wait on a large one started last
+    // (the round's results are recorded in its own order all the same).
+    std::iota(order_.begin(), order_.end(), std::size_t{0});
+    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+      return tasks_[a].budget > tasks_[b].budget;
+    });
+  }
 
   void start(std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) threads_.emplace_back([this] { work(); });
@@ -134,7 +143,8 @@ class Workers {
     const std::function<bool()> stop = [this] {
       return StopSignalGuard::stop_requested() || abort_.load();
     };
-    for (std::size_t i = next_++; i < tasks_.size(); i = next_++) {
+    for (std::size_t taken = next_++; taken < tasks_.size(); taken = next_++) {
+      const std::size_t i = order_[taken];
       Slot slot;
       if (stop() || past(context_.deadline)) {
         slot.skipped = true;
@@ -157,6 +167,7 @@ class Workers {
   std::vector<CampaignSearchTask>& tasks_;
   RoundResults& results_;
   std::atomic<bool>& abort_;
+  std::vector<std::size_t> order_;  // the tasks in the order they are started
   std::atomic<std::size_t> next_{0};
   std::vector<std::thread> threads_;
 };

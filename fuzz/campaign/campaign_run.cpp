@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -74,8 +75,7 @@ std::optional<CampaignConfig> read_config(const fs::path& dir, std::ostream& err
 std::int64_t run_to_use(CampaignDb& db, const std::string& ego_version, std::ostream& out) {
   if (const std::optional<CampaignRun> last = db.unfinished_run()) {
     if (last->ego_version == ego_version) {
-      out << "continuing run " << last->id << " (started " << last->started << ")\n"
-          << std::flush;
+      out << "continuing run " << last->id << " (started " << last->started << ")\n" << std::flush;
       return last->id;
     }
     db.end_run(last->id);
