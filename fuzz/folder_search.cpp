@@ -1,3 +1,5 @@
+// FolderSearch: the search's callbacks (journal, findings, summary) around run_search, as run_fuzz
+// had them, with what it printed handed to the caller's events instead.
 #include "fuzz/folder_search.hpp"
 
 #include <chrono>

@@ -1,3 +1,5 @@
+// plan_round and the energies behind it; docs/campaigns.md ("Sharing the budget") states the
+// rule in words, and tests/campaign/budget_schedule_test.cpp pins it.
 #include "fuzz/campaign/budget_schedule.hpp"
 
 #include <algorithm>

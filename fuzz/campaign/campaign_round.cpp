@@ -1,3 +1,5 @@
+// run_round: a pool of worker threads runs a round's searches; the calling thread records their
+// results one by one in the round's order as they become available.
 #include "fuzz/campaign/campaign_round.hpp"
 
 #include <algorithm>

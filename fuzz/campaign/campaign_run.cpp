@@ -1,3 +1,5 @@
+// run_campaign: the run's phases in order (config, seeds, lock, run, replay, rounds, end) and its
+// exit status.
 #include "fuzz/campaign/campaign_run.hpp"
 
 #include <unistd.h>

@@ -1,3 +1,5 @@
+// run_campaign_search: a FolderSearch with the campaign's options for one arm, and the compact
+// result the database records.
 #include "fuzz/campaign/campaign_search.hpp"
 
 #include "fuzz/folder_search.hpp"

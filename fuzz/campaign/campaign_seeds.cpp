@@ -1,3 +1,4 @@
+// load_campaign_seeds: every seed read, parsed, set up and checked once, and the run's arms.
 #include "fuzz/campaign/campaign_seeds.hpp"
 
 #include <filesystem>

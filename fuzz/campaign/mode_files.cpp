@@ -1,3 +1,4 @@
+// copy_mode_files: content-addressed copies of a finding's files into DIR/modes/.
 #include "fuzz/campaign/mode_files.hpp"
 
 #include <fstream>
