@@ -14,6 +14,7 @@
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
 #include "fuzz/findings.hpp"
+#include "fuzz/folder_search.hpp"
 #include "fuzz/journal_replay.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/output_folder.hpp"
@@ -108,130 +109,6 @@ bool check_setup(const FuzzCommandOptions& options, const ScenarioFile& input,
   return !problem;
 }
 
-// Locks --out and decides what happens to an earlier search there: resumed (its journal read
-// into `journal`), replaced (--force) or refused. An error message, empty when the search may
-// start.
-std::string claim_output_folder(const FuzzCommandOptions& options, OutputFolderLock& lock,
-                                SearchOutputs& outputs, std::vector<EvaluationRecord>& journal,
-                                std::ostream& err) {
-  const fs::path dir = options.out_dir;
-  if (std::string failure = lock.acquire(dir); !failure.empty()) return failure;
-  remove_temporary_files(dir);
-  if (holds_search(dir)) {
-    if (options.resume) return outputs.resume(journal);
-    if (!options.force)
-      return "'" + dir.string() +
-             "' holds an earlier search: continue it with --resume, write into another folder "
-             "with --out DIR, or replace it with --force";
-    if (std::string failure = remove_search(dir); !failure.empty()) return failure;
-  } else if (options.resume) {
-    err << "scenfuzz: note: there is no search to resume in '" << dir.string()
-        << "'; starting a new one\n";
-  }
-  return outputs.start();
-}
-
-// What the search's callbacks share: the findings, the outputs and the progress line.
-class SearchSession {
- public:
-  SearchSession(const FuzzCommandOptions& options, SearchOutputs& outputs,
-                const JournalReplay& replay, std::vector<std::string> objectives, std::ostream& out,
-                std::ostream& err)
-      : options_(options),
-        outputs_(outputs),
-        replay_(replay),
-        objectives_(objectives),
-        log_(std::move(objectives)),
-        progress_(options, out, err),
-        out_(out),
-        err_(err) {}
-
-  SearchCallbacks callbacks() {
-    SearchCallbacks callbacks;
-    callbacks.on_evaluation = [this](const EvaluationRecord& record) { take(record); };
-    callbacks.on_batch_end = [this] { end_batch(); };
-    callbacks.interrupted = [this] {
-      return StopSignalGuard::stop_requested() || !write_failure_.empty();
-    };
-    return callbacks;
-  }
-
-  // After the search: the final summary.json, and the stop reason "error" after a failed write.
-  void finish(SearchSummary& summary) {
-    if (!write_failure_.empty()) summary.stop = StopReason::error;
-    warn_of_design(true);
-    progress_.update(summary.judged, outputs_.best(), objectives_, log_.findings().size(), true);
-    progress_.finish();
-    std::string failure = outputs_.finish(summary, log_, write_failure_);
-    if (write_failure_.empty()) write_failure_ = failure;
-  }
-
-  const FindingLog& log() const { return log_; }
-  const std::string& write_failure() const { return write_failure_; }
-
- private:
-  void take(const EvaluationRecord& record) {
-    outputs_.record(record, replay_.replayed(record.index));
-    ++so_far_.evaluations;
-    if (!record.evaluation.feasible())
-      ++so_far_.infeasible;
-    else if (record.evaluation.judged())
-      ++so_far_.judged;
-    else
-      ++so_far_.failed;
-    if (const std::optional<FindingUpdate> update = log_.add(record)) write(*update);
-    progress_.update(so_far_.judged, outputs_.best(), objectives_, log_.findings().size(), false);
-  }
-
-  void write(const FindingUpdate& update) {
-    const Finding& finding = update.finding;
-    if (!write_failure_.empty()) return;
-    std::string failure;
-    bool fatal = false;
-    const std::string path = outputs_.write_finding(finding, failure, fatal);
-    if (fatal) {
-      write_failure_ = failure;
-    } else if (!failure.empty()) {
-      progress_.finish();
-      err_ << "scenfuzz: warning: " << failure << "\n";
-    }
-    if (!options_.json) return;
-    nlohmann::json event = finding_json(finding);
-    event["event"] = "finding";
-    // A later, more violating evaluation of the same failure mode: it replaces the finding.
-    if (update.replaced) event["replaces"] = finding.number;
-    event["file"] = path;
-    out_ << event.dump() << "\n" << std::flush;
-  }
-
-  void end_batch() {
-    if (!write_failure_.empty()) return;
-    so_far_.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    write_failure_ = outputs_.end_batch(so_far_, log_);
-    warn_of_design(false);
-  }
-
-  void warn_of_design(bool search_over) {
-    for (const std::string& warning : outputs_.take_design_warnings(search_over)) {
-      progress_.finish();
-      err_ << "scenfuzz: warning: " << warning << "\n";
-    }
-  }
-
-  const FuzzCommandOptions& options_;
-  SearchOutputs& outputs_;
-  const JournalReplay& replay_;
-  std::vector<std::string> objectives_;
-  FindingLog log_;
-  ProgressReport progress_;
-  std::ostream& out_;
-  std::ostream& err_;
-  SearchSummary so_far_;
-  std::string write_failure_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
 std::string finding_line(const Finding& finding) {
   std::string line = "  " + finding_number_text(finding.number) + " ";
   if (finding.ego_failure()) return line + finding.objective_name + ": " + finding.failure;
@@ -306,20 +183,46 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
 }
 
 // The exit status once the search has ended, with the reason on `err` when it is an error.
-int exit_status(const SearchSession& session, const SearchOutputs& outputs,
-                const SearchSummary& summary, std::ostream& err) {
-  if (!session.write_failure().empty()) {
-    err << "scenfuzz: error: " << session.write_failure()
+int exit_status(const FolderSearch& search, const FolderSearchEnd& end, std::ostream& err) {
+  if (end.problem == FolderSearchProblem::write_failed) {
+    err << "scenfuzz: error: " << end.message
         << "; the search stopped (what is in the output folder is consistent: resume it with "
            "--resume once there is room)\n";
     return kExitBadInput;
   }
-  if (!session.log().findings().empty()) return kExitViolated;
-  if (std::string why = outputs.why_nothing_judged(summary); !why.empty()) {
+  if (!search.log().findings().empty()) return kExitViolated;
+  if (std::string why = search.outputs().why_nothing_judged(end.summary); !why.empty()) {
     err << "scenfuzz: error: " << why << "\n";
     return kExitBadInput;
   }
   return kExitSuccess;
+}
+
+// What the user sees of the search: the progress line, warnings, and --json finding events.
+FolderSearchEvents console_events(const FuzzCommandOptions& options, ProgressReport& progress,
+                                  const std::vector<std::string>& objectives, std::ostream& out,
+                                  std::ostream& err) {
+  FolderSearchEvents events;
+  events.interrupted = [] { return StopSignalGuard::stop_requested(); };
+  events.warning = [&progress, &err](const std::string& warning) {
+    progress.finish();
+    err << "scenfuzz: warning: " << warning << "\n";
+  };
+  events.progress = [&progress, &objectives](std::size_t judged, const std::vector<double>& best,
+                                             std::size_t findings, bool final) {
+    progress.update(judged, best, objectives, findings, final);
+    if (final) progress.finish();
+  };
+  if (options.json)
+    events.finding = [&out](const FindingUpdate& update, const std::string& path) {
+      nlohmann::json event = finding_json(update.finding);
+      event["event"] = "finding";
+      // A later, more violating evaluation of the same failure mode: it replaces the finding.
+      if (update.replaced) event["replaces"] = update.finding.number;
+      event["file"] = path;
+      out << event.dump() << "\n" << std::flush;
+    };
+  return events;
 }
 
 }  // namespace
@@ -334,37 +237,35 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
   if (!search) return kExitUsage;
   if (!check_setup(options, *input, *evaluator, err)) return kExitUsage;
 
-  OutputFolderLock lock;
-  SearchOutputs outputs(options, input->file, input->scenario, *evaluator);
-  std::vector<EvaluationRecord> journal;
-  if (std::string failure = claim_output_folder(options, lock, outputs, journal, err);
-      !failure.empty()) {
+  const std::vector<std::string> objectives = evaluator->objectives();
+  ProgressReport progress(options, out, err);
+  FolderSearch folder(options, *input, *evaluator,
+                      console_events(options, progress, objectives, out, err));
+  bool nothing_to_resume = false;
+  if (std::string failure = folder.claim(nothing_to_resume); !failure.empty()) {
     err << "scenfuzz: error: " << failure << "\n";
     return kExitBadInput;
   }
+  if (nothing_to_resume)
+    err << "scenfuzz: note: there is no search to resume in '" << options.out_dir
+        << "'; starting a new one\n";
 
-  const std::vector<std::string> objectives = evaluator->objectives();
-  const JournalReplay replay(*evaluator, std::move(journal));
-  SearchSession session(options, outputs, replay, objectives, out, err);
-  SearchSummary summary;
+  FolderSearchEnd end;
   {
     StopSignalGuard guard;
-    try {
-      summary = run_search(replay, *search, session.callbacks());
-    } catch (const OracleError& error) {
-      Diagnostics diagnostics;
-      diagnostics.error(error.location(), error.what());
-      err << format_diagnostics(input->file, diagnostics);
-      return kExitBadInput;
-    } catch (const JournalMismatch& error) {
-      err << "scenfuzz: error: cannot resume the search in '" << options.out_dir
-          << "': " << error.what() << "; replace it with --force\n";
-      return kExitBadInput;
-    }
+    end = folder.run(*search);
   }
-  session.finish(summary);
-  print_report(options, summary, outputs, session.log(), objectives, out);
-  return exit_status(session, outputs, summary, err);
+  if (end.problem == FolderSearchProblem::unjudgeable) {
+    err << end.message;
+    return kExitBadInput;
+  }
+  if (end.problem == FolderSearchProblem::journal_mismatch) {
+    err << "scenfuzz: error: cannot resume the search in '" << options.out_dir
+        << "': " << end.message << "; replace it with --force\n";
+    return kExitBadInput;
+  }
+  print_report(options, end.summary, folder.outputs(), folder.log(), objectives, out);
+  return exit_status(folder, end, err);
 }
 
 }  // namespace scenfuzz

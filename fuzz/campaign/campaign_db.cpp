@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Version 1. Later versions add migrations in open(), never edit this text.
+// Version 2. Later versions add migrations in open(), never edit this text. (Version 1 came
+// before `campaign run` and no campaign used it: it is refused, see prepare_schema.)
 constexpr const char* kSchema = R"sql(
 CREATE TABLE schema_version (version INTEGER NOT NULL);
 CREATE TABLE runs (
@@ -37,7 +38,15 @@ CREATE TABLE searches (
   algorithm TEXT NOT NULL,
   budget INTEGER NOT NULL CHECK (budget >= 0),
   status TEXT NOT NULL CHECK (status IN ('running', 'done', 'stopped', 'failed')),
-  output_folder TEXT NOT NULL);
+  output_folder TEXT NOT NULL,
+  round INTEGER NOT NULL CHECK (round >= 0),
+  spec_index INTEGER NOT NULL CHECK (spec_index >= 0),
+  spec TEXT NOT NULL,
+  search_seed INTEGER NOT NULL,
+  simulations INTEGER NOT NULL CHECK (simulations >= 0),
+  new_modes INTEGER NOT NULL CHECK (new_modes >= 0),
+  best_robustness REAL,
+  UNIQUE (run_id, round, seed_id, spec_index));
 CREATE TABLE evaluations (
   search_id INTEGER NOT NULL REFERENCES searches (id),
   evaluation_index INTEGER NOT NULL,
@@ -57,6 +66,14 @@ CREATE TABLE failure_modes (
   status TEXT NOT NULL
     CHECK (status IN ('new', 'still_failing', 'fixed', 'flaky', 'regressed')),
   UNIQUE (seed_id, signature));
+CREATE TABLE replays (
+  run_id INTEGER NOT NULL REFERENCES runs (id),
+  failure_mode_id INTEGER NOT NULL REFERENCES failure_modes (id),
+  tried INTEGER NOT NULL CHECK (tried >= 0),
+  failing INTEGER NOT NULL CHECK (failing >= 0 AND failing <= tried),
+  verdict TEXT NOT NULL CHECK (verdict IN
+    ('still_failing', 'regressed', 'fixed', 'flaky', 'not_replayed', 'error')),
+  PRIMARY KEY (run_id, failure_mode_id)) WITHOUT ROWID;
 )sql";
 
 [[noreturn]] void fail(sqlite3* connection, const std::string& doing) {
@@ -88,10 +105,20 @@ class Statement {
                             SQLITE_TRANSIENT));
     return *this;
   }
+  // A 64-bit seed, stored as the signed integer with the same bits (SQLite has no unsigned).
+  Statement& bind_bits(int index, std::uint64_t value) {
+    return bind(index, static_cast<std::int64_t>(value));
+  }
   Statement& bind(int index, std::optional<double> value) {
     check(value ? sqlite3_bind_double(statement_, index, *value)
                 : sqlite3_bind_null(statement_, index));
     return *this;
+  }
+
+  // Ready to run again with new values.
+  void reset() {
+    sqlite3_reset(statement_);
+    sqlite3_clear_bindings(statement_);
   }
 
   // True with a row to read, false when done.
@@ -181,7 +208,10 @@ std::string prepare_schema(sqlite3* connection) {
   if (found != kCampaignSchemaVersion)
     return "its schema version is " + std::to_string(found) + ", this scenfuzz reads version " +
            std::to_string(kCampaignSchemaVersion) +
-           (found > kCampaignSchemaVersion ? " (a newer scenfuzz wrote it)" : "");
+           (found > kCampaignSchemaVersion
+                ? " (a newer scenfuzz wrote it)"
+                : " (an early development version wrote it, before `campaign run`: move "
+                  "campaign.db away and run again to start the campaign's history afresh)");
   transaction.commit();
   return {};
 }
@@ -229,7 +259,93 @@ CampaignFailureMode read_failure_mode(Statement& row) {
   return mode;
 }
 
+// The searches row and its evaluations, inside the caller's transaction; the search's id.
+std::int64_t insert_search(sqlite3* connection, const SearchRecord& search,
+                           std::span<const CampaignEvaluation> evaluations,
+                           std::int64_t new_modes) {
+  Statement insert(connection,
+                   "INSERT INTO searches (run_id, seed_id, algorithm, budget, status, "
+                   "output_folder, round, spec_index, spec, search_seed, simulations, new_modes, "
+                   "best_robustness) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  insert.bind(1, search.run_id)
+      .bind(2, search.seed_id)
+      .bind(3, std::string_view(search.algorithm))
+      .bind(4, static_cast<std::int64_t>(search.budget))
+      .bind(5, status_name(search.status))
+      .bind(6, std::string_view(search.output_folder))
+      .bind(7, search.round)
+      .bind(8, search.spec_index)
+      .bind(9, std::string_view(search.spec))
+      .bind_bits(10, search.search_seed)
+      .bind(11, static_cast<std::int64_t>(search.simulations))
+      .bind(12, new_modes)
+      .bind(13, search.best_robustness)
+      .step();
+  const std::int64_t id = sqlite3_last_insert_rowid(connection);
+  Statement row(connection,
+                "INSERT INTO evaluations (search_id, evaluation_index, robustness, finding) "
+                "VALUES (?, ?, ?, ?)");
+  for (const CampaignEvaluation& evaluation : evaluations) {
+    row.bind(1, id)
+        .bind(2, evaluation.index)
+        .bind(3, evaluation.robustness)
+        .bind(4, std::int64_t{evaluation.finding ? 1 : 0})
+        .step();
+    row.reset();
+  }
+  return id;
+}
+
+struct UpsertedMode {
+  CampaignFailureMode mode;
+  bool added = false;  // unknown to its seed before
+};
+
+// upsert_failure_mode's change, inside the caller's transaction.
+UpsertedMode upsert_mode(sqlite3* connection, std::int64_t run_id, const FailureModeRecord& mode) {
+  Statement known(connection, "SELECT 1 FROM failure_modes WHERE seed_id = ? AND signature = ?");
+  known.bind(1, mode.seed_id).bind(2, std::string_view(mode.signature));
+  const bool added = !known.step();
+  // A known mode keeps its representative scenario and replay command: the first one found is
+  // the one the replays of later runs have been judging.
+  Statement insert(connection,
+                   "INSERT INTO failure_modes (seed_id, signature, spec, responsibility, "
+                   "scenario_file, replay_command, first_seen_run, last_seen_run, status) "
+                   "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?7, 'new') "
+                   "ON CONFLICT (seed_id, signature) DO UPDATE SET "
+                   "status = CASE WHEN first_seen_run = ?7 THEN status "
+                   "WHEN status = 'fixed' THEN 'regressed' "
+                   "WHEN status = 'regressed' AND last_seen_run = ?7 THEN 'regressed' "
+                   "ELSE 'still_failing' END, "
+                   "last_seen_run = ?7");
+  insert.bind(1, mode.seed_id)
+      .bind(2, std::string_view(mode.signature))
+      .bind(3, std::string_view(mode.spec))
+      .bind(4, std::string_view(mode.responsibility))
+      .bind(5, std::string_view(mode.scenario_file))
+      .bind(6, std::string_view(mode.replay_command))
+      .bind(7, run_id)
+      .step();
+  Statement find(
+      connection,
+      (std::string(kFailureModeColumns) + " WHERE seed_id = ? AND signature = ?").c_str());
+  find.bind(1, mode.seed_id).bind(2, std::string_view(mode.signature));
+  SCENFUZZ_DEMAND(find.step());
+  return {read_failure_mode(find), added};
+}
+
 }  // namespace
+
+ReplayVerdict replay_verdict(FailureModeStatus before, const ReplayOutcome& outcome) {
+  if (!outcome.error.empty()) return {"error", before};
+  if (outcome.tried <= 0) return {"not_replayed", before};
+  if (outcome.failing >= outcome.tried) {
+    if (before == FailureModeStatus::fixed) return {"regressed", FailureModeStatus::regressed};
+    return {"still_failing", FailureModeStatus::still_failing};
+  }
+  if (outcome.failing <= 0) return {"fixed", FailureModeStatus::fixed};
+  return {"flaky", FailureModeStatus::flaky};
+}
 
 std::string_view status_name(SearchStatus status) {
   switch (status) {
@@ -318,64 +434,57 @@ std::int64_t CampaignDb::upsert_seed(const std::string& path, const std::string&
 }
 
 std::int64_t CampaignDb::record_search(const SearchRecord& search,
-                                       std::span<const EvaluationRecord> evaluations) {
+                                       std::span<const CampaignEvaluation> evaluations) {
   Transaction transaction(connection_);
-  Statement insert(connection_,
-                   "INSERT INTO searches (run_id, seed_id, algorithm, budget, status, "
-                   "output_folder) VALUES (?, ?, ?, ?, ?, ?)");
-  insert.bind(1, search.run_id)
-      .bind(2, search.seed_id)
-      .bind(3, std::string_view(search.algorithm))
-      .bind(4, static_cast<std::int64_t>(search.budget))
-      .bind(5, status_name(search.status))
-      .bind(6, std::string_view(search.output_folder))
-      .step();
-  const std::int64_t id = sqlite3_last_insert_rowid(connection_);
-  for (const EvaluationRecord& evaluation : evaluations) {
-    Statement row(connection_,
-                  "INSERT INTO evaluations (search_id, evaluation_index, robustness, finding) "
-                  "VALUES (?, ?, ?, ?)");
-    row.bind(1, id)
-        .bind(2, evaluation.index)
-        .bind(3, evaluation.robustness)
-        .bind(4, std::int64_t{evaluation.finding ? 1 : 0})
-        .step();
-  }
+  const std::int64_t id = insert_search(connection_, search, evaluations, search.new_modes);
   transaction.commit();
   return id;
+}
+
+RecordedSearch CampaignDb::record_search_result(const SearchRecord& search,
+                                                std::span<const CampaignEvaluation> evaluations,
+                                                std::span<const FailureModeRecord> modes) {
+  Transaction transaction(connection_);
+  RecordedSearch recorded;
+  for (const FailureModeRecord& mode : modes)
+    if (upsert_mode(connection_, search.run_id, mode).added) ++recorded.new_modes;
+  recorded.search_id = insert_search(connection_, search, evaluations, recorded.new_modes);
+  transaction.commit();
+  return recorded;
 }
 
 CampaignFailureMode CampaignDb::upsert_failure_mode(std::int64_t run_id,
                                                     const FailureModeRecord& mode) {
   Transaction transaction(connection_);
-  // A known mode keeps its representative scenario and replay command: the first one found is
-  // the one the replays of later runs have been judging.
-  Statement insert(connection_,
-                   "INSERT INTO failure_modes (seed_id, signature, spec, responsibility, "
-                   "scenario_file, replay_command, first_seen_run, last_seen_run, status) "
-                   "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?7, 'new') "
-                   "ON CONFLICT (seed_id, signature) DO UPDATE SET "
-                   "status = CASE WHEN first_seen_run = ?7 THEN status "
-                   "WHEN status = 'fixed' THEN 'regressed' "
-                   "WHEN status = 'regressed' AND last_seen_run = ?7 THEN 'regressed' "
-                   "ELSE 'still_failing' END, "
-                   "last_seen_run = ?7");
-  insert.bind(1, mode.seed_id)
-      .bind(2, std::string_view(mode.signature))
-      .bind(3, std::string_view(mode.spec))
-      .bind(4, std::string_view(mode.responsibility))
-      .bind(5, std::string_view(mode.scenario_file))
-      .bind(6, std::string_view(mode.replay_command))
-      .bind(7, run_id)
-      .step();
-  Statement find(
-      connection_,
-      (std::string(kFailureModeColumns) + " WHERE seed_id = ? AND signature = ?").c_str());
-  find.bind(1, mode.seed_id).bind(2, std::string_view(mode.signature));
-  SCENFUZZ_DEMAND(find.step());
-  CampaignFailureMode stored = read_failure_mode(find);
+  CampaignFailureMode stored = upsert_mode(connection_, run_id, mode).mode;
   transaction.commit();
   return stored;
+}
+
+CampaignReplay CampaignDb::record_replay(std::int64_t run_id, std::int64_t failure_mode_id,
+                                         const ReplayOutcome& outcome) {
+  Transaction transaction(connection_);
+  Statement find(connection_, (std::string(kFailureModeColumns) + " WHERE id = ?").c_str());
+  find.bind(1, failure_mode_id);
+  if (!find.step())
+    throw CampaignDbError("campaign.db: no failure mode " + std::to_string(failure_mode_id));
+  const CampaignFailureMode mode = read_failure_mode(find);
+  const ReplayVerdict verdict = replay_verdict(mode.status, outcome);
+  const CampaignReplay replay{run_id, failure_mode_id, outcome.tried, outcome.failing,
+                              verdict.verdict};
+  Statement insert(connection_,
+                   "INSERT INTO replays (run_id, failure_mode_id, tried, failing, verdict) "
+                   "VALUES (?, ?, ?, ?, ?)");
+  insert.bind(1, run_id)
+      .bind(2, failure_mode_id)
+      .bind(3, std::int64_t{outcome.tried})
+      .bind(4, std::int64_t{outcome.failing})
+      .bind(5, std::string_view(verdict.verdict))
+      .step();
+  Statement update(connection_, "UPDATE failure_modes SET status = ? WHERE id = ?");
+  update.bind(1, status_name(verdict.status)).bind(2, failure_mode_id).step();
+  transaction.commit();
+  return replay;
 }
 
 void CampaignDb::set_failure_mode_status(std::int64_t failure_mode_id, FailureModeStatus status) {
@@ -403,7 +512,8 @@ std::vector<CampaignSeed> CampaignDb::list_seeds() {
 
 std::vector<CampaignSearch> CampaignDb::list_searches() {
   Statement rows(connection_,
-                 "SELECT id, run_id, seed_id, algorithm, budget, status, output_folder "
+                 "SELECT id, run_id, seed_id, algorithm, budget, status, output_folder, round, "
+                 "spec_index, spec, search_seed, simulations, new_modes, best_robustness "
                  "FROM searches ORDER BY id");
   std::vector<CampaignSearch> searches;
   while (rows.step()) {
@@ -414,20 +524,45 @@ std::vector<CampaignSearch> CampaignDb::list_searches() {
                      rows.text(3),
                      static_cast<std::uint64_t>(rows.integer(4)),
                      search_status(rows.text(5)),
-                     rows.text(6)};
+                     rows.text(6),
+                     rows.integer(7),
+                     rows.integer(8),
+                     rows.text(9),
+                     static_cast<std::uint64_t>(rows.integer(10)),
+                     static_cast<std::uint64_t>(rows.integer(11)),
+                     rows.integer(12),
+                     rows.real(13)};
     searches.push_back(std::move(search));
   }
   return searches;
 }
 
-std::vector<EvaluationRecord> CampaignDb::list_evaluations(std::int64_t search_id) {
+std::vector<CampaignEvaluation> CampaignDb::list_evaluations(std::int64_t search_id) {
   Statement rows(connection_,
                  "SELECT evaluation_index, robustness, finding FROM evaluations "
                  "WHERE search_id = ? ORDER BY evaluation_index");
   rows.bind(1, search_id);
-  std::vector<EvaluationRecord> evaluations;
+  std::vector<CampaignEvaluation> evaluations;
   while (rows.step()) evaluations.push_back({rows.integer(0), rows.real(1), rows.integer(2) != 0});
   return evaluations;
+}
+
+std::vector<CampaignReplay> CampaignDb::list_replays() {
+  Statement rows(connection_,
+                 "SELECT run_id, failure_mode_id, tried, failing, verdict FROM replays "
+                 "ORDER BY run_id, failure_mode_id");
+  std::vector<CampaignReplay> replays;
+  while (rows.step())
+    replays.push_back({rows.integer(0), rows.integer(1), static_cast<int>(rows.integer(2)),
+                       static_cast<int>(rows.integer(3)), rows.text(4)});
+  return replays;
+}
+
+std::optional<CampaignRun> CampaignDb::unfinished_run() {
+  Statement row(connection_,
+                "SELECT id, started, ended, ego_version FROM runs ORDER BY id DESC LIMIT 1");
+  if (!row.step() || !row.text(2).empty()) return std::nullopt;
+  return CampaignRun{row.integer(0), row.text(1), row.text(2), row.text(3)};
 }
 
 std::vector<CampaignFailureMode> CampaignDb::list_failure_modes() {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fuzz/campaign/campaign_lock.hpp"
+#include "fuzz/campaign/replay_outcome.hpp"
 
 struct sqlite3;  // sqlite3.h is for campaign_db.cpp alone
 
@@ -29,8 +30,10 @@ class CampaignDbError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The schema this build reads and writes; schema_version holds the database's.
-inline constexpr std::int64_t kCampaignSchemaVersion = 1;
+// The schema this build reads and writes; schema_version holds the database's. Version 1 (before
+// `campaign run` existed) lacked the searches' round and arm and the replays table; such a
+// database is refused with a message saying to start the campaign's database afresh.
+inline constexpr std::int64_t kCampaignSchemaVersion = 2;
 
 enum class SearchStatus { running, done, stopped, failed };
 enum class FailureModeStatus { new_mode, still_failing, fixed, flaky, regressed };
@@ -59,6 +62,17 @@ struct SearchRecord {
   std::uint64_t budget = 0;  // simulations it was given
   SearchStatus status = SearchStatus::done;
   std::string output_folder;  // relative to the campaign folder
+  // Where the run's schedule put it (budget_schedule.hpp): the round, and the arm's spec (its
+  // index among the seed's objectives, and its name).
+  std::int64_t round = 0;
+  std::int64_t spec_index = 0;
+  std::string spec;
+  std::uint64_t search_seed = 0;  // the search's --seed
+  std::uint64_t simulations = 0;  // spent: judged and failed evaluations
+  // Failure modes unknown to the campaign before this search was recorded (set by
+  // record_search_result; what the schedule rewards).
+  std::int64_t new_modes = 0;
+  std::optional<double> best_robustness;  // lowest robustness of its spec; none if none judged
 };
 
 struct CampaignSearch {
@@ -68,7 +82,7 @@ struct CampaignSearch {
 
 // One evaluation of a search, compactly: where it was in the search, the robustness of its
 // objective (nullopt: not judged), whether it was a finding.
-struct EvaluationRecord {
+struct CampaignEvaluation {
   std::int64_t index = 0;
   std::optional<double> robustness;
   bool finding = false;
@@ -90,6 +104,32 @@ struct CampaignFailureMode {
   std::int64_t first_seen_run = 0;
   std::int64_t last_seen_run = 0;
   FailureModeStatus status = FailureModeStatus::new_mode;
+};
+
+// The regression replay's verdict on one failure mode in one run.
+struct CampaignReplay {
+  std::int64_t run_id = 0;
+  std::int64_t failure_mode_id = 0;
+  int tried = 0;
+  int failing = 0;
+  // "still_failing", "regressed", "fixed", "flaky" (the status it set), "not_replayed" (tried 0:
+  // the status stays) or "error" (the status stays).
+  std::string verdict;
+};
+
+// How the regression replay's outcome moves a mode's status: every seed failing: still_failing
+// (regressed when it was fixed); none: fixed; some: flaky; nothing tried or an error: unchanged.
+// The verdict as CampaignReplay::verdict names it, and the status it leaves.
+struct ReplayVerdict {
+  std::string verdict;
+  FailureModeStatus status = FailureModeStatus::new_mode;
+};
+ReplayVerdict replay_verdict(FailureModeStatus before, const ReplayOutcome& outcome);
+
+// record_search_result's answer.
+struct RecordedSearch {
+  std::int64_t search_id = 0;
+  std::int64_t new_modes = 0;
 };
 
 class CampaignDb;
@@ -116,13 +156,28 @@ class CampaignDb {
   // A run starts now with the ego `ego_version`; end_run records when it ended.
   std::int64_t begin_run(const std::string& ego_version);
   void end_run(std::int64_t run_id);
+  // The latest run when it has not ended (killed or interrupted): the one to continue.
+  std::optional<CampaignRun> unfinished_run();
 
   // The seed with this path and content, added if new; its id.
   std::int64_t upsert_seed(const std::string& path, const std::string& content_hash);
 
   // The search and its evaluations, together or not at all; the search's id.
   std::int64_t record_search(const SearchRecord& search,
-                             std::span<const EvaluationRecord> evaluations);
+                             std::span<const CampaignEvaluation> evaluations);
+
+  // A campaign search's whole result in one transaction: the search, its evaluations, and the
+  // failure modes it found (each as upsert_failure_mode), so that a kill never leaves a search
+  // without its modes. `search.new_modes` is ignored: the modes its seed did not have before are
+  // counted and stored with it.
+  RecordedSearch record_search_result(const SearchRecord& search,
+                                      std::span<const CampaignEvaluation> evaluations,
+                                      std::span<const FailureModeRecord> modes);
+
+  // The regression replay of one failure mode in a run, with the status its verdict sets, in one
+  // transaction; a second replay of the same mode in the same run is refused (CampaignDbError).
+  CampaignReplay record_replay(std::int64_t run_id, std::int64_t failure_mode_id,
+                               const ReplayOutcome& outcome);
 
   // A failure mode found in run `run_id`. New to its seed: added as new, first and last seen in
   // this run. Known: last seen moves to this run, and its status becomes still_failing (a fixed
@@ -134,8 +189,9 @@ class CampaignDb {
   std::vector<CampaignRun> list_runs();
   std::vector<CampaignSeed> list_seeds();
   std::vector<CampaignSearch> list_searches();
-  std::vector<EvaluationRecord> list_evaluations(std::int64_t search_id);
+  std::vector<CampaignEvaluation> list_evaluations(std::int64_t search_id);
   std::vector<CampaignFailureMode> list_failure_modes();
+  std::vector<CampaignReplay> list_replays();  // by run, then failure mode
 
   // --- Reading without the run lock (the report) ---
   // Opens an existing DIR/campaign.db read-only, without taking the campaign's lock, so that a

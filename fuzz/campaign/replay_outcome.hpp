@@ -1,6 +1,7 @@
-// What replaying one known failure mode against the current ego found: with how many perception
-// seeds it was simulated, and with how many it failed the same way again; an error (the scenario
-// no longer reads, the map is missing) leaves its status unchanged.
+// What replaying one known failure mode against the current ego says (the regression replay at
+// the start of every campaign run): how many perception seeds were tried and how many of them
+// still fail. The campaign run turns it into the mode's status (campaign_run.hpp); the replay
+// itself lives in regression_replay.*.
 #pragma once
 
 #include <string>
@@ -8,9 +9,9 @@
 namespace scenfuzz {
 
 struct ReplayOutcome {
-  int tried = 0;
-  int failing = 0;
-  std::string error;
+  int tried = 0;      // perception seeds replayed; 0: not replayed (the status stays)
+  int failing = 0;    // of those, how many still fail the same way
+  std::string error;  // why the mode could not be replayed (its file is gone, ...); empty if it was
 };
 
 }  // namespace scenfuzz

@@ -4,6 +4,7 @@
 #include "fuzz/campaign/campaign_db.hpp"
 
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,6 +21,15 @@ namespace scenfuzz {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Rewrites the schema version of the database at `path`, as an older scenfuzz would have left it.
+void sqlite_set_version(const fs::path& path, int version) {
+  sqlite3* connection = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &connection), SQLITE_OK);
+  const std::string sql = "UPDATE schema_version SET version = " + std::to_string(version);
+  EXPECT_EQ(sqlite3_exec(connection, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(connection);
+}
 
 class CampaignDbTest : public ::testing::Test {
  protected:
@@ -47,6 +57,19 @@ class CampaignDbTest : public ::testing::Test {
             "ego",
             "0123456789abcdef.avu",
             "scenfuzz run 0123456789abcdef.avu"};
+  }
+
+  static SearchRecord search_record(std::int64_t run, std::int64_t seed, std::uint64_t budget,
+                                    const std::string& folder, std::int64_t round = 0) {
+    SearchRecord search;
+    search.run_id = run;
+    search.seed_id = seed;
+    search.algorithm = "ga";
+    search.budget = budget;
+    search.output_folder = folder;
+    search.round = round;
+    search.spec = "spec1";
+    return search;
   }
 
   fs::path dir_;
@@ -176,10 +199,10 @@ TEST_F(CampaignDbTest, RecordsASearchWithItsEvaluations) {
   const std::int64_t run = db->begin_run("v1");
   const std::int64_t seed = db->upsert_seed("a.avu", content_hash("a"));
   const double inf = std::numeric_limits<double>::infinity();
-  const std::vector<EvaluationRecord> evaluations = {
+  const std::vector<CampaignEvaluation> evaluations = {
       {0, 1.5, false}, {1, std::nullopt, false}, {2, -0.25, true}, {3, inf, false}};
   const std::int64_t search =
-      db->record_search({run, seed, "ga", 4, SearchStatus::done, "searches/1"}, evaluations);
+      db->record_search(search_record(run, seed, 4, "searches/1"), evaluations);
   const std::vector<CampaignSearch> searches = db->list_searches();
   ASSERT_EQ(searches.size(), 1u);
   EXPECT_EQ(searches[0].id, search);
@@ -187,7 +210,7 @@ TEST_F(CampaignDbTest, RecordsASearchWithItsEvaluations) {
   EXPECT_EQ(searches[0].record.budget, 4u);
   EXPECT_EQ(searches[0].record.status, SearchStatus::done);
   EXPECT_EQ(searches[0].record.output_folder, "searches/1");
-  const std::vector<EvaluationRecord> stored = db->list_evaluations(search);
+  const std::vector<CampaignEvaluation> stored = db->list_evaluations(search);
   ASSERT_EQ(stored.size(), 4u);
   EXPECT_EQ(stored[0].robustness, 1.5);
   EXPECT_FALSE(stored[1].robustness);
@@ -203,24 +226,106 @@ TEST_F(CampaignDbTest, AFailedChangeLeavesNoPartialRows) {
   const std::int64_t run = db->begin_run("v1");
   const std::int64_t seed = db->upsert_seed("a.avu", content_hash("a"));
   // The search row and two evaluations go in before the duplicate index fails.
-  const std::vector<EvaluationRecord> duplicate = {
+  const std::vector<CampaignEvaluation> duplicate = {
       {0, 1.0, false}, {1, 2.0, false}, {1, 3.0, false}};
-  EXPECT_THROW(db->record_search({run, seed, "ga", 3, SearchStatus::done, "s"}, duplicate),
-               CampaignDbError);
+  EXPECT_THROW(db->record_search(search_record(run, seed, 3, "s"), duplicate), CampaignDbError);
   EXPECT_TRUE(db->list_searches().empty());
   EXPECT_TRUE(db->list_evaluations(1).empty());
   // A search of a seed that does not exist breaks a foreign key.
-  EXPECT_THROW(db->record_search({run, seed + 100, "ga", 1, SearchStatus::done, "s"},
-                                 std::vector<EvaluationRecord>{{0, 1.0, false}}),
+  EXPECT_THROW(db->record_search(search_record(run, seed + 100, 1, "s"),
+                                 std::vector<CampaignEvaluation>{{0, 1.0, false}}),
                CampaignDbError);
   EXPECT_TRUE(db->list_searches().empty());
   EXPECT_THROW(db->upsert_failure_mode(run + 100, mode(seed, "sig")), CampaignDbError);
   EXPECT_TRUE(db->list_failure_modes().empty());
   // The connection is still usable afterwards.
-  const std::int64_t search = db->record_search({run, seed, "ga", 1, SearchStatus::done, "s"},
-                                                std::vector<EvaluationRecord>{{0, 1.0, false}});
+  const std::int64_t search = db->record_search(search_record(run, seed, 1, "s"),
+                                                std::vector<CampaignEvaluation>{{0, 1.0, false}});
   EXPECT_EQ(db->list_searches().size(), 1u);
   EXPECT_EQ(db->list_evaluations(search).size(), 1u);
+}
+
+// A campaign search's result goes in whole: its row, evaluations and modes, with the modes its
+// seed did not know counted; a search recorded twice (same run, round, seed and spec) is refused
+// and leaves no second set of modes behind.
+TEST_F(CampaignDbTest, RecordsASearchResultWithItsModesInOneTransaction) {
+  auto db = open();
+  ASSERT_TRUE(db);
+  const std::int64_t run = db->begin_run("v1");
+  const std::int64_t seed = db->upsert_seed("a.avu", content_hash("a"));
+  db->upsert_failure_mode(run, mode(seed, "known"));
+  SearchRecord search = search_record(run, seed, 2, "searches/run-1/round-0/1-0");
+  search.spec_index = 1;
+  search.search_seed = 0xfedcba9876543210u;  // above 2^63: stored by its bits
+  search.simulations = 2;
+  search.best_robustness = -0.5;
+  const std::vector<CampaignEvaluation> evaluations = {{0, 0.5, false}, {1, -0.5, true}};
+  const std::vector<FailureModeRecord> modes = {mode(seed, "known"), mode(seed, "fresh")};
+  const RecordedSearch recorded = db->record_search_result(search, evaluations, modes);
+  EXPECT_EQ(recorded.new_modes, 1);
+  ASSERT_EQ(db->list_searches().size(), 1u);
+  const SearchRecord stored = db->list_searches()[0].record;
+  EXPECT_EQ(stored.new_modes, 1);
+  EXPECT_EQ(stored.spec_index, 1);
+  EXPECT_EQ(stored.spec, "spec1");
+  EXPECT_EQ(stored.search_seed, 0xfedcba9876543210u);
+  EXPECT_EQ(stored.simulations, 2u);
+  EXPECT_EQ(stored.best_robustness, -0.5);
+  EXPECT_EQ(db->list_evaluations(recorded.search_id).size(), 2u);
+  ASSERT_EQ(db->list_failure_modes().size(), 2u);
+
+  const std::vector<FailureModeRecord> more = {mode(seed, "another")};
+  EXPECT_THROW(db->record_search_result(search, evaluations, more), CampaignDbError);
+  EXPECT_EQ(db->list_failure_modes().size(), 2u);
+  EXPECT_EQ(db->list_searches().size(), 1u);
+}
+
+TEST_F(CampaignDbTest, ReplayVerdictsMoveStatuses) {
+  using S = FailureModeStatus;
+  EXPECT_EQ(replay_verdict(S::new_mode, {4, 4, ""}).status, S::still_failing);
+  EXPECT_EQ(replay_verdict(S::fixed, {4, 4, ""}).status, S::regressed);
+  EXPECT_EQ(replay_verdict(S::fixed, {4, 4, ""}).verdict, "regressed");
+  EXPECT_EQ(replay_verdict(S::still_failing, {4, 0, ""}).status, S::fixed);
+  EXPECT_EQ(replay_verdict(S::still_failing, {4, 1, ""}).status, S::flaky);
+  EXPECT_EQ(replay_verdict(S::flaky, {0, 0, ""}).status, S::flaky);
+  EXPECT_EQ(replay_verdict(S::flaky, {0, 0, ""}).verdict, "not_replayed");
+  EXPECT_EQ(replay_verdict(S::new_mode, {4, 2, "gone"}).status, S::new_mode);
+  EXPECT_EQ(replay_verdict(S::new_mode, {4, 2, "gone"}).verdict, "error");
+}
+
+TEST_F(CampaignDbTest, RecordsOneReplayPerModeAndRun) {
+  auto db = open();
+  ASSERT_TRUE(db);
+  const std::int64_t first = db->begin_run("v1");
+  const std::int64_t seed = db->upsert_seed("a.avu", content_hash("a"));
+  const std::int64_t id = db->upsert_failure_mode(first, mode(seed, "sig")).id;
+  db->end_run(first);
+  const std::int64_t second = db->begin_run("v2");
+  EXPECT_EQ(db->unfinished_run()->id, second);
+  const CampaignReplay replay = db->record_replay(second, id, {3, 0, ""});
+  EXPECT_EQ(replay.verdict, "fixed");
+  EXPECT_EQ(db->list_failure_modes()[0].status, FailureModeStatus::fixed);
+  EXPECT_THROW(db->record_replay(second, id, {3, 3, ""}), CampaignDbError);
+  EXPECT_EQ(db->list_failure_modes()[0].status, FailureModeStatus::fixed);
+  ASSERT_EQ(db->list_replays().size(), 1u);
+  EXPECT_EQ(db->list_replays()[0].tried, 3);
+  EXPECT_THROW(db->record_replay(second, id + 7, {3, 3, ""}), CampaignDbError);
+  db->end_run(second);
+  EXPECT_FALSE(db->unfinished_run());
+}
+
+TEST_F(CampaignDbTest, RefusesAnOlderSchemaSayingWhatToDo) {
+  {
+    auto db = open();
+    ASSERT_TRUE(db);
+  }
+  sqlite_set_version(dir_ / "campaign.db", 1);
+  const CampaignDbOpening opening = CampaignDb::open(dir_);
+  EXPECT_FALSE(opening.db);
+  EXPECT_NE(opening.error.find("its schema version is 1, this scenfuzz reads version 2"),
+            std::string::npos)
+      << opening.error;
+  EXPECT_NE(opening.error.find("move campaign.db away"), std::string::npos) << opening.error;
 }
 
 TEST_F(CampaignDbTest, ASecondOpenerIsRefusedNamingTheFirst) {

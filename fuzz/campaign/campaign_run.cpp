@@ -1,0 +1,274 @@
+// run_campaign: the run's phases in order (config, seeds, lock, run, replay, rounds, end) and its
+// exit status.
+#include "fuzz/campaign/campaign_run.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "fuzz/campaign/budget_schedule.hpp"
+#include "fuzz/campaign/campaign_config.hpp"
+#include "fuzz/campaign/campaign_round.hpp"
+#include "fuzz/campaign/campaign_seeds.hpp"
+#include "fuzz/campaign/mode_files.hpp"
+#include "fuzz/cli.hpp"
+#include "fuzz/report_format.hpp"
+#include "fuzz/stop_signals.hpp"
+
+namespace scenfuzz {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Makes the campaign folder the current one while it lives, so that every path the run writes
+// (search folders, finding headers, modes, replay commands) is relative to it and the same
+// wherever the folder sits.
+class CurrentFolder {
+ public:
+  // Empty `error` on success.
+  CurrentFolder(const fs::path& dir, std::string& error) {
+    std::error_code failure;
+    previous_ = fs::current_path(failure);
+    if (!failure) fs::current_path(dir, failure);
+    if (failure)
+      error = "cannot enter the campaign folder '" + dir.string() + "': " + failure.message();
+    entered_ = !failure;
+  }
+  ~CurrentFolder() {
+    std::error_code ignored;
+    if (entered_) fs::current_path(previous_, ignored);
+  }
+  CurrentFolder(const CurrentFolder&) = delete;
+  CurrentFolder& operator=(const CurrentFolder&) = delete;
+
+ private:
+  fs::path previous_;
+  bool entered_ = false;
+};
+
+std::optional<CampaignConfig> read_config(const fs::path& dir, std::ostream& err) {
+  const fs::path path = dir / "campaign.toml";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    err << "scenfuzz: error: cannot read '" << path.string() << "': " << std::strerror(errno)
+        << " (start a campaign with 'scenfuzz campaign init DIR FILES...')\n";
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  CampaignConfigResult parsed = parse_campaign_config(text.str(), path.string());
+  err << format_diagnostics(SourceFile(path.string(), text.str()), parsed.diagnostics);
+  return std::move(parsed.config);
+}
+
+// The unfinished run of the same ego, continued; else a new one (an unfinished run of another
+// ego version is closed first: its version can no longer be tested).
+std::int64_t run_to_use(CampaignDb& db, const std::string& ego_version, std::ostream& out) {
+  if (const std::optional<CampaignRun> last = db.unfinished_run()) {
+    if (last->ego_version == ego_version) {
+      out << "continuing run " << last->id << " (started " << last->started << ")\n" << std::flush;
+      return last->id;
+    }
+    db.end_run(last->id);
+  }
+  const std::int64_t run = db.begin_run(ego_version);
+  out << "run " << run << " of ego version " << ego_version << "\n" << std::flush;
+  return run;
+}
+
+// The regression replay: every failure mode known before this run and not replayed in it yet.
+// False when a signal stopped it.
+bool replay_known_modes(CampaignDb& db, std::int64_t run, const ModeReplayer& replay,
+                        std::ostream& out) {
+  std::set<std::int64_t> done;
+  for (const CampaignReplay& replayed : db.list_replays())
+    if (replayed.run_id == run) done.insert(replayed.failure_mode_id);
+  std::map<std::string, int> verdicts;
+  for (const CampaignFailureMode& mode : db.list_failure_modes()) {
+    if (mode.first_seen_run >= run || done.count(mode.id)) continue;
+    if (StopSignalGuard::stop_requested()) return false;
+    ++verdicts[db.record_replay(run, mode.id, replay(mode)).verdict];
+  }
+  if (!verdicts.empty()) {
+    out << "regression replay:";
+    for (const auto& [verdict, count] : verdicts) out << " " << verdict << " " << count;
+    out << "\n";
+  }
+  return true;
+}
+
+// The complete rounds of this run before `round`, as the schedule reads them.
+std::vector<std::vector<ArmRound>> history(const std::vector<CampaignSearch>& searches,
+                                           const CampaignSeeds& seeds, std::int64_t run,
+                                           std::int64_t round) {
+  std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> arm_of;
+  for (std::size_t a = 0; a < seeds.arms.size(); ++a)
+    arm_of[{seeds.seeds[seeds.arms[a].seed].id, static_cast<std::int64_t>(seeds.arms[a].spec)}] = a;
+  std::vector<std::vector<ArmRound>> rounds(static_cast<std::size_t>(round),
+                                            std::vector<ArmRound>(seeds.arms.size()));
+  for (const CampaignSearch& search : searches) {
+    const SearchRecord& r = search.record;
+    const auto arm = arm_of.find({r.seed_id, r.spec_index});
+    if (r.run_id != run || r.round >= round || arm == arm_of.end()) continue;
+    rounds[static_cast<std::size_t>(r.round)][arm->second] = {
+        true, r.simulations, static_cast<std::size_t>(r.new_modes), r.best_robustness};
+  }
+  return rounds;
+}
+
+// The round's searches not recorded yet.
+std::vector<CampaignSearchTask> round_tasks(const std::vector<CampaignSearch>& searches,
+                                            const CampaignSeeds& seeds, std::uint64_t base_seed,
+                                            std::int64_t run, std::int64_t round,
+                                            const std::vector<std::uint64_t>& budgets) {
+  std::set<std::pair<std::int64_t, std::int64_t>> recorded;
+  for (const CampaignSearch& search : searches)
+    if (search.record.run_id == run && search.record.round == round)
+      recorded.insert({search.record.seed_id, search.record.spec_index});
+  std::vector<CampaignSearchTask> tasks;
+  for (std::size_t a = 0; a < seeds.arms.size(); ++a) {
+    const std::int64_t seed_id = seeds.seeds[seeds.arms[a].seed].id;
+    const std::size_t spec = seeds.arms[a].spec;
+    if (budgets[a] == 0 || recorded.count({seed_id, static_cast<std::int64_t>(spec)})) continue;
+    CampaignSearchTask task;
+    task.arm = a;
+    task.budget = budgets[a];
+    task.seed = campaign_search_seed(base_seed, run, round, seed_id, spec);
+    task.folder = campaign_search_folder(run, round, seed_id, spec);
+    tasks.push_back(std::move(task));
+  }
+  return tasks;
+}
+
+// Plans and runs rounds until the budget is spent, the wall time is up, a signal or an error.
+RoundEnd run_rounds(RoundContext& context, const CampaignConfig& config) {
+  ScheduleInput schedule;
+  for (const CampaignArm& arm : context.seeds.arms) schedule.weights.push_back(arm.weight);
+  schedule.total = config.budget_simulations;
+  for (std::int64_t round = 0;; ++round) {
+    const std::vector<CampaignSearch> searches = context.db.list_searches();
+    schedule.rounds = history(searches, context.seeds, context.run, round);
+    const std::vector<std::uint64_t> budgets = plan_round(schedule);
+    if (std::all_of(budgets.begin(), budgets.end(), [](std::uint64_t b) { return b == 0; }))
+      return RoundEnd::complete;
+    const RoundEnd end = run_round(
+        context, round,
+        round_tasks(searches, context.seeds, config.search.seed, context.run, round, budgets));
+    if (end != RoundEnd::complete) return end;
+  }
+}
+
+std::size_t worker_count(const CampaignRunOptions& options, const CampaignConfig& config) {
+  const std::uint64_t jobs = options.jobs ? *options.jobs : config.search.jobs;
+  if (jobs > 0) return static_cast<std::size_t>(jobs);
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+// What the run found: new failure modes, and regressions (a fixed mode failing again).
+struct RunFindings {
+  int new_modes = 0;
+  int regressed = 0;
+  std::map<std::string, int> statuses;
+};
+
+RunFindings run_findings(CampaignDb& db, std::int64_t run) {
+  std::set<std::int64_t> replayed_regressed;
+  for (const CampaignReplay& replay : db.list_replays())
+    if (replay.run_id == run && replay.verdict == "regressed")
+      replayed_regressed.insert(replay.failure_mode_id);
+  RunFindings findings;
+  for (const CampaignFailureMode& mode : db.list_failure_modes()) {
+    ++findings.statuses[std::string(status_name(mode.status))];
+    if (mode.first_seen_run == run) ++findings.new_modes;
+    if (mode.status == FailureModeStatus::regressed &&
+        (mode.last_seen_run == run || replayed_regressed.count(mode.id)))
+      ++findings.regressed;
+  }
+  return findings;
+}
+
+int report(CampaignDb& db, std::int64_t run, RoundEnd end, std::ostream& out, std::ostream& err) {
+  const RunFindings findings = run_findings(db, run);
+  if (end == RoundEnd::interrupted)
+    err << "scenfuzz: interrupted: every finished search is recorded; run 'scenfuzz campaign "
+           "run' on the folder again to continue run "
+        << run << "\n";
+  else
+    out << "run " << run << " ended" << (end == RoundEnd::wall_time ? " at the wall time" : "")
+        << "\n";
+  out << "failure modes:";
+  for (const auto& [status, count] : findings.statuses) out << " " << status << " " << count;
+  if (findings.statuses.empty()) out << " none";
+  out << "; this run: " << findings.new_modes << " new, " << findings.regressed << " regressed\n";
+  return findings.new_modes + findings.regressed > 0 ? kExitViolated : kExitSuccess;
+}
+
+// The run once the campaign folder is the current one and the seeds are loaded.
+int run_in_folder(const CampaignRunOptions& options, const CampaignConfig& config,
+                  CampaignSeeds& seeds, const ModeReplayer& replay, std::ostream& out,
+                  std::ostream& err) {
+  CampaignDbOpening opening = CampaignDb::open(".");
+  if (!opening.db) {
+    err << "scenfuzz: error: " << opening.error << "\n";
+    return kExitBadInput;
+  }
+  CampaignDb& db = *opening.db;
+  remove_mode_temporaries(".");
+  StopSignalGuard guard;
+  for (LoadedSeed& seed : seeds.seeds) seed.id = db.upsert_seed(seed.path, seed.content_hash);
+  const std::int64_t run = run_to_use(db, config.ego_version, out);
+  const SimulationCommandOptions simulation = campaign_simulation(config);
+  RoundContext context{db,           seeds, simulation, run, worker_count(options, config),
+                       std::nullopt, out,   err};
+  if (config.budget_wall_seconds)
+    context.deadline =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                           std::chrono::duration<double>(*config.budget_wall_seconds));
+  RoundEnd end = replay_known_modes(db, run, replay, out) ? run_rounds(context, config)
+                                                          : RoundEnd::interrupted;
+  if (end == RoundEnd::failed) return kExitBadInput;
+  if (end != RoundEnd::interrupted) db.end_run(run);
+  return report(db, run, end, out, err);
+}
+
+}  // namespace
+
+ReplayOutcome replay_nothing(const CampaignFailureMode&) { return {}; }
+
+int run_campaign(const CampaignRunOptions& options, const ModeReplayer& replay, std::ostream& out,
+                 std::ostream& err) {
+  const std::optional<CampaignConfig> config = read_config(options.dir, err);
+  if (!config) return kExitBadInput;
+  std::string problem;
+  CurrentFolder inside(options.dir, problem);
+  if (!problem.empty()) {
+    err << "scenfuzz: error: " << problem << "\n";
+    return kExitBadInput;
+  }
+  std::optional<CampaignSeeds> seeds =
+      load_campaign_seeds(*config, campaign_simulation(*config), err);
+  if (!seeds) {
+    err << "scenfuzz: error: the campaign's seeds have errors (paths are relative to '"
+        << options.dir << "'): nothing was run\n";
+    return kExitBadInput;
+  }
+  try {
+    return run_in_folder(options, *config, *seeds, replay, out, err);
+  } catch (const CampaignDbError& error) {
+    err << "scenfuzz: error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+}
+
+}  // namespace scenfuzz
