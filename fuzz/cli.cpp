@@ -300,6 +300,10 @@ void declare_campaign_report(CLI::App& campaign, Action& action) {
   report->callback([options, &action] {
     action = [options](std::ostream& out, std::ostream& err) {
       return run_campaign_report(*options, out, err);
+    };
+  });
+}
+
 void declare_campaign_run(CLI::App& campaign, Action& action) {
   auto options = std::make_shared<CampaignRunOptions>();
   CLI::App* run = campaign.add_subcommand(

@@ -37,7 +37,7 @@ void add_searches(CampaignDb& db, std::map<std::int64_t, ReportSeed*>& seeds,
                   std::map<std::int64_t, ReportRun*>& runs) {
   std::map<std::int64_t, std::vector<std::optional<double>>> robustness;
   for (const CampaignSearch& search : db.list_searches()) {
-    const std::vector<EvaluationRecord> evaluations = db.list_evaluations(search.id);
+    const std::vector<CampaignEvaluation> evaluations = db.list_evaluations(search.id);
     if (const auto run = runs.find(search.record.run_id); run != runs.end()) {
       ++run->second->searches;
       run->second->simulations += evaluations.size();
@@ -49,7 +49,7 @@ void add_searches(CampaignDb& db, std::map<std::int64_t, ReportSeed*>& seeds,
     if (shown.run_starts.empty() || shown.run_starts.back().run_id != search.record.run_id)
       shown.run_starts.push_back({search.record.run_id, values.size()});
     ++shown.searches;
-    for (const EvaluationRecord& evaluation : evaluations) {
+    for (const CampaignEvaluation& evaluation : evaluations) {
       values.push_back(evaluation.robustness);
       if (evaluation.robustness) ++shown.judged;
     }

@@ -45,8 +45,14 @@ TEST_F(CampaignDbReadingTest, ReadsWhileARunHoldsTheLockAndSeesItsCommits) {
   EXPECT_EQ(reader.db->list_seeds().size(), 1u);
 
   // The run goes on writing while the reader is open; the reader's next query sees it.
-  const EvaluationRecord evaluations[] = {{0, -0.5, true}, {1, 2.0, false}};
-  run.db->record_search({run_id, seed, "ga", 2, SearchStatus::done, "searches/x"}, evaluations);
+  const CampaignEvaluation evaluations[] = {{0, -0.5, true}, {1, 2.0, false}};
+  SearchRecord search;
+  search.run_id = run_id;
+  search.seed_id = seed;
+  search.algorithm = "ga";
+  search.budget = 2;
+  search.output_folder = "searches/x";
+  run.db->record_search(search, evaluations);
   run.db->upsert_failure_mode(run_id, {seed, "sig", "spec1", "ego", "modes/h.avu", "replay"});
   ASSERT_EQ(reader.db->list_searches().size(), 1u);
   EXPECT_EQ(reader.db->list_evaluations(reader.db->list_searches()[0].id).size(), 2u);

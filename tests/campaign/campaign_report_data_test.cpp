@@ -48,12 +48,17 @@ class CampaignReportDataTest : public ::testing::Test {
 
   std::int64_t search(std::int64_t run, std::int64_t seed,
                       const std::vector<std::optional<double>>& robustness) {
-    std::vector<EvaluationRecord> evaluations;
+    std::vector<CampaignEvaluation> evaluations;
     for (std::size_t i = 0; i < robustness.size(); ++i)
       evaluations.push_back(
           {static_cast<std::int64_t>(i), robustness[i], robustness[i] && *robustness[i] < 0});
-    return db_->record_search({run, seed, "ga", robustness.size(), SearchStatus::done, "s"},
-                              evaluations);
+    SearchRecord search;
+    search.run_id = run;
+    search.seed_id = seed;
+    search.algorithm = "ga";
+    search.budget = robustness.size();
+    search.output_folder = "s";
+    return db_->record_search(search, evaluations);
   }
 
   CampaignFailureMode found(std::int64_t run, std::int64_t seed, const std::string& signature) {

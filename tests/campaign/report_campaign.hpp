@@ -19,7 +19,7 @@ namespace scenfuzz::test {
 
 // What one search found, as the campaign records it.
 struct CampaignSearchResult {
-  std::vector<EvaluationRecord> evaluations;
+  std::vector<CampaignEvaluation> evaluations;
   std::vector<FailureModeRecord> modes;
 };
 
@@ -32,8 +32,8 @@ inline int csv_column(const std::vector<std::string>& header, const std::string&
 
 // evaluations.csv as the campaign's compact records: the robustness of `spec` (the search's only
 // target), and whether the evaluation violated anything.
-inline std::vector<EvaluationRecord> read_evaluations(const std::filesystem::path& folder,
-                                                      const std::string& spec) {
+inline std::vector<CampaignEvaluation> read_evaluations(const std::filesystem::path& folder,
+                                                        const std::string& spec) {
   const auto rows = read_csv(slurp(folder / "evaluations.csv"));
   EXPECT_FALSE(rows.empty()) << folder;
   if (rows.empty()) return {};
@@ -41,9 +41,9 @@ inline std::vector<EvaluationRecord> read_evaluations(const std::filesystem::pat
   const int violated = csv_column(rows[0], "violated");
   EXPECT_GE(robustness, 0);
   EXPECT_GE(violated, 0);
-  std::vector<EvaluationRecord> records;
+  std::vector<CampaignEvaluation> records;
   for (std::size_t i = 1; i < rows.size(); ++i) {
-    EvaluationRecord record;
+    CampaignEvaluation record;
     record.index = static_cast<std::int64_t>(i - 1);
     const std::string& value = rows[i].at(static_cast<std::size_t>(robustness));
     if (!value.empty()) record.robustness = std::stod(value);
@@ -111,8 +111,13 @@ class ReportCampaignTest : public CommandTest {
     CampaignSearchResult result;
     result.evaluations = read_evaluations(folder, spec);
     result.modes = read_failure_modes(campaign, folder, seed_id);
-    SearchRecord record{
-        run_id, seed_id, "ga", static_cast<std::uint64_t>(budget), SearchStatus::done, folder_name};
+    SearchRecord record;
+    record.run_id = run_id;
+    record.seed_id = seed_id;
+    record.algorithm = "ga";
+    record.budget = static_cast<std::uint64_t>(budget);
+    record.output_folder = folder_name;
+    record.spec = spec;
     db.record_search(record, result.evaluations);
     for (const FailureModeRecord& mode : result.modes) db.upsert_failure_mode(run_id, mode);
     return result;
