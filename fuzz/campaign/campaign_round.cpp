@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "fuzz/campaign/mode_files.hpp"
+#include "fuzz/campaign/mpi_round.hpp"
 #include "fuzz/stop_signals.hpp"
 #include "lang/number_format.hpp"
 
@@ -30,11 +31,9 @@ std::string quoted(const std::string& text) {
   return quoted + "'";
 }
 
-// What a worker hands the recorder: a result, or that the task was never started.
-struct Slot {
+// What a worker hands the recorder.
+struct Slot : RoundSlot {
   bool ready = false;
-  bool skipped = false;  // not started: a stop or the wall time came first
-  CampaignSearchResult result;
 };
 
 // The results of a round's tasks, filled by the workers, read in order by the recorder.
@@ -184,9 +183,29 @@ std::string replay_command(const SimulationCommandOptions& simulation,
   return command + " --seed " + std::to_string(seed) + " " + quoted(scenario_file);
 }
 
+void RoundRecorder::take(const CampaignSearchTask& task, const RoundSlot& slot) {
+  if (end_ == RoundEnd::failed || end_ == RoundEnd::interrupted) return;
+  if (!slot.result.error.empty()) {
+    context_.err << slot.result.error;
+    end_ = RoundEnd::failed;
+  } else if (slot.skipped || slot.result.interrupted) {
+    end_ = StopSignalGuard::stop_requested() ? RoundEnd::interrupted : RoundEnd::wall_time;
+  } else {
+    try {
+      if (!record(context_, round_, task, slot.result)) end_ = RoundEnd::failed;
+    } catch (const CampaignDbError& error) {
+      context_.err << "scenfuzz: error: " << error.what() << "\n";
+      end_ = RoundEnd::failed;
+    }
+    if (end_ == RoundEnd::complete && slot.result.summary.stop == StopReason::time_limit)
+      end_ = RoundEnd::wall_time;
+  }
+}
+
 RoundEnd run_round(RoundContext& context, std::int64_t round,
                    std::vector<CampaignSearchTask> tasks) {
   if (tasks.empty()) return RoundEnd::complete;
+  if (context.mpi) return run_round_on_ranks(context, round, std::move(tasks));
   const std::size_t workers = std::max<std::size_t>(1, std::min(context.workers, tasks.size()));
   // Fewer searches than workers: the searches share the threads out.
   for (CampaignSearchTask& task : tasks)
@@ -195,36 +214,14 @@ RoundEnd run_round(RoundContext& context, std::int64_t round,
   std::atomic<bool> abort{false};
   Workers pool(context, tasks, results, abort);
   pool.start(workers);
-  RoundEnd end = RoundEnd::complete;
+  RoundRecorder recorder(context, round);
   for (std::size_t i = 0; i < tasks.size(); ++i) {
-    Slot slot = results.take(i);
-    // After a search left to be continued, the later ones are not recorded either (their
-    // folders hold them, finished or not): the database keeps the round's order.
-    if (end == RoundEnd::failed || end == RoundEnd::interrupted) continue;
-    if (!slot.result.error.empty()) {
-      context.err << slot.result.error;
-      abort = true;
-      end = RoundEnd::failed;
-    } else if (slot.skipped || slot.result.interrupted) {
-      end = StopSignalGuard::stop_requested() ? RoundEnd::interrupted : RoundEnd::wall_time;
-    } else {
-      try {
-        if (!record(context, round, tasks[i], slot.result)) {
-          abort = true;
-          end = RoundEnd::failed;
-        }
-      } catch (const CampaignDbError& error) {
-        context.err << "scenfuzz: error: " << error.what() << "\n";
-        abort = true;
-        end = RoundEnd::failed;
-      }
-      if (end == RoundEnd::complete && slot.result.summary.stop == StopReason::time_limit)
-        end = RoundEnd::wall_time;
-    }
+    recorder.take(tasks[i], results.take(i));
+    if (recorder.failed()) abort = true;
   }
   pool.join();
-  if (end == RoundEnd::complete && past(context.deadline)) end = RoundEnd::wall_time;
-  return end;
+  if (recorder.end() == RoundEnd::complete && past(context.deadline)) return RoundEnd::wall_time;
+  return recorder.end();
 }
 
 }  // namespace scenfuzz

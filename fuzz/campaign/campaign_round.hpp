@@ -19,18 +19,48 @@
 
 namespace scenfuzz {
 
+class MpiSession;
+
 struct RoundContext {
   CampaignDb& db;
   const CampaignSeeds& seeds;
   const SimulationCommandOptions& simulation;
   std::int64_t run = 0;
-  std::size_t workers = 1;                                        // searches at once
+  std::size_t workers = 1;    // searches at once
   std::optional<std::chrono::steady_clock::time_point> deadline;  // the wall-time budget's end
   std::ostream& out;
   std::ostream& err;
+  MpiSession* mpi = nullptr;  // under mpirun: the searches go to the other ranks (mpi_round.hpp)
 };
 
 enum class RoundEnd { complete, wall_time, interrupted, failed };
+
+// What became of one of a round's searches: its result, or that it never started (a stop or the
+// wall time came first).
+struct RoundSlot {
+  bool skipped = false;
+  CampaignSearchResult result;
+};
+
+// Records a round's searches in the round's order, whoever ran them and in whatever order they
+// finished: after one left to be continued (interrupted, or cut by the wall time before it
+// started) or one that failed, the later ones are not recorded either (their folders hold them,
+// finished or not), so the database keeps the round's order.
+class RoundRecorder {
+ public:
+  RoundRecorder(RoundContext& context, std::int64_t round) : context_(context), round_(round) {}
+
+  // The next search of the round, in order.
+  void take(const CampaignSearchTask& task, const RoundSlot& slot);
+
+  RoundEnd end() const { return end_; }
+  bool failed() const { return end_ == RoundEnd::failed; }
+
+ private:
+  RoundContext& context_;
+  std::int64_t round_;
+  RoundEnd end_ = RoundEnd::complete;
+};
 
 // Runs and records `tasks` (the round's searches not recorded yet, in arm order), each given
 // the wall time left; `threads` of a task are filled in here.

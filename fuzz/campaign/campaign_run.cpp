@@ -19,6 +19,7 @@
 #include "fuzz/campaign/campaign_round.hpp"
 #include "fuzz/campaign/campaign_seeds.hpp"
 #include "fuzz/campaign/mode_files.hpp"
+#include "fuzz/campaign/mpi_round.hpp"
 #include "fuzz/cli.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/stop_signals.hpp"
@@ -216,8 +217,8 @@ int report(CampaignDb& db, std::int64_t run, RoundEnd end, std::ostream& out, st
 
 // The run once the campaign folder is the current one and the seeds are loaded.
 int run_in_folder(const CampaignRunOptions& options, const CampaignConfig& config,
-                  CampaignSeeds& seeds, const ModeReplayer& replay, std::ostream& out,
-                  std::ostream& err) {
+                  CampaignSeeds& seeds, const ModeReplayer& replay, MpiSession* mpi,
+                  std::ostream& out, std::ostream& err) {
   CampaignDbOpening opening = CampaignDb::open(".");
   if (!opening.db) {
     err << "scenfuzz: error: " << opening.error << "\n";
@@ -231,6 +232,7 @@ int run_in_folder(const CampaignRunOptions& options, const CampaignConfig& confi
   const SimulationCommandOptions simulation = campaign_simulation(config);
   RoundContext context{db,           seeds, simulation, run, worker_count(options, config),
                        std::nullopt, out,   err};
+  if (mpi && mpi->size() > 1) context.mpi = mpi;
   if (config.budget_wall_seconds)
     context.deadline =
         Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -248,23 +250,42 @@ ReplayOutcome replay_nothing(const CampaignFailureMode&) { return {}; }
 
 int run_campaign(const CampaignRunOptions& options, const ModeReplayer& replay, std::ostream& out,
                  std::ostream& err) {
-  const std::optional<CampaignConfig> config = read_config(options.dir, err);
-  if (!config) return kExitBadInput;
+  // Under mpirun every rank reads the campaign and its seeds; rank 0 runs the campaign and the
+  // others serve its searches (mpi_round.hpp), saying nothing unless they fail.
+  std::optional<MpiSession> mpi;
+  if (launched_by_mpirun()) {
+    try {
+      mpi.emplace();
+    } catch (const std::runtime_error& error) {
+      err << "scenfuzz: error: " << error.what() << "\n";
+      return kExitBadInput;
+    }
+  }
+  const bool worker = mpi && mpi->rank() != 0;
+  std::ostringstream quiet;
+  std::ostream& said = worker ? quiet : err;
+  const std::optional<CampaignConfig> config = read_config(options.dir, said);
+  if (!config) return err << quiet.str(), kExitBadInput;
   std::string problem;
   CurrentFolder inside(options.dir, problem);
   if (!problem.empty()) {
     err << "scenfuzz: error: " << problem << "\n";
     return kExitBadInput;
   }
-  std::optional<CampaignSeeds> seeds =
-      load_campaign_seeds(*config, campaign_simulation(*config), err);
+  const SimulationCommandOptions simulation = campaign_simulation(*config);
+  std::optional<CampaignSeeds> seeds = load_campaign_seeds(*config, simulation, said);
   if (!seeds) {
-    err << "scenfuzz: error: the campaign's seeds have errors (paths are relative to '"
+    err << quiet.str()
+        << "scenfuzz: error: the campaign's seeds have errors (paths are relative to '"
         << options.dir << "'): nothing was run\n";
     return kExitBadInput;
   }
+  if (worker) {
+    serve_campaign_searches(*mpi, *seeds, simulation, worker_count(options, *config));
+    return kExitSuccess;
+  }
   try {
-    return run_in_folder(options, *config, *seeds, replay, out, err);
+    return run_in_folder(options, *config, *seeds, replay, mpi ? &*mpi : nullptr, out, err);
   } catch (const CampaignDbError& error) {
     err << "scenfuzz: error: " << error.what() << "\n";
     return kExitBadInput;

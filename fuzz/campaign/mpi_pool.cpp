@@ -113,7 +113,16 @@ MpiSession::MpiSession() {
   dead_[0] = true;  // rank 0 is not a worker
 }
 
-MpiSession::~MpiSession() { MPI_Finalize(); }
+MpiSession::~MpiSession() {
+  if (rank_ == 0 && !released_) {
+    try {
+      release_workers();
+    } catch (const std::runtime_error&) {
+      // A worker that cannot be told ends with the job.
+    }
+  }
+  MPI_Finalize();
+}
 
 int MpiSession::live_workers() const {
   return static_cast<int>(std::count(dead_.begin(), dead_.end(), false));
@@ -170,6 +179,7 @@ std::vector<std::int64_t> MpiSession::distribute(
 
 void MpiSession::release_workers() {
   SCENFUZZ_DEMAND(rank_ == 0);
+  released_ = true;
   // Not the dead: a message to a rank that is gone never completes, and MPI_Finalize waits for
   // it. (A rank only given up for dead, stopped for longer than dead_after_seconds, is left
   // waiting; mpirun ends it with the job.)

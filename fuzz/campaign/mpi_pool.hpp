@@ -58,7 +58,8 @@ class MpiSession {
       const std::function<void(std::int64_t id, const std::string& result)>& on_result,
       const std::function<bool()>& interrupted, const MpiPoolTimes& times = {});
 
-  // Rank 0, at the end: tells every live worker to return from serve().
+  // Rank 0, at the end: tells every live worker to return from serve(). The destructor does it
+  // when nobody did (rank 0 stopped at an error), so that no worker waits forever.
   void release_workers();
 
   // Any other rank: runs the tasks rank 0 sends with `job` until released. `interrupted` is
@@ -73,6 +74,7 @@ class MpiSession {
   int rank_ = 0;
   int size_ = 1;
   std::vector<bool> dead_;  // by rank
+  bool released_ = false;
 };
 
 }  // namespace scenfuzz
