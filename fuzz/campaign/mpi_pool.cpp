@@ -76,19 +76,13 @@ double seconds_since(Clock::time_point then) {
 
 // Rank 0's view of one distribute() call.
 struct Dispatch {
-  std::deque<MpiTask> pending;  // in id order, as handed in
+  std::deque<MpiTask> pending;  // in the order handed in
   struct InFlight {
     MpiTask task;
     Clock::time_point heard;
   };
   std::map<int, InFlight> in_flight;  // by worker rank
 };
-
-void requeue(Dispatch& dispatch, MpiTask task) {
-  auto place = std::find_if(dispatch.pending.begin(), dispatch.pending.end(),
-                            [&](const MpiTask& other) { return other.id > task.id; });
-  dispatch.pending.insert(place, std::move(task));
-}
 
 }  // namespace
 
@@ -167,7 +161,8 @@ std::vector<std::int64_t> MpiSession::distribute(
         continue;
       }
       dead_[static_cast<std::size_t>(flight->first)] = true;
-      requeue(dispatch, std::move(flight->second.task));
+      // Next out: it was handed out before every task still pending.
+      dispatch.pending.push_front(std::move(flight->second.task));
       flight = dispatch.in_flight.erase(flight);
     }
     if (!heard) std::this_thread::sleep_for(kPollPause);

@@ -59,9 +59,14 @@ RoundEnd run_round_on_ranks(RoundContext& context, std::int64_t round,
     for (CampaignSearchTask& task : tasks)
       task.time_limit =
           std::max(1e-3, std::chrono::duration<double>(*context.deadline - Clock::now()).count());
+  // The largest searches first, so that the round does not wait on a large one handed out last.
   std::vector<MpiTask> sent;
   for (std::size_t i = 0; i < tasks.size(); ++i)
     sent.push_back({static_cast<std::int64_t>(i), encode_task(tasks[i])});
+  std::stable_sort(sent.begin(), sent.end(), [&](const MpiTask& a, const MpiTask& b) {
+    return tasks[static_cast<std::size_t>(a.id)].budget >
+           tasks[static_cast<std::size_t>(b.id)].budget;
+  });
   RoundRecorder recorder(context, round);
   std::map<std::size_t, RoundSlot> arrived;  // results waiting for an earlier one
   std::size_t next = 0;
