@@ -15,6 +15,7 @@
 #include "physics/map/polygon.hpp"
 #include "physics/map/segment_walk.hpp"
 #include "physics/simulation/predicted_points.hpp"
+#include "physics/simulation/route_place.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -34,6 +35,13 @@ constexpr double kWatchedBehind = 35;
 // m of route beyond the lookahead whose lanes are watched: an actor filed on the next lane can
 // have its point within reach of the watched path's end.
 constexpr double kWatchedBeyond = 15;
+// m a leader's lane position may lie beyond the ends of its route segment's stretch of lane and
+// still count as on it (the lane tracker's s runs on a little past a lane's ends at joints).
+constexpr double kLaneLeadTolerance = 0.5;
+// m the gap found at a scan may differ from the leader's route distance ahead: half lengths and
+// the path's smoothing of lane changes. More means it is not where the route meets its lane
+// (a route through the same lane twice), and it is followed by geometry.
+constexpr double kLaneLeadMismatch = 20;
 
 double fourth_power(double x) {
   double squared = x * x;
@@ -204,11 +212,66 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
       for (std::uint32_t k = 0; k < world.states.size(); ++k) look_at(k);
     }
     // The leader as the scan found it (in_path would answer the same again).
-    if (best) stops.push_back(*best);
+    lane_lead_.reset();
+    if (best) {
+      stops.push_back(*best);
+      start_lane_lead(world, *best);
+    }
     return;
   }
   if (leader_ < 0 || !present_in(world, static_cast<std::uint32_t>(leader_))) return;
+  if (lane_lead_) {
+    if (auto stop = lane_lead(world)) {
+      stops.push_back(*stop);
+      return;
+    }
+    lane_lead_.reset();
+  }
   if (auto stop = in_path(world, static_cast<std::uint32_t>(leader_))) stops.push_back(*stop);
+}
+
+double LaneFollower::lookahead() const {
+  return std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+}
+
+// A vehicle (or the ego) found by where it is, on a lane of the route ahead: between scans its gap
+// moves with its lane position, as in traffic simulators, which costs no search of the path. Not
+// a pedestrian or obstacle (off the lanes' order), nor an actor found where it will be (crossing
+// or oncoming: standing there, it has no lane position to follow).
+void LaneFollower::start_lane_lead(const WorldSnapshot& world, const Stop& stop) {
+  const auto k = static_cast<std::uint32_t>(leader_);
+  if (stop.predicted || route_starts_.empty()) return;
+  if (world.kinds[k] != TraceActorKind::vehicle && world.kinds[k] != TraceActorKind::ego) return;
+  // From the segment before this follower's: in a lane change it may still be beside the lane
+  // it leaves, and so may its leader.
+  const auto after = std::upper_bound(route_starts_.begin(), route_starts_.end(), s_);
+  const auto mine =
+      static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - route_starts_.begin() - 2, 0));
+  auto place = place_on_route(route_, route_starts_, world.lanes[k], mine,
+                              s_ + lookahead() + kWatchedBeyond, kLaneLeadTolerance);
+  if (!place) return;
+  const double offset = stop.gap - (place->distance - s_);
+  if (!(std::abs(offset) <= kLaneLeadMismatch)) return;
+  lane_lead_ = LaneLead{place->segment, offset};
+}
+
+std::optional<LaneFollower::Stop> LaneFollower::lane_lead(const WorldSnapshot& world) {
+  const auto k = static_cast<std::uint32_t>(leader_);
+  const double until = s_ + lookahead() + kWatchedBeyond;
+  auto place = place_on_route(route_, route_starts_, world.lanes[k], lane_lead_->segment, until,
+                              kLaneLeadTolerance);
+  if (!place) return std::nullopt;
+  lane_lead_->segment = place->segment;
+  const double gap = place->distance - s_ + lane_lead_->offset;
+  // Passed, or gone beyond what a scan would watch: in_path judges.
+  if (gap < -world.lengths[k] / 2 || gap > lookahead()) return std::nullopt;
+  const KinematicState& other = world.states[k];
+  // The cosine of the heading difference, as in_path's, from the step's cosines and sines.
+  const double alignment = world.facings.size() == world.states.size()
+                               ? facing_.x * world.facings[k].x + facing_.y * world.facings[k].y
+                               : std::cos(angle_difference(other.heading, state_.heading));
+  const double speed_along = std::max(0.0, longitudinal_velocity(other) * alignment);
+  return Stop{gap, settings_.standstill_gap, speed_along, FollowerReason::leader, false};
 }
 
 // The actors on the lanes this follower's path runs over from a little behind it to beyond what
@@ -405,7 +468,8 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
             : std::max(0.0, velocity * std::cos(angle_difference(other.heading, state_.heading)));
     best = Stop{gap, settings_.standstill_gap, speed_along,
                 world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
-                                                             : FollowerReason::leader};
+                                                             : FollowerReason::leader,
+                which == 1};
   }
   return best;
 }
