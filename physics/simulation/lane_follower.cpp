@@ -101,7 +101,6 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   double speed = std::min({initial_speed, body_.max_speed, envelope_.front()});
   state_ = state_on_path(path_, headings_, 0, speed, 0);
   state_.yaw_rate = 0;
-  facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 void LaneFollower::start_at(double progress) {
@@ -113,12 +112,23 @@ void LaneFollower::start_at(double progress) {
   const double limit = envelope_[std::min(segment_ + 1, envelope_.size() - 1)];
   state_ = state_on_path(path_, headings_, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
-  facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   if (finished_) return;
+  update_facing(world, self);
   advance(choose_acceleration(world, self, dt), dt);
+}
+
+// The simulation has taken the cosine and sine of every actor's heading this step (this one's
+// among them, the same numbers): no sincos of its own when the heading changed.
+void LaneFollower::update_facing(const WorldSnapshot& world, std::uint32_t self) {
+  if (state_.heading == facing_heading_) return;
+  facing_heading_ = state_.heading;
+  facing_ =
+      world.facings.size() == world.states.size() && world.states[self].heading == state_.heading
+          ? world.facings[self]
+          : MapPoint{std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32_t self,
@@ -608,8 +618,6 @@ void LaneFollower::advance(double acceleration, double dt) {
   segment_ = segment_at_from(path_, s_, segment_);
   state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt, segment_);
   state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
-  // On a straight segment the heading stays the same, and so do its cosine and sine.
-  if (state_.heading != heading) facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
   // At a standstill the brakes hold without effort: no braking is carried into setting off.
   applied_ = next == 0 && acceleration < 0 ? 0 : acceleration;
 }

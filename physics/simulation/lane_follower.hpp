@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -91,6 +92,7 @@ class LaneFollower {
     bool occupied = false;  // crosswalk: pedestrians walking in or at it, at the last scan
   };
 
+  void update_facing(const WorldSnapshot& world, std::uint32_t self);
   double choose_acceleration(const WorldSnapshot& world, std::uint32_t self, double dt);
   double bend_acceleration() const;
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
@@ -159,8 +161,10 @@ class LaneFollower {
   KinematicState state_;
   double s_ = 0;
   std::size_t segment_ = 0;  // path_.segment_at(s_), kept as s_ moves on (segment_walk.hpp)
-  MapPoint facing_{1, 0};    // cos and sin of state_.heading, for the scans
-  double applied_ = 0;       // m/s^2 asked of the vehicle at the last step, for the jerk limit
+  // cos and sin of state_.heading (update_facing), for the scans; NaN: not taken yet.
+  MapPoint facing_{1, 0};
+  double facing_heading_ = std::numeric_limits<double>::quiet_NaN();  // whose they are
+  double applied_ = 0;  // m/s^2 asked of the vehicle at the last step, for the jerk limit
   bool finished_ = false;
   FollowerReason reason_ = FollowerReason::cruise;
   double stopped_since_ = -1;  // s: when it came to stand at the stop sign it waits at
