@@ -197,7 +197,8 @@ bool LaneFollower::surely_not_in_path(const WorldSnapshot& world, std::uint32_t 
 
 // Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
 // leader. Every actor is looked at every scan interval, as a driver's glance goes round; between
-// scans only the leader is followed (its gap and speed every step).
+// scans only the leader is followed (its gap and speed every step), along the lanes when it can be
+// (lane_lead), else by searching the path as the scan did.
 void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
                                std::vector<Stop>& stops) {
   scanning_ = world.time + 1e-9 >= next_scan_;
