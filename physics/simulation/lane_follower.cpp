@@ -15,6 +15,7 @@
 #include "physics/map/polygon.hpp"
 #include "physics/map/segment_walk.hpp"
 #include "physics/simulation/predicted_points.hpp"
+#include "physics/simulation/route_place.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -34,6 +35,13 @@ constexpr double kWatchedBehind = 35;
 // m of route beyond the lookahead whose lanes are watched: an actor filed on the next lane can
 // have its point within reach of the watched path's end.
 constexpr double kWatchedBeyond = 15;
+// m a leader's lane position may lie beyond the ends of its route segment's stretch of lane and
+// still count as on it (the lane tracker's s runs on a little past a lane's ends at joints).
+constexpr double kLaneLeadTolerance = 0.5;
+// m the gap found at a scan may differ from the leader's route distance ahead: half lengths and
+// the path's smoothing of lane changes. More means it is not where the route meets its lane
+// (a route through the same lane twice), and it is followed by geometry.
+constexpr double kLaneLeadMismatch = 20;
 
 double fourth_power(double x) {
   double squared = x * x;
@@ -93,7 +101,6 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   double speed = std::min({initial_speed, body_.max_speed, envelope_.front()});
   state_ = state_on_path(path_, headings_, 0, speed, 0);
   state_.yaw_rate = 0;
-  facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 void LaneFollower::start_at(double progress) {
@@ -105,12 +112,23 @@ void LaneFollower::start_at(double progress) {
   const double limit = envelope_[std::min(segment_ + 1, envelope_.size() - 1)];
   state_ = state_on_path(path_, headings_, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
-  facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   if (finished_) return;
+  update_facing(world, self);
   advance(choose_acceleration(world, self, dt), dt);
+}
+
+// The simulation has taken the cosine and sine of every actor's heading this step (this one's
+// among them, the same numbers): no sincos of its own when the heading changed.
+void LaneFollower::update_facing(const WorldSnapshot& world, std::uint32_t self) {
+  if (state_.heading == facing_heading_) return;
+  facing_heading_ = state_.heading;
+  facing_ =
+      world.facings.size() == world.states.size() && world.states[self].heading == state_.heading
+          ? world.facings[self]
+          : MapPoint{std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32_t self,
@@ -179,7 +197,8 @@ bool LaneFollower::surely_not_in_path(const WorldSnapshot& world, std::uint32_t 
 
 // Whatever is in the path ahead, now or (moving) within the prediction time: the nearest is the
 // leader. Every actor is looked at every scan interval, as a driver's glance goes round; between
-// scans only the leader is followed (its gap and speed every step).
+// scans only the leader is followed (its gap and speed every step), along the lanes when it can be
+// (lane_lead), else by searching the path as the scan did.
 void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
                                std::vector<Stop>& stops) {
   scanning_ = world.time + 1e-9 >= next_scan_;
@@ -204,11 +223,66 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
       for (std::uint32_t k = 0; k < world.states.size(); ++k) look_at(k);
     }
     // The leader as the scan found it (in_path would answer the same again).
-    if (best) stops.push_back(*best);
+    lane_lead_.reset();
+    if (best) {
+      stops.push_back(*best);
+      start_lane_lead(world, *best);
+    }
     return;
   }
   if (leader_ < 0 || !present_in(world, static_cast<std::uint32_t>(leader_))) return;
+  if (lane_lead_) {
+    if (auto stop = lane_lead(world)) {
+      stops.push_back(*stop);
+      return;
+    }
+    lane_lead_.reset();
+  }
   if (auto stop = in_path(world, static_cast<std::uint32_t>(leader_))) stops.push_back(*stop);
+}
+
+double LaneFollower::lookahead() const {
+  return std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+}
+
+// A vehicle (or the ego) found by where it is, on a lane of the route ahead: between scans its gap
+// moves with its lane position, as in traffic simulators, which costs no search of the path. Not
+// a pedestrian or obstacle (off the lanes' order), nor an actor found where it will be (crossing
+// or oncoming: standing there, it has no lane position to follow).
+void LaneFollower::start_lane_lead(const WorldSnapshot& world, const Stop& stop) {
+  const auto k = static_cast<std::uint32_t>(leader_);
+  if (stop.predicted || route_starts_.empty()) return;
+  if (world.kinds[k] != TraceActorKind::vehicle && world.kinds[k] != TraceActorKind::ego) return;
+  // From the segment before this follower's: in a lane change it may still be beside the lane
+  // it leaves, and so may its leader.
+  const auto after = std::upper_bound(route_starts_.begin(), route_starts_.end(), s_);
+  const auto mine =
+      static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - route_starts_.begin() - 2, 0));
+  auto place = place_on_route(route_, route_starts_, world.lanes[k], mine,
+                              s_ + lookahead() + kWatchedBeyond, kLaneLeadTolerance);
+  if (!place) return;
+  const double offset = stop.gap - (place->distance - s_);
+  if (!(std::abs(offset) <= kLaneLeadMismatch)) return;
+  lane_lead_ = LaneLead{place->segment, offset};
+}
+
+std::optional<LaneFollower::Stop> LaneFollower::lane_lead(const WorldSnapshot& world) {
+  const auto k = static_cast<std::uint32_t>(leader_);
+  const double until = s_ + lookahead() + kWatchedBeyond;
+  auto place = place_on_route(route_, route_starts_, world.lanes[k], lane_lead_->segment, until,
+                              kLaneLeadTolerance);
+  if (!place) return std::nullopt;
+  lane_lead_->segment = place->segment;
+  const double gap = place->distance - s_ + lane_lead_->offset;
+  // Passed, or gone beyond what a scan would watch: in_path judges.
+  if (gap < -world.lengths[k] / 2 || gap > lookahead()) return std::nullopt;
+  const KinematicState& other = world.states[k];
+  // The cosine of the heading difference, as in_path's, from the step's cosines and sines.
+  const double alignment = world.facings.size() == world.states.size()
+                               ? facing_.x * world.facings[k].x + facing_.y * world.facings[k].y
+                               : std::cos(angle_difference(other.heading, state_.heading));
+  const double speed_along = std::max(0.0, longitudinal_velocity(other) * alignment);
+  return Stop{gap, settings_.standstill_gap, speed_along, FollowerReason::leader, false};
 }
 
 // The actors on the lanes this follower's path runs over from a little behind it to beyond what
@@ -405,7 +479,8 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
             : std::max(0.0, velocity * std::cos(angle_difference(other.heading, state_.heading)));
     best = Stop{gap, settings_.standstill_gap, speed_along,
                 world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
-                                                             : FollowerReason::leader};
+                                                             : FollowerReason::leader,
+                which == 1};
   }
   return best;
 }
@@ -544,8 +619,6 @@ void LaneFollower::advance(double acceleration, double dt) {
   segment_ = segment_at_from(path_, s_, segment_);
   state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt, segment_);
   state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
-  // On a straight segment the heading stays the same, and so do its cosine and sine.
-  if (state_.heading != heading) facing_ = {std::cos(state_.heading), std::sin(state_.heading)};
   // At a standstill the brakes hold without effort: no braking is carried into setting off.
   applied_ = next == 0 && acceleration < 0 ? 0 : acceleration;
 }

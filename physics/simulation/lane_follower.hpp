@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -76,6 +77,13 @@ class LaneFollower {
     double clearance = 0;  // m to keep when standing behind it (IDM's s0)
     double speed = 0;      // m/s it moves along the path
     FollowerReason reason = FollowerReason::leader;
+    bool predicted = false;  // an actor found where it will be (in_path's second point)
+  };
+  // The leader followed along the lanes between scans (lane_lead): its gap moves on by how far
+  // it moves along the route's lanes less how far this follower moves along its path.
+  struct LaneLead {
+    std::size_t segment = 0;  // the route segment whose lane it was on at the last step
+    double offset = 0;        // its gap at the scan less its route distance ahead of s_ then
   };
   struct Feature {  // a stop line on the route, at path distance `at`
     FeatureAhead feature;
@@ -84,9 +92,17 @@ class LaneFollower {
     bool occupied = false;  // crosswalk: pedestrians walking in or at it, at the last scan
   };
 
+  void update_facing(const WorldSnapshot& world, std::uint32_t self);
   double choose_acceleration(const WorldSnapshot& world, std::uint32_t self, double dt);
   double bend_acceleration() const;
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
+  // After a scan found `stop` for the leader: whether it can be followed along the lanes until
+  // the next scan (into lane_lead_).
+  void start_lane_lead(const WorldSnapshot& world, const Stop& stop);
+  // The leader's stop between scans, from its lane position; nullopt when it left the route's
+  // lanes (then in_path finds it by geometry).
+  std::optional<Stop> lane_lead(const WorldSnapshot& world);
+  double lookahead() const;
   bool near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const;
   bool on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors);
   // The lanes of the route from route distance `from` to `to` and every lane of the junctions
@@ -136,6 +152,7 @@ class LaneFollower {
   double next_scan_ = 0;               // s: when every actor is looked at again
   bool scanning_ = false;              // this step is a scan
   std::int64_t leader_ = -1;           // the actor followed between scans, or -1
+  std::optional<LaneLead> lane_lead_;  // how, when it is followed along the lanes
   ActorClass body_;
   double desired_speed_ = 0;
   bool leaves_at_end_ = false;
@@ -144,8 +161,10 @@ class LaneFollower {
   KinematicState state_;
   double s_ = 0;
   std::size_t segment_ = 0;  // path_.segment_at(s_), kept as s_ moves on (segment_walk.hpp)
-  MapPoint facing_{1, 0};    // cos and sin of state_.heading, for the scans
-  double applied_ = 0;       // m/s^2 asked of the vehicle at the last step, for the jerk limit
+  // cos and sin of state_.heading (update_facing), for the scans; NaN: not taken yet.
+  MapPoint facing_{1, 0};
+  double facing_heading_ = std::numeric_limits<double>::quiet_NaN();  // whose they are
+  double applied_ = 0;  // m/s^2 asked of the vehicle at the last step, for the jerk limit
   bool finished_ = false;
   FollowerReason reason_ = FollowerReason::cruise;
   double stopped_since_ = -1;  // s: when it came to stand at the stop sign it waits at

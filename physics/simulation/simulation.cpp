@@ -413,7 +413,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                   predicted,
                   prediction_time,
                   uses_grid ? &grid : nullptr,
-                  occupancy ? &*occupancy : nullptr};
+                  occupancy ? &*occupancy : nullptr,
+                  predictor.facings()};
     }
 
     route.update({states[kEgo].x, states[kEgo].y});

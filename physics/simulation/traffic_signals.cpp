@@ -40,16 +40,21 @@ TrafficSignals::TrafficSignals(const RoadMap& map, std::span<const LightSetting>
       signal.plan.reset();  // the plan never shows that colour: hold it
     }
   }
+  // A light without a plan shows one colour throughout: set once, not at every step (Apollo maps
+  // have hundreds of lights and no plans).
   colours_.resize(signals_.size(), SignalColour::green);
+  for (std::size_t i = 0; i < signals_.size(); ++i) {
+    if (signals_[i].plan) {
+      planned_.push_back(i);
+    } else {
+      colours_[i] = signals_[i].fixed;
+    }
+  }
 }
 
 const std::vector<SignalColour>& TrafficSignals::colours_at(double t) {
-  for (std::size_t i = 0; i < signals_.size(); ++i) {
+  for (std::size_t i : planned_) {
     const Signal& signal = signals_[i];
-    if (!signal.plan) {
-      colours_[i] = signal.fixed;
-      continue;
-    }
     double in_cycle = std::fmod(t + signal.plan->offset, signal.period);
     if (in_cycle < 0) in_cycle += signal.period;
     SignalColour colour = signal.plan->phases.back().colour;

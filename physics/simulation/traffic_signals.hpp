@@ -26,6 +26,7 @@ class TrafficSignals {
     double period = 0;
   };
   std::vector<Signal> signals_;
+  std::vector<std::size_t> planned_;  // the signals with a plan; the others' colours never change
   std::vector<SignalColour> colours_;
 };
 

@@ -43,6 +43,9 @@ struct WorldSnapshot {
   const ActorGrid* grid = nullptr;
   // The actors by the lanes they occupy, for the lane followers' scans; null when not built.
   const LaneOccupancy* occupancy = nullptr;
+  // By actor id, the cosine and sine of each actor's heading (PointPredictor::facings), for the
+  // lane followers' leaders between scans; empty when not computed (followers then compute them).
+  std::span<const MapPoint> facings;
 };
 
 inline bool present_in(const WorldSnapshot& world, std::uint32_t actor) {

@@ -38,6 +38,31 @@ int npc_collisions(const Trace& trace) {
   return count;
 }
 
+// Between its looks at every actor (every 0.2 s) a follower measures the gap to its leader along
+// the lanes (the leader's lane position less its own): behind a slower car it settles at IDM's
+// desired gap, standstill gap plus time gap at the car's speed, and never touches it.
+TEST(LaneFollowerTest, KeepsItsTimeGapBehindASlowerCar) {
+  std::string text =
+      scenario_text("straight?two_way=0&lanes=2&length=1000",
+                    "ego = AV((\"east_1\"->10, , 0), (\"east_1\"->30));\n"
+                    "slow = Vehicle((\"east_0\"->60, , 8), , (\"east_0\"->990));\n"
+                    "follower = Vehicle((\"east_0\"->10, , 15), , (\"east_0\"->990));\n",
+                    "slow, follower");
+  auto run = simulate_text(text, lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_EQ(npc_collisions(trace), 0);
+  const std::size_t last = trace.sample_count() - 1;
+  const double speed = trace.actors[1].speed[last];
+  EXPECT_NEAR(trace.actors[2].speed[last], speed, 0.2);
+  // Bumper to bumper along the road (both drive east along one lane).
+  const double gap = trace.actors[1].x[last] - trace.actors[2].x[last] -
+                     (trace.actors[1].length + trace.actors[2].length) / 2;
+  const double desired = 2.0 + 1.5 * speed;  // FollowerSettings' standstill and time gap
+  EXPECT_NEAR(gap, desired, 1.0) << "speed " << speed;
+  EXPECT_GT(test::closest_approach(trace, 1, 2), desired - 1.0);
+}
+
 TEST(LaneFollowerTest, StopsBehindAStoppedCarWithoutContact) {
   std::string text = scenario_text("straight?two_way=0&lanes=2",
                                    "ego = AV((\"east_1\"->10, , 0), (\"east_1\"->30));\n"

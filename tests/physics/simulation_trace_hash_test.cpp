@@ -5,6 +5,9 @@
 // differently, so a changed hash on another platform is first a question, not a bug. They were
 // taken again when scripted actors began to record their heading's change over each step as their
 // yaw rate (step_yaw_rate): only the yaw rate column changed, every other column kept its bits.
+// Both san_francisco runs were pinned again when lane followers began to follow their leader along
+// the lanes between scans (the gap by lane position, not by searching the path): their gaps, and
+// so their motion, changed by millimetres (docs/performance.md, "Following along the lanes").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -129,7 +132,7 @@ TEST(SimulationTraceHashTest, ThirtyActorSanFranciscoTraceIsUnchanged) {
   Pinned run = run_benchmark("san_francisco_30_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
   EXPECT_EQ(run.trace.collisions.size(), 1u);  // a random walker into a standing car
-  EXPECT_EQ(run.hash, 0x562482cd0c24d09full) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0x3ca36fd3d5bc440cull) << std::hex << run.hash;
 }
 
 TEST(SimulationTraceHashTest, HundredActorSanFranciscoTraceIsUnchanged) {
@@ -137,7 +140,7 @@ TEST(SimulationTraceHashTest, HundredActorSanFranciscoTraceIsUnchanged) {
   Pinned run = run_benchmark("san_francisco_100_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
   EXPECT_EQ(run.trace.collisions.size(), 0u);
-  EXPECT_EQ(run.hash, 0xf4d5f36079a53d4cull) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0x18393c0f751189b9ull) << std::hex << run.hash;
 }
 
 // The hash sees a single bit: a trace that differs in one sample's last ulp hashes differently.
