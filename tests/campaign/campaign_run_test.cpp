@@ -30,11 +30,12 @@ class CampaignRunTest : public CommandTest {
     return dir_ / name;
   }
 
+  // With the campaign's own regression replay unless `replay` is given.
   int run(const fs::path& folder, std::optional<std::uint64_t> jobs = 2,
-          const ModeReplayer& replay = replay_nothing) {
+          const ModeReplayer& replay = {}) {
     out_.str("");
     err_.str("");
-    return run_campaign({folder.string(), jobs}, replay, out_, err_);
+    return run_campaign({folder.string(), jobs, "", false}, replay, out_, err_);
   }
 
   std::unique_ptr<CampaignDb> open(const fs::path& folder) {
@@ -97,7 +98,8 @@ TEST_F(CampaignRunTest, LaterRunsReplayKnownModesAndMoveTheirStatuses) {
   std::size_t first_modes = open(folder)->list_failure_modes().size();
 
   // Run 2 replays nothing: the modes its searches find again are still failing.
-  const int second = run(folder);
+  const ModeReplayer replay_nothing = [](const CampaignFailureMode&) { return ReplayOutcome{}; };
+  const int second = run(folder, 2, replay_nothing);
   {
     auto db = open(folder);
     int still = 0, fresh = 0;
