@@ -317,10 +317,18 @@ void declare_campaign_run(CLI::App& campaign, Action& action) {
   add_checked_option(run, "-j,--jobs", options->jobs, "N", within(0, kMaxJobs),
                      "Searches at once (overrides [search] jobs); 0 means all cores",
                      "[search] jobs");
+  run->add_option("--junit", options->junit,
+                  "Also write the run as JUnit XML for CI: one test case per failure mode "
+                  "(new, still failing, flaky, regressed: failures; fixed: passes)")
+      ->type_name("FILE");
+  run->add_flag("--json", options->json,
+                "Print the run's summary as JSON, one line on stdout; progress goes to stderr");
+  run->footer(
+      "Exit status: 0 no new failure mode and no regression; 1 a new failure mode or a "
+      "regression; 2 errors. docs/campaigns.md describes the run and its outputs.");
   run->callback([options, &action] {
     action = [options](std::ostream& out, std::ostream& err) {
-      // The regression replay is not wired in yet: known modes keep their status.
-      return run_campaign(*options, replay_nothing, out, err);
+      return run_campaign(*options, out, err);
     };
   });
 }

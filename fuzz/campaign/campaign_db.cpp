@@ -73,7 +73,13 @@ CREATE TABLE replays (
   failing INTEGER NOT NULL CHECK (failing >= 0 AND failing <= tried),
   verdict TEXT NOT NULL CHECK (verdict IN
     ('still_failing', 'regressed', 'fixed', 'flaky', 'not_replayed', 'error')),
+  error TEXT NOT NULL,
   PRIMARY KEY (run_id, failure_mode_id)) WITHOUT ROWID;
+CREATE TABLE sightings (
+  run_id INTEGER NOT NULL REFERENCES runs (id),
+  failure_mode_id INTEGER NOT NULL REFERENCES failure_modes (id),
+  search_id INTEGER NOT NULL REFERENCES searches (id),
+  PRIMARY KEY (run_id, failure_mode_id, search_id)) WITHOUT ROWID;
 )sql";
 
 [[noreturn]] void fail(sqlite3* connection, const std::string& doing) {
@@ -315,7 +321,10 @@ UpsertedMode upsert_mode(sqlite3* connection, std::int64_t run_id, const Failure
                    "ON CONFLICT (seed_id, signature) DO UPDATE SET "
                    "status = CASE WHEN first_seen_run = ?7 THEN status "
                    "WHEN status = 'fixed' THEN 'regressed' "
-                   "WHEN status = 'regressed' AND last_seen_run = ?7 THEN 'regressed' "
+                   "WHEN status = 'regressed' AND (last_seen_run = ?7 OR EXISTS ("
+                   "SELECT 1 FROM replays WHERE replays.run_id = ?7 AND "
+                   "replays.failure_mode_id = failure_modes.id AND verdict = 'regressed')) "
+                   "THEN 'regressed' "
                    "ELSE 'still_failing' END, "
                    "last_seen_run = ?7");
   insert.bind(1, mode.seed_id)
@@ -446,9 +455,22 @@ RecordedSearch CampaignDb::record_search_result(const SearchRecord& search,
                                                 std::span<const FailureModeRecord> modes) {
   Transaction transaction(connection_);
   RecordedSearch recorded;
-  for (const FailureModeRecord& mode : modes)
-    if (upsert_mode(connection_, search.run_id, mode).added) ++recorded.new_modes;
+  std::vector<std::int64_t> found;
+  for (const FailureModeRecord& mode : modes) {
+    const UpsertedMode upserted = upsert_mode(connection_, search.run_id, mode);
+    if (upserted.added) ++recorded.new_modes;
+    found.push_back(upserted.mode.id);
+  }
   recorded.search_id = insert_search(connection_, search, evaluations, recorded.new_modes);
+  // Which modes this search found: the report's "found in run R" (the modes' last_seen_run
+  // forgets earlier runs).
+  Statement sighting(connection_,
+                     "INSERT OR IGNORE INTO sightings (run_id, failure_mode_id, search_id) "
+                     "VALUES (?, ?, ?)");
+  for (const std::int64_t mode_id : found) {
+    sighting.bind(1, search.run_id).bind(2, mode_id).bind(3, recorded.search_id).step();
+    sighting.reset();
+  }
   transaction.commit();
   return recorded;
 }
@@ -470,16 +492,17 @@ CampaignReplay CampaignDb::record_replay(std::int64_t run_id, std::int64_t failu
     throw CampaignDbError("campaign.db: no failure mode " + std::to_string(failure_mode_id));
   const CampaignFailureMode mode = read_failure_mode(find);
   const ReplayVerdict verdict = replay_verdict(mode.status, outcome);
-  const CampaignReplay replay{run_id, failure_mode_id, outcome.tried, outcome.failing,
-                              verdict.verdict};
+  const CampaignReplay replay{run_id,          failure_mode_id, outcome.tried,
+                              outcome.failing, verdict.verdict, outcome.error};
   Statement insert(connection_,
-                   "INSERT INTO replays (run_id, failure_mode_id, tried, failing, verdict) "
-                   "VALUES (?, ?, ?, ?, ?)");
+                   "INSERT INTO replays (run_id, failure_mode_id, tried, failing, verdict, error) "
+                   "VALUES (?, ?, ?, ?, ?, ?)");
   insert.bind(1, run_id)
       .bind(2, failure_mode_id)
       .bind(3, std::int64_t{outcome.tried})
       .bind(4, std::int64_t{outcome.failing})
       .bind(5, std::string_view(verdict.verdict))
+      .bind(6, std::string_view(outcome.error))
       .step();
   Statement update(connection_, "UPDATE failure_modes SET status = ? WHERE id = ?");
   update.bind(1, status_name(verdict.status)).bind(2, failure_mode_id).step();
@@ -549,13 +572,22 @@ std::vector<CampaignEvaluation> CampaignDb::list_evaluations(std::int64_t search
 
 std::vector<CampaignReplay> CampaignDb::list_replays() {
   Statement rows(connection_,
-                 "SELECT run_id, failure_mode_id, tried, failing, verdict FROM replays "
+                 "SELECT run_id, failure_mode_id, tried, failing, verdict, error FROM replays "
                  "ORDER BY run_id, failure_mode_id");
   std::vector<CampaignReplay> replays;
   while (rows.step())
     replays.push_back({rows.integer(0), rows.integer(1), static_cast<int>(rows.integer(2)),
-                       static_cast<int>(rows.integer(3)), rows.text(4)});
+                       static_cast<int>(rows.integer(3)), rows.text(4), rows.text(5)});
   return replays;
+}
+
+std::vector<CampaignSighting> CampaignDb::list_sightings() {
+  Statement rows(connection_,
+                 "SELECT run_id, failure_mode_id, search_id FROM sightings "
+                 "ORDER BY run_id, failure_mode_id, search_id");
+  std::vector<CampaignSighting> sightings;
+  while (rows.step()) sightings.push_back({rows.integer(0), rows.integer(1), rows.integer(2)});
+  return sightings;
 }
 
 std::optional<CampaignRun> CampaignDb::unfinished_run() {

@@ -115,6 +115,15 @@ struct CampaignReplay {
   // "still_failing", "regressed", "fixed", "flaky" (the status it set), "not_replayed" (tried 0:
   // the status stays) or "error" (the status stays).
   std::string verdict;
+  std::string error;  // why the mode could not be replayed (verdict "error"); else empty
+};
+
+// A search that found a failure mode (new to the campaign or not): what says a mode was found
+// in a run, which the mode's last_seen_run forgets once a later run finds it.
+struct CampaignSighting {
+  std::int64_t run_id = 0;
+  std::int64_t failure_mode_id = 0;
+  std::int64_t search_id = 0;
 };
 
 // How the regression replay's outcome moves a mode's status: every seed failing: still_failing
@@ -167,9 +176,9 @@ class CampaignDb {
                              std::span<const CampaignEvaluation> evaluations);
 
   // A campaign search's whole result in one transaction: the search, its evaluations, and the
-  // failure modes it found (each as upsert_failure_mode), so that a kill never leaves a search
-  // without its modes. `search.new_modes` is ignored: the modes its seed did not have before are
-  // counted and stored with it.
+  // failure modes it found (each as upsert_failure_mode, and each a sighting), so that a kill
+  // never leaves a search without its modes. `search.new_modes` is ignored: the modes its seed did
+  // not have before are counted and stored with it.
   RecordedSearch record_search_result(const SearchRecord& search,
                                       std::span<const CampaignEvaluation> evaluations,
                                       std::span<const FailureModeRecord> modes);
@@ -181,7 +190,8 @@ class CampaignDb {
 
   // A failure mode found in run `run_id`. New to its seed: added as new, first and last seen in
   // this run. Known: last seen moves to this run, and its status becomes still_failing (a fixed
-  // one: regressed; one first seen in this very run stays new). Returns it as stored.
+  // one: regressed; one first seen in this very run stays new; one regressed in this very run,
+  // by an earlier search or by this run's replay, stays regressed). Returns it as stored.
   CampaignFailureMode upsert_failure_mode(std::int64_t run_id, const FailureModeRecord& mode);
   // Sets a known failure mode's status (regression replay decides it).
   void set_failure_mode_status(std::int64_t failure_mode_id, FailureModeStatus status);
@@ -191,7 +201,8 @@ class CampaignDb {
   std::vector<CampaignSearch> list_searches();
   std::vector<CampaignEvaluation> list_evaluations(std::int64_t search_id);
   std::vector<CampaignFailureMode> list_failure_modes();
-  std::vector<CampaignReplay> list_replays();  // by run, then failure mode
+  std::vector<CampaignReplay> list_replays();      // by run, then failure mode
+  std::vector<CampaignSighting> list_sightings();  // by run, failure mode, then search
 
   // --- Reading without the run lock (the report) ---
   // Opens an existing DIR/campaign.db read-only, without taking the campaign's lock, so that a

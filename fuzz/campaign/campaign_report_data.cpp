@@ -3,6 +3,7 @@
 #include "fuzz/campaign/campaign_report_data.hpp"
 
 #include <map>
+#include <set>
 #include <system_error>
 #include <utility>
 
@@ -60,17 +61,77 @@ void add_searches(CampaignDb& db, std::map<std::int64_t, ReportSeed*>& seeds,
   }
 }
 
-// A mode's contribution to each run's counts (ReportRun says what they mean).
-void count_in_runs(const CampaignFailureMode& mode, std::vector<ReportRun>& runs) {
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const std::int64_t id = runs[i].run.id;
-    if (mode.first_seen_run == id) ++runs[i].modes_first_seen;
-    if (mode.first_seen_run <= id && id <= mode.last_seen_run) ++runs[i].modes_seen;
-    if (mode.status == FailureModeStatus::regressed && mode.last_seen_run == id)
-      ++runs[i].regressed;
-    const bool first_after_last_seen =
-        runs[i].run.id > mode.last_seen_run && (i == 0 || runs[i - 1].run.id <= mode.last_seen_run);
-    if (mode.status == FailureModeStatus::fixed && first_after_last_seen) ++runs[i].fixed;
+// What the database recorded a run doing to the modes: the replay verdicts and the sightings.
+struct RunEvents {
+  std::map<std::int64_t, std::map<std::int64_t, std::string>> verdicts;  // run -> mode -> verdict
+  std::map<std::int64_t, std::set<std::int64_t>> found;                  // run -> modes found
+};
+
+RunEvents run_events(CampaignDb& db) {
+  RunEvents events;
+  for (const CampaignReplay& replay : db.list_replays())
+    events.verdicts[replay.run_id][replay.failure_mode_id] = replay.verdict;
+  for (const CampaignSighting& sighting : db.list_sightings())
+    events.found[sighting.run_id].insert(sighting.failure_mode_id);
+  return events;
+}
+
+bool found_in(const RunEvents& events, const CampaignFailureMode& mode, std::int64_t run) {
+  // A mode is first and last seen by being found, whether or not its sighting was recorded.
+  if (run == mode.first_seen_run || run == mode.last_seen_run) return true;
+  const auto found = events.found.find(run);
+  return found != events.found.end() && found->second.count(mode.id) > 0;
+}
+
+// The verdict of the mode's replay in `run` when it set a status (not "error", "not_replayed").
+std::optional<FailureModeStatus> replay_set(const RunEvents& events, std::int64_t mode,
+                                            std::int64_t run) {
+  const auto in_run = events.verdicts.find(run);
+  if (in_run == events.verdicts.end()) return std::nullopt;
+  const auto verdict = in_run->second.find(mode);
+  if (verdict == in_run->second.end()) return std::nullopt;
+  for (const FailureModeStatus status :
+       {FailureModeStatus::still_failing, FailureModeStatus::regressed, FailureModeStatus::fixed,
+        FailureModeStatus::flaky})
+    if (verdict->second == status_name(status)) return status;
+  return std::nullopt;
+}
+
+void count_status(ReportRun& run, FailureModeStatus status) {
+  switch (status) {
+    case FailureModeStatus::new_mode:
+      ++run.modes_first_seen;
+      ++run.modes_seen;
+      break;
+    case FailureModeStatus::still_failing: ++run.modes_seen; break;
+    case FailureModeStatus::regressed:
+      ++run.regressed;
+      ++run.modes_seen;
+      break;
+    case FailureModeStatus::fixed: ++run.fixed; break;
+    case FailureModeStatus::flaky: ++run.flaky; break;
+  }
+}
+
+// A mode's contribution to each run's counts: its statuses replayed run by run, the replay's
+// verdict first, then a search's finding (campaign_db.hpp's upsert_failure_mode rule).
+void count_in_runs(const CampaignFailureMode& mode, const RunEvents& events,
+                   std::vector<ReportRun>& runs) {
+  FailureModeStatus status = FailureModeStatus::new_mode;
+  for (ReportRun& run : runs) {
+    const std::int64_t id = run.run.id;
+    if (id < mode.first_seen_run) continue;
+    const std::optional<FailureModeStatus> replayed = replay_set(events, mode.id, id);
+    if (replayed) status = *replayed;
+    const bool regressed_by_replay = replayed == FailureModeStatus::regressed;
+    const bool found = found_in(events, mode, id);
+    if (found && id == mode.first_seen_run)
+      status = FailureModeStatus::new_mode;
+    else if (found && status == FailureModeStatus::fixed)
+      status = FailureModeStatus::regressed;
+    else if (found && !(status == FailureModeStatus::regressed && regressed_by_replay))
+      status = FailureModeStatus::still_failing;
+    if (found || replayed) count_status(run, status);
   }
 }
 
@@ -96,6 +157,7 @@ ReportData load_report_data(CampaignDb& db, const fs::path& dir, const std::stri
   std::map<std::int64_t, ReportRun*> runs;
   for (ReportRun& run : data.runs) runs[run.run.id] = &run;
   add_searches(db, seeds, runs);
+  const RunEvents events = run_events(db);
   for (CampaignFailureMode& mode : db.list_failure_modes()) {
     ReportFailureMode shown;
     shown.mode = std::move(mode);
@@ -106,7 +168,7 @@ ReportData load_report_data(CampaignDb& db, const fs::path& dir, const std::stri
     shown.first_seen_started = run_started[shown.mode.first_seen_run];
     shown.last_seen_started = run_started[shown.mode.last_seen_run];
     shown.picture = picture_of(dir, shown.mode.record.scenario_file);
-    count_in_runs(shown.mode, data.runs);
+    count_in_runs(shown.mode, events, data.runs);
     data.failure_modes.push_back(std::move(shown));
   }
   return data;

@@ -1,8 +1,8 @@
 // What `scenfuzz campaign report` shows, loaded from the campaign database once into plain
 // structs: the runs, each seed's searches and best robustness as simulations were spent, the
-// failure modes with their pictures, and per run how many modes were new, seen, fixed and
-// regressed. The page (campaign_report_html.hpp) and its charts (campaign_report_svg.hpp) only
-// read these.
+// failure modes with their pictures, and per run how many modes were new, failing, fixed,
+// regressed and flaky. The page (campaign_report_html.hpp) and its charts (campaign_report_svg.hpp)
+// only read these.
 #pragma once
 
 #include <cstddef>
@@ -16,17 +16,22 @@
 
 namespace scenfuzz {
 
-// One run and what it did to the failure modes. The database keeps each mode's first and last
-// run and its current status, not its history, so the counts are derived from those (the
-// docs' "The report" section says how).
+// One run and what it did to the failure modes: each mode this run learnt about (a search of
+// the run found it, or its regression replay gave a verdict) counted once, by the status the run
+// left it in. Exact: replayed from the replays table (the verdict per mode per run) and the
+// sightings table (the modes each search found), in run order, by the rules the database moves
+// statuses by.
 struct ReportRun {
   CampaignRun run;
   std::size_t searches = 0;
-  std::size_t simulations = 0;  // evaluations recorded by its searches
-  std::size_t modes_first_seen = 0;
-  std::size_t modes_seen = 0;  // first seen at or before this run, last seen at or after it
-  std::size_t fixed = 0;       // fixed now, and this run was the first after it was last seen
-  std::size_t regressed = 0;   // regressed now, last seen (found again) in this run
+  std::size_t simulations = 0;       // evaluations recorded by its searches
+  std::size_t modes_first_seen = 0;  // new: first found in this run
+  // Failing in this run: new, still failing (found again, or failing every replay seed) or
+  // regressed.
+  std::size_t modes_seen = 0;
+  std::size_t fixed = 0;      // its replay failed on no seed, and no search of it found the mode
+  std::size_t regressed = 0;  // fixed before, failing again in this run
+  std::size_t flaky = 0;      // its replay failed on some seeds only, and no search found it
 };
 
 // A point of a seed's chart: after `simulations` simulations of the seed (over all its searches,

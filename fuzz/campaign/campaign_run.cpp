@@ -14,12 +14,18 @@
 #include <sstream>
 #include <thread>
 
+#include "fuzz/atomic_file.hpp"
 #include "fuzz/campaign/budget_schedule.hpp"
 #include "fuzz/campaign/campaign_config.hpp"
 #include "fuzz/campaign/campaign_round.hpp"
 #include "fuzz/campaign/campaign_seeds.hpp"
+#include "fuzz/campaign/junit_report.hpp"
 #include "fuzz/campaign/mode_files.hpp"
 #include "fuzz/campaign/mpi_round.hpp"
+#include "fuzz/campaign/regression_replay.hpp"
+#include "fuzz/campaign/run_exit_status.hpp"
+#include "fuzz/campaign/run_json.hpp"
+#include "fuzz/campaign/run_summary.hpp"
 #include "fuzz/cli.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/stop_signals.hpp"
@@ -176,49 +182,47 @@ std::size_t worker_count(const CampaignRunOptions& options, const CampaignConfig
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-// What the run found: new failure modes, and regressions (a fixed mode failing again).
-struct RunFindings {
-  int new_modes = 0;
-  int regressed = 0;
-  std::map<std::string, int> statuses;
-};
-
-RunFindings run_findings(CampaignDb& db, std::int64_t run) {
-  std::set<std::int64_t> replayed_regressed;
-  for (const CampaignReplay& replay : db.list_replays())
-    if (replay.run_id == run && replay.verdict == "regressed")
-      replayed_regressed.insert(replay.failure_mode_id);
-  RunFindings findings;
-  for (const CampaignFailureMode& mode : db.list_failure_modes()) {
-    ++findings.statuses[std::string(status_name(mode.status))];
-    if (mode.first_seen_run == run) ++findings.new_modes;
-    if (mode.status == FailureModeStatus::regressed &&
-        (mode.last_seen_run == run || replayed_regressed.count(mode.id)))
-      ++findings.regressed;
-  }
-  return findings;
-}
-
-int report(CampaignDb& db, std::int64_t run, RoundEnd end, std::ostream& out, std::ostream& err) {
-  const RunFindings findings = run_findings(db, run);
+// The failure modes by status, and the exit status in words, for people.
+void print_ending(const RunSummary& summary, RoundEnd end, std::ostream& progress,
+                  std::ostream& err) {
   if (end == RoundEnd::interrupted)
     err << "scenfuzz: interrupted: every finished search is recorded; run 'scenfuzz campaign "
            "run' on the folder again to continue run "
-        << run << "\n";
+        << summary.run.id << "\n";
   else
-    out << "run " << run << " ended" << (end == RoundEnd::wall_time ? " at the wall time" : "")
-        << "\n";
-  out << "failure modes:";
-  for (const auto& [status, count] : findings.statuses) out << " " << status << " " << count;
-  if (findings.statuses.empty()) out << " none";
-  out << "; this run: " << findings.new_modes << " new, " << findings.regressed << " regressed\n";
-  return findings.new_modes + findings.regressed > 0 ? kExitViolated : kExitSuccess;
+    progress << "run " << summary.run.id << " ended"
+             << (end == RoundEnd::wall_time ? " at the wall time" : "") << "\n";
+  std::map<std::string, int> statuses;
+  for (const RunFailureMode& mode : summary.failure_modes)
+    ++statuses[std::string(status_name(mode.mode.status))];
+  progress << "failure modes:";
+  for (const auto& [status, count] : statuses) progress << " " << status << " " << count;
+  if (statuses.empty()) progress << " none";
+  progress << "\nexit status " << run_exit_reason(summary) << "\n";
+}
+
+// The run's summary from the database (so a continued run counts what its killed part did),
+// printed, written as JUnit XML and JSON as asked; its exit status.
+int report(CampaignDb& db, std::int64_t run, RoundEnd end, const CampaignRunOptions& options,
+           const std::string& campaign, std::ostream& out, std::ostream& err) {
+  const RunSummary summary = load_run_summary(db, run, campaign);
+  print_ending(summary, end, options.json ? err : out, err);
+  if (!options.junit.empty()) {
+    if (const std::string problem = write_file_atomically(options.junit, junit_xml(summary));
+        !problem.empty()) {
+      err << "scenfuzz: error: --junit: " << problem << "\n";
+      return kExitBadInput;
+    }
+  }
+  if (options.json) out << run_json(summary).dump() << "\n";
+  return run_exit_status(summary);
 }
 
 // The run once the campaign folder is the current one and the seeds are loaded.
 int run_in_folder(const CampaignRunOptions& options, const CampaignConfig& config,
                   CampaignSeeds& seeds, const ModeReplayer& replay, MpiSession* mpi,
                   std::ostream& out, std::ostream& err) {
+  std::ostream& progress = options.json ? err : out;
   CampaignDbOpening opening = CampaignDb::open(".");
   if (!opening.db) {
     err << "scenfuzz: error: " << opening.error << "\n";
@@ -228,27 +232,51 @@ int run_in_folder(const CampaignRunOptions& options, const CampaignConfig& confi
   remove_mode_temporaries(".");
   StopSignalGuard guard;
   for (LoadedSeed& seed : seeds.seeds) seed.id = db.upsert_seed(seed.path, seed.content_hash);
-  const std::int64_t run = run_to_use(db, config.ego_version, out);
+  const std::int64_t run = run_to_use(db, config.ego_version, progress);
   const SimulationCommandOptions simulation = campaign_simulation(config);
-  RoundContext context{db,           seeds, simulation, run, worker_count(options, config),
-                       std::nullopt, out,   err};
+  RoundContext context{db,           seeds,    simulation, run, worker_count(options, config),
+                       std::nullopt, progress, err};
   if (mpi && mpi->size() > 1) context.mpi = mpi;
   if (config.budget_wall_seconds)
     context.deadline =
         Clock::now() + std::chrono::duration_cast<Clock::duration>(
                            std::chrono::duration<double>(*config.budget_wall_seconds));
-  RoundEnd end = replay_known_modes(db, run, replay, out) ? run_rounds(context, config)
-                                                          : RoundEnd::interrupted;
+  RoundEnd end = replay_known_modes(db, run, replay, progress) ? run_rounds(context, config)
+                                                               : RoundEnd::interrupted;
   if (end == RoundEnd::failed) return kExitBadInput;
   if (end != RoundEnd::interrupted) db.end_run(run);
-  return report(db, run, end, out, err);
+  return report(db, run, end, options, config.name, out, err);
+}
+
+// --junit FILE is relative to where scenfuzz was started, not to the campaign folder: made
+// absolute before the run enters the folder. False (after saying why) when its folder does not
+// exist: refused before the run, not after hours of it.
+bool absolute_junit_path(CampaignRunOptions& options, std::ostream& err) {
+  if (options.junit.empty()) return true;
+  const std::string given = options.junit;
+  options.junit = fs::absolute(options.junit).string();
+  std::error_code error;
+  if (fs::is_directory(fs::path(options.junit).parent_path(), error)) return true;
+  err << "scenfuzz: error: --junit '" << given << "': its folder does not exist: nothing was run\n";
+  return false;
 }
 
 }  // namespace
 
-ReplayOutcome replay_nothing(const CampaignFailureMode&) { return {}; }
+ModeReplayer campaign_replayer(const CampaignConfig& config) {
+  ReplaySettings settings;
+  settings.simulation = campaign_simulation(config);
+  // The run's current folder is the campaign folder, which the mode's paths are relative to.
+  return [settings](const CampaignFailureMode& mode) {
+    return replay_failure_mode(".", mode, settings);
+  };
+}
 
-int run_campaign(const CampaignRunOptions& options, const ModeReplayer& replay, std::ostream& out,
+int run_campaign(const CampaignRunOptions& options, std::ostream& out, std::ostream& err) {
+  return run_campaign(options, ModeReplayer(), out, err);
+}
+
+int run_campaign(const CampaignRunOptions& given, const ModeReplayer& replay, std::ostream& out,
                  std::ostream& err) {
   // Under mpirun every rank reads the campaign and its seeds; rank 0 runs the campaign and the
   // others serve its searches (mpi_round.hpp), saying nothing unless they fail.
@@ -264,8 +292,11 @@ int run_campaign(const CampaignRunOptions& options, const ModeReplayer& replay, 
   const bool worker = mpi && mpi->rank() != 0;
   std::ostringstream quiet;
   std::ostream& said = worker ? quiet : err;
-  const std::optional<CampaignConfig> config = read_config(options.dir, said);
+  const std::optional<CampaignConfig> config = read_config(given.dir, said);
   if (!config) return err << quiet.str(), kExitBadInput;
+  CampaignRunOptions options = given;
+  if (!absolute_junit_path(options, err)) return kExitBadInput;
+  const ModeReplayer replayer = replay ? replay : campaign_replayer(*config);
   std::string problem;
   CurrentFolder inside(options.dir, problem);
   if (!problem.empty()) {
@@ -285,7 +316,7 @@ int run_campaign(const CampaignRunOptions& options, const ModeReplayer& replay, 
     return kExitSuccess;
   }
   try {
-    return run_in_folder(options, *config, *seeds, replay, mpi ? &*mpi : nullptr, out, err);
+    return run_in_folder(options, *config, *seeds, replayer, mpi ? &*mpi : nullptr, out, err);
   } catch (const CampaignDbError& error) {
     err << "scenfuzz: error: " << error.what() << "\n";
     return kExitBadInput;

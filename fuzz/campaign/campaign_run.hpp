@@ -13,6 +13,7 @@
 #include <ostream>
 #include <string>
 
+#include "fuzz/campaign/campaign_config.hpp"
 #include "fuzz/campaign/campaign_db.hpp"
 #include "fuzz/campaign/replay_outcome.hpp"
 
@@ -21,21 +22,30 @@ namespace scenfuzz {
 struct CampaignRunOptions {
   std::string dir;                    // DIR: the campaign folder
   std::optional<std::uint64_t> jobs;  // -j: searches at once; overrides [search] jobs; 0: cores
+  std::string junit;                  // --junit FILE: the run as JUnit XML; empty: none
+  // --json: the run's summary (run_json.hpp) as the one line on `out`; the progress lines go to
+  // `err` instead, so that a script can read `out` whole.
+  bool json = false;
 };
 
 // Replays one known failure mode against the current ego (called with the campaign folder as
 // the current folder).
 using ModeReplayer = std::function<ReplayOutcome(const CampaignFailureMode&)>;
 
-// The replayer until the real regression replay is wired in: replays nothing (tried 0), so every
-// known mode keeps its status.
-ReplayOutcome replay_nothing(const CampaignFailureMode& mode);
+// The regression replay a campaign's run makes: each mode replayed (regression_replay.hpp) with
+// the options its searches simulate with (its map paths and ego plugin, campaign_simulation).
+ModeReplayer campaign_replayer(const CampaignConfig& config);
 
 // Runs the campaign. kExitSuccess: the run ended (or was interrupted) without a new failure mode
-// or a regression; kExitViolated: it found one; kExitBadInput: campaign.toml or a seed has
-// errors, another run holds the campaign, or the run failed (the reason on `err`). SIGINT and
-// SIGTERM stop it after the batches in flight with every finished search recorded; the next run
-// continues it. The current folder is the campaign folder while it runs, and restored after.
+// or a regression; kExitViolated: it found one (run_exit_status.hpp); kExitBadInput:
+// campaign.toml or a seed has errors, another run holds the campaign, the run failed, or the
+// JUnit file cannot be written (the reason on `err`). SIGINT and SIGTERM stop it after the
+// batches in flight with every finished search recorded; the next run continues it. The current
+// folder is the campaign folder while it runs, and restored after.
+int run_campaign(const CampaignRunOptions& options, std::ostream& out, std::ostream& err);
+
+// The same with another replayer than campaign_replayer's (tests: a replay whose verdicts they
+// choose).
 int run_campaign(const CampaignRunOptions& options, const ModeReplayer& replay, std::ostream& out,
                  std::ostream& err);
 

@@ -27,6 +27,12 @@ struct RunSummary {
   std::vector<RunFailureMode> failure_modes;
 };
 
+// Run `run_id` as the database holds it now: its failure modes (those known by the end of it)
+// with their seeds' paths and this run's replay outcomes, read back from the replays table so
+// that a run continued after a kill still knows the replays of its first part; and its
+// simulations, its searches' plus its replays' perception seeds.
+RunSummary load_run_summary(CampaignDb& db, std::int64_t run_id, const std::string& campaign);
+
 // What this run learnt about a mode, which says whether its status is this run's verdict.
 enum class RunEvidence {
   found,          // a search of this run found it (its status: new, still_failing or regressed)

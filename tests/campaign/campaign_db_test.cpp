@@ -314,6 +314,58 @@ TEST_F(CampaignDbTest, RecordsOneReplayPerModeAndRun) {
   EXPECT_FALSE(db->unfinished_run());
 }
 
+// A fix that the replay found broken (regressed) stays regressed when a search of the same run
+// finds the mode too: the search confirms the regression, it does not make it "still failing".
+TEST_F(CampaignDbTest, AModeTheReplayFoundRegressedStaysRegressedWhenASearchFindsIt) {
+  auto db = open();
+  ASSERT_TRUE(db);
+  const std::int64_t first = db->begin_run("v1");
+  const std::int64_t seed = db->upsert_seed("a.avu", content_hash("a"));
+  const std::int64_t id = db->upsert_failure_mode(first, mode(seed, "sig")).id;
+  db->end_run(first);
+  const std::int64_t second = db->begin_run("v2");
+  db->record_replay(second, id, {3, 0, ""});  // fixed
+  db->end_run(second);
+  const std::int64_t third = db->begin_run("v1");
+  EXPECT_EQ(db->record_replay(third, id, {3, 3, ""}).verdict, "regressed");
+  const std::vector<FailureModeRecord> found = {mode(seed, "sig")};
+  db->record_search_result(search_record(third, seed, 32, "s3"), {}, found);
+  EXPECT_EQ(db->list_failure_modes()[0].status, FailureModeStatus::regressed);
+  EXPECT_EQ(db->list_failure_modes()[0].last_seen_run, third);
+}
+
+// Each search records which modes it found (the report's "found in run R"), new or not, and a
+// replay keeps its error.
+TEST_F(CampaignDbTest, RecordsSightingsAndReplayErrors) {
+  auto db = open();
+  ASSERT_TRUE(db);
+  const std::int64_t first = db->begin_run("v1");
+  const std::int64_t seed = db->upsert_seed("a.avu", content_hash("a"));
+  const std::vector<FailureModeRecord> both = {mode(seed, "a"), mode(seed, "b")};
+  const std::int64_t s1 =
+      db->record_search_result(search_record(first, seed, 32, "s1"), {}, both).search_id;
+  db->end_run(first);
+  const std::int64_t second = db->begin_run("v1");
+  const std::int64_t a = db->list_failure_modes()[0].id;
+  const std::int64_t b = db->list_failure_modes()[1].id;
+  db->record_replay(second, b, {0, 0, "modes/x.avu: cannot read"});
+  const std::vector<FailureModeRecord> one = {mode(seed, "a")};
+  const std::int64_t s2 =
+      db->record_search_result(search_record(second, seed, 32, "s2"), {}, one).search_id;
+  const std::vector<CampaignSighting> sightings = db->list_sightings();
+  ASSERT_EQ(sightings.size(), 3u);
+  EXPECT_EQ(sightings[0].run_id, first);
+  EXPECT_EQ(sightings[0].failure_mode_id, a);
+  EXPECT_EQ(sightings[0].search_id, s1);
+  EXPECT_EQ(sightings[1].failure_mode_id, b);
+  EXPECT_EQ(sightings[2].run_id, second);
+  EXPECT_EQ(sightings[2].failure_mode_id, a);
+  EXPECT_EQ(sightings[2].search_id, s2);
+  ASSERT_EQ(db->list_replays().size(), 1u);
+  EXPECT_EQ(db->list_replays()[0].verdict, "error");
+  EXPECT_EQ(db->list_replays()[0].error, "modes/x.avu: cannot read");
+}
+
 TEST_F(CampaignDbTest, RefusesAnOlderSchemaSayingWhatToDo) {
   {
     auto db = open();

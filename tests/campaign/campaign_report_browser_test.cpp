@@ -175,16 +175,16 @@ TEST_F(CampaignReportBrowserTest, TheReportRendersItsTablesAndChartsWithoutAnErr
     const std::vector<CampaignFailureMode> known = db.list_failure_modes();
 
     const std::int64_t run2 = db.begin_run("v2");
-    db.set_failure_mode_status(known[0].id, FailureModeStatus::fixed);
-    db.set_failure_mode_status(known[1].id, FailureModeStatus::flaky);
+    db.record_replay(run2, known[0].id, {3, 0, ""});  // fixed
+    db.record_replay(run2, known[1].id, {3, 1, ""});  // flaky
     db.upsert_failure_mode(run2, known[2].record);
     db.upsert_failure_mode(run2, known[3].record);
     search(db, campaign, run2, b, cut_in, "slow_near_child", 20, 7);
     db.end_run(run2);
 
     const std::int64_t run3 = db.begin_run("v2");
-    db.upsert_failure_mode(run3, known[0].record);  // fixed, failing again: regressed
-    db.set_failure_mode_status(known[3].id, FailureModeStatus::fixed);
+    db.upsert_failure_mode(run3, known[0].record);    // fixed, failing again: regressed
+    db.record_replay(run3, known[3].id, {3, 0, ""});  // fixed
   }
   const Outcome report = scenfuzz({"campaign", "report", campaign.string()});
   ASSERT_EQ(report.exit_code, 0) << report.err;

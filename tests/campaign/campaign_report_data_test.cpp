@@ -1,6 +1,7 @@
 // The report's data, from a campaign database built through its API: per seed the best
-// robustness so far across its searches in order, per run the modes first seen, seen, fixed and
-// regressed (derived from first/last seen and status), pictures found beside the scenarios.
+// robustness so far across its searches in order, per run the modes new, failing, fixed,
+// regressed and flaky (exactly, from the replays and the searches' sightings), pictures found
+// beside the scenarios.
 #include "fuzz/campaign/campaign_report_data.hpp"
 
 #include <gtest/gtest.h>
@@ -47,7 +48,8 @@ class CampaignReportDataTest : public ::testing::Test {
   }
 
   std::int64_t search(std::int64_t run, std::int64_t seed,
-                      const std::vector<std::optional<double>>& robustness) {
+                      const std::vector<std::optional<double>>& robustness,
+                      const std::vector<std::string>& found_modes = {}) {
     std::vector<CampaignEvaluation> evaluations;
     for (std::size_t i = 0; i < robustness.size(); ++i)
       evaluations.push_back(
@@ -58,12 +60,17 @@ class CampaignReportDataTest : public ::testing::Test {
     search.algorithm = "ga";
     search.budget = robustness.size();
     search.output_folder = "s";
-    return db_->record_search(search, evaluations);
+    std::vector<FailureModeRecord> modes;
+    for (const std::string& signature : found_modes) modes.push_back(record(seed, signature));
+    return db_->record_search_result(search, evaluations, modes).search_id;
+  }
+
+  static FailureModeRecord record(std::int64_t seed, const std::string& signature) {
+    return {seed, signature, "spec1", "ego", "modes/" + signature + ".avu", "replay " + signature};
   }
 
   CampaignFailureMode found(std::int64_t run, std::int64_t seed, const std::string& signature) {
-    return db_->upsert_failure_mode(run, {seed, signature, "spec1", "ego",
-                                          "modes/" + signature + ".avu", "replay " + signature});
+    return db_->upsert_failure_mode(run, record(seed, signature));
   }
 
   fs::path dir_;
@@ -74,23 +81,31 @@ TEST_F(CampaignReportDataTest, SeedsRunsAndFailureModes) {
   const std::int64_t run1 = db_->begin_run("v1");
   const std::int64_t a = db_->upsert_seed("a.avu", content_hash("a"));
   const std::int64_t b = db_->upsert_seed("b.avu", content_hash("b"));
-  search(run1, a, {3.0, std::nullopt, 2.0, 5.0, -1.0});
-  const CampaignFailureMode m1 = found(run1, a, "m1");
-  found(run1, a, "m2");
-  const CampaignFailureMode m3 = found(run1, a, "m3");
+  search(run1, a, {3.0, std::nullopt, 2.0, 5.0, -1.0}, {"m1", "m2", "m3"});
+  const std::vector<CampaignFailureMode> first = db_->list_failure_modes();
+  ASSERT_EQ(first.size(), 3u);
+  const std::int64_t m1 = first[0].id, m2 = first[1].id, m3 = first[2].id;
   db_->end_run(run1);
 
+  // Run 2: m1 and m3 fixed by the replay; m2's replay fails (it is not failing in run 2, though
+  // it was first seen before and last seen after); m5 new.
   const std::int64_t run2 = db_->begin_run("v2");
-  db_->set_failure_mode_status(m1.id, FailureModeStatus::fixed);  // the replay: fixed
-  db_->set_failure_mode_status(m3.id, FailureModeStatus::fixed);
+  db_->record_replay(run2, m1, {3, 0, ""});
+  db_->record_replay(run2, m2, {0, 0, "modes/m2.avu: cannot read"});
+  db_->record_replay(run2, m3, {3, 0, ""});
   search(run2, a, {0.5, -2.0});
-  found(run2, a, "m2");  // still failing
-  const CampaignFailureMode m5 = found(run2, b, "m5");
-  db_->set_failure_mode_status(m5.id, FailureModeStatus::flaky);
+  const std::int64_t m5 = found(run2, b, "m5").id;
   db_->end_run(run2);
 
+  // Run 3: m1 fixed by the replay, then found again by a search: regressed. m2 still failing; m3
+  // fixed again; m5 flaky; m4 new.
   const std::int64_t run3 = db_->begin_run("v2");
-  found(run3, a, "m1");  // fixed, found again: regressed
+  db_->record_replay(run3, m1, {3, 0, ""});
+  db_->record_replay(run3, m2, {3, 3, ""});
+  db_->record_replay(run3, m3, {3, 0, ""});
+  db_->record_replay(run3, m5, {3, 1, ""});
+  found(run3, a, "m1");
+  found(run3, a, "m2");
   found(run3, b, "m4");
 
   // m1 has a picture beside its scenario; the others do not.
@@ -118,23 +133,20 @@ TEST_F(CampaignReportDataTest, SeedsRunsAndFailureModes) {
   EXPECT_EQ(data.seeds[1].failure_modes, 2u);
 
   ASSERT_EQ(data.runs.size(), 3u);
-  // run 1: m1, m2, m3 first seen. run 2: m5 first seen; m1, m2, m5 seen; m3 fixed by it.
-  // run 3: m4 first seen; m1 (regressed) and m4 seen.
   const ReportRun& r1 = data.runs[0];
   const ReportRun& r2 = data.runs[1];
   const ReportRun& r3 = data.runs[2];
   EXPECT_EQ(r1.run.ego_version, "v1");
   EXPECT_FALSE(r1.run.ended.empty());
   EXPECT_TRUE(r3.run.ended.empty());
-  EXPECT_EQ(std::vector<std::size_t>({r1.searches, r1.simulations, r1.modes_first_seen,
-                                      r1.modes_seen, r1.fixed, r1.regressed}),
-            std::vector<std::size_t>({1, 5, 3, 3, 0, 0}));
-  EXPECT_EQ(std::vector<std::size_t>({r2.searches, r2.simulations, r2.modes_first_seen,
-                                      r2.modes_seen, r2.fixed, r2.regressed}),
-            std::vector<std::size_t>({1, 2, 1, 3, 1, 0}));
-  EXPECT_EQ(std::vector<std::size_t>({r3.searches, r3.simulations, r3.modes_first_seen,
-                                      r3.modes_seen, r3.fixed, r3.regressed}),
-            std::vector<std::size_t>({0, 0, 1, 2, 0, 1}));
+  // searches, simulations, new, failing, fixed, regressed, flaky.
+  const auto counts = [](const ReportRun& r) {
+    return std::vector<std::size_t>({r.searches, r.simulations, r.modes_first_seen, r.modes_seen,
+                                     r.fixed, r.regressed, r.flaky});
+  };
+  EXPECT_EQ(counts(r1), std::vector<std::size_t>({1, 5, 3, 3, 0, 0, 0}));
+  EXPECT_EQ(counts(r2), std::vector<std::size_t>({1, 2, 1, 1, 2, 0, 0}));
+  EXPECT_EQ(counts(r3), std::vector<std::size_t>({0, 0, 1, 3, 1, 1, 1}));
 
   ASSERT_EQ(data.failure_modes.size(), 5u);
   const ReportFailureMode& shown_m1 = data.failure_modes[0];

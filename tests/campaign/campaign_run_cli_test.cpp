@@ -1,5 +1,6 @@
 // `scenfuzz campaign run` on the command line: its usage errors and a folder without a campaign
-// exit 2 with a message naming the problem; its help names DIR and -j.
+// exit 2 with a message naming the problem; its help names DIR, -j, --junit, --json and the exit
+// statuses.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -37,11 +38,14 @@ TEST_F(CampaignRunCliTest, ACampaignTomlWithErrorsIsReportedAtItsLine) {
   EXPECT_NE(outcome.err.find("campaign.toml:1:"), std::string::npos) << outcome.err;
 }
 
-TEST_F(CampaignRunCliTest, HelpNamesTheFolderAndJobs) {
+TEST_F(CampaignRunCliTest, HelpNamesTheFolderTheOptionsAndTheExitStatuses) {
   const Outcome outcome = scenfuzz({"campaign", "run", "--help"});
   EXPECT_EQ(outcome.exit_code, kExitSuccess);
   EXPECT_NE(outcome.out.find("DIR"), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find("-j,--jobs"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("--junit FILE"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("--json"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("Exit status: 0"), std::string::npos) << outcome.out;
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // `scenfuzz campaign run`, in process: a small campaign runs end to end and fills its database and
-// DIR/modes/; a second run replays the known modes and moves their statuses; -j 1 and -j 2 leave
-// the same database; a seed with errors stops everything before it runs, a concrete one is left
-// out with a warning; a wall-time budget ends the run.
+// DIR/modes/; a second run replays the known modes (injected verdicts, and the campaign's own
+// replay) and moves their statuses; -j 1 and -j 2 leave the same database; a seed with errors stops
+// everything before it runs, a concrete one is left out with a warning; a wall-time budget ends the
+// run.
 #include "fuzz/campaign/campaign_run.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 
 #include "fuzz/campaign/budget_schedule.hpp"
 #include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/campaign/scenario_replay.hpp"
 #include "fuzz/cli.hpp"
 #include "tests/campaign/campaign_fixture.hpp"
 
@@ -30,11 +32,12 @@ class CampaignRunTest : public CommandTest {
     return dir_ / name;
   }
 
+  // With the campaign's own regression replay unless `replay` is given.
   int run(const fs::path& folder, std::optional<std::uint64_t> jobs = 2,
-          const ModeReplayer& replay = replay_nothing) {
+          const ModeReplayer& replay = {}) {
     out_.str("");
     err_.str("");
-    return run_campaign({folder.string(), jobs}, replay, out_, err_);
+    return run_campaign({folder.string(), jobs, "", false}, replay, out_, err_);
   }
 
   std::unique_ptr<CampaignDb> open(const fs::path& folder) {
@@ -97,7 +100,8 @@ TEST_F(CampaignRunTest, LaterRunsReplayKnownModesAndMoveTheirStatuses) {
   std::size_t first_modes = open(folder)->list_failure_modes().size();
 
   // Run 2 replays nothing: the modes its searches find again are still failing.
-  const int second = run(folder);
+  const ModeReplayer replay_nothing = [](const CampaignFailureMode&) { return ReplayOutcome{}; };
+  const int second = run(folder, 2, replay_nothing);
   {
     auto db = open(folder);
     int still = 0, fresh = 0;
@@ -134,6 +138,37 @@ TEST_F(CampaignRunTest, LaterRunsReplayKnownModesAndMoveTheirStatuses) {
   EXPECT_GT(fixed + regressed, 0);
   EXPECT_EQ(third, regressed > 0 || db->list_failure_modes().size() > first_modes ? kExitViolated
                                                                                   : kExitSuccess);
+}
+
+// The campaign's own replay, with the same ego: every mode of run 1 is replayed on 3 perception
+// seeds in run 2 without an error; those failing on every seed are still failing, those failing
+// on some are flaky (found again by a search of the run: still failing), none is fixed by a
+// replay that reproduces nothing.
+TEST_F(CampaignRunTest, TheRealReplayFindsTheModesOfTheSameEgoStillFailing) {
+  const fs::path folder = campaign("c", campaign_toml(small_campaign_seeds(), kBudget));
+  ASSERT_EQ(run(folder), kExitViolated) << err_.str();
+  const std::size_t known = open(folder)->list_failure_modes().size();
+  run(folder);
+  EXPECT_NE(out_.str().find("regression replay: "), std::string::npos) << out_.str();
+  auto db = open(folder);
+  const std::vector<CampaignReplay> replays = db->list_replays();
+  ASSERT_EQ(replays.size(), known);
+  int still = 0;
+  for (const CampaignReplay& replay : replays) {
+    EXPECT_EQ(replay.run_id, 2);
+    EXPECT_EQ(replay.error, "");
+    EXPECT_EQ(replay.tried, kReplaySeeds);
+    EXPECT_GT(replay.failing, 0) << replay.failure_mode_id;
+    EXPECT_EQ(replay.verdict, replay.failing == replay.tried ? "still_failing" : "flaky");
+    still += replay.verdict == "still_failing";
+  }
+  EXPECT_GT(still, 0);
+  for (const CampaignFailureMode& mode : db->list_failure_modes()) {
+    if (mode.first_seen_run != 1) continue;
+    EXPECT_TRUE(mode.status == FailureModeStatus::still_failing ||
+                mode.status == FailureModeStatus::flaky)
+        << status_name(mode.status);
+  }
 }
 
 TEST_F(CampaignRunTest, TheDatabaseIsTheSameForAnyNumberOfJobs) {
