@@ -86,8 +86,8 @@ struct GeneticAlgorithmOptions {
   // smoothly, descents find violations in a few simulations that blending and random steps take
   // generations to reach (docs/performance.md, "Search"). They used to take turns (the random
   // one waiting until the best point's stopped improving), which on 2026-11-22 found the first
-  // violations sooner; with today's responsibility oracle and driver side by side is as good
-  // (within 5 % over 300 seeds) and keeps two simulations running.
+  // violations sooner; measured again on 2026-11-26, side by side is within 6 % of the turns
+  // over 100 seeds (better on pedestrian_dart) and keeps two simulations running.
   bool local_search = true;
   // Beyond this many dimensions a descent's first simplex (d + 1 simulations) costs more than
   // it gains and the GA runs alone: the chasing cars' 40 input segments are falsified by held
