@@ -1,7 +1,8 @@
 // The genetic algorithm on synthetic objectives, driven by hand through propose/observe:
-// determinism, independence from batch splitting, speed against uniform random search, and the
-// behaviour of each gene kind, the actor swap, refinement of the best point, (mu + lambda)
-// survival, held runs of signal segments, restarts and infeasible points.
+// determinism, independence from batch splitting, speed against uniform random search, batches
+// of two points or more (descents side by side, topped up with children), and the behaviour of
+// each gene kind, the actor swap, refinement of the best point, (mu + lambda) survival, held
+// runs of signal segments, restarts and infeasible points.
 #include "fuzz/genetic_algorithm.hpp"
 
 #include <gtest/gtest.h>
