@@ -98,8 +98,6 @@ GeneticAlgorithm::GeneticAlgorithm(std::span<const SearchDimension> dimensions, 
   descending_ = options_.local_search && !dimensions_.empty() &&
                 dimensions_.size() <= options_.local_search_max_dimensions;
   first_generation_ = status_.population;
-  descent_yield_points_ =
-      options_.descent_yield_points > 0 ? options_.descent_yield_points : dimensions_.size() + 1;
   if (descending_) {
     first_generation_ =
         options_.first_generation > 0
@@ -145,19 +143,9 @@ void GeneticAlgorithm::observe(std::span<const Observation> results) {
   }
   awaiting_ = 0;
   observed_points_ += results.size();
-  if (descents_in_batch_ > 0) {
-    for (const Observation& result : results) {
-      Descent& descent = descents_[round_[round_observed_++]];
-      const double objective = usable_objective(result);
-      descent.run.tell(objective);
-      if (objective < status_.best_objective) {
-        status_.best_objective = objective;
-        status_.best_point = *descent.asked;
-      }
-      if (objective < descent.best.objective) descent.best = {std::move(*descent.asked), objective};
-      descent.asked.reset();
-    }
-    descents_in_batch_ = 0;
+  if (round_in_batch_ > 0) {
+    for (const Observation& result : results) observe_round_point(result);
+    round_in_batch_ = 0;
     return;
   }
   for (const Observation& result : results)
@@ -227,31 +215,21 @@ void GeneticAlgorithm::finish_generation() {
     ++status_.local_runs;
   }
   if (options_.random_descent) {
-    // Waits only when there is a descent to wait for.
-    const bool waiting = !descents_.empty();
-    descents_.push_back({LocalRun(uniform_fresh_point(), options_.local_run), {}, {}, waiting});
+    descents_.push_back({LocalRun(uniform_fresh_point(), options_.local_run), {}, {}});
     ++status_.local_runs;
   }
 }
 
-bool GeneticAlgorithm::yields(const Descent& descent) const {
-  return descent.waiting || descent.run.points_without_improvement() >= descent_yield_points_;
-}
-
-// Descents advance in rounds: every descent that does not yield asks for one point (all of
-// them when every one yields), and the next round starts once the whole round is observed, so
-// the points never depend on how propose() splits a round into batches. A descent that has
-// ended gives its best point to the population.
+// Descents advance in rounds: every descent asks for one point, children bred from the
+// population top the round up to descent_round_points, and the next round starts once the
+// whole round is observed, so the points never depend on how propose() splits a round into
+// batches. A descent that has ended gives its best point to the population.
 void GeneticAlgorithm::start_descent_round() {
   round_.clear();
+  round_children_.clear();
   // Each pass either fills the round or removes an ended descent.
   while (round_.empty() && !descents_.empty()) {
-    const bool any_improving =
-        std::any_of(descents_.begin(), descents_.end(),
-                    [&](const Descent& descent) { return !yields(descent); });
     for (Descent& descent : descents_) {
-      if (any_improving && yields(descent)) continue;
-      descent.waiting = false;
       // Snapped like every other point (a discrete gene in the middle of its cell): the same
       // scenario as the point the descent asked for, so its value answers the descent.
       descent.asked = descent.run.next_point();
@@ -266,20 +244,49 @@ void GeneticAlgorithm::start_descent_round() {
       if (descents_[i].asked) round_.push_back(i);
     }
   }
+  // Once the descents have all ended the generations go on instead (with no children here).
+  if (!round_.empty() && round_.size() < options_.descent_round_points)
+    round_children_ = bred_points(options_.descent_round_points - round_.size());
   round_handed_ = 0;
   round_observed_ = 0;
 }
 
+// The descents' points first, then the children.
+const UnitPoint& GeneticAlgorithm::round_point(std::size_t position) const {
+  if (position < round_.size()) return *descents_[round_[position]].asked;
+  return round_children_[position - round_.size()];
+}
+
+void GeneticAlgorithm::observe_round_point(const Observation& result) {
+  const std::size_t position = round_observed_++;
+  const double objective = usable_objective(result);
+  if (position >= round_.size()) {
+    // A child joins the population at once (its best point is then the search's).
+    survive({round_children_[position - round_.size()], objective});
+    return;
+  }
+  Descent& descent = descents_[round_[position]];
+  descent.run.tell(objective);
+  if (objective < status_.best_objective) {
+    status_.best_objective = objective;
+    status_.best_point = *descent.asked;
+  }
+  if (objective < descent.best.objective) descent.best = {std::move(*descent.asked), objective};
+  descent.asked.reset();
+}
+
 std::vector<UnitPoint> GeneticAlgorithm::descent_points(std::size_t limit) {
-  if (round_observed_ == round_.size()) start_descent_round();
-  descents_in_batch_ = std::min(limit, round_.size() - round_handed_);
+  const std::size_t round_size = round_.size() + round_children_.size();
+  if (round_observed_ == round_size) start_descent_round();
+  round_in_batch_ = std::min(limit, round_.size() + round_children_.size() - round_handed_);
   std::vector<UnitPoint> batch;
-  for (std::size_t i = round_handed_; i < round_handed_ + descents_in_batch_; ++i) {
-    const UnitPoint& point = *descents_[round_[i]].asked;
-    remember(point);
+  for (std::size_t i = round_handed_; i < round_handed_ + round_in_batch_; ++i) {
+    const UnitPoint& point = round_point(i);
+    // Children were remembered as they were bred.
+    if (i < round_.size()) remember(point);
     batch.push_back(point);
   }
-  round_handed_ += descents_in_batch_;
+  round_handed_ += round_in_batch_;
   return batch;
 }
 

@@ -1,7 +1,8 @@
 // The genetic algorithm on synthetic objectives, driven by hand through propose/observe:
-// determinism, independence from batch splitting, speed against uniform random search, and the
-// behaviour of each gene kind, the actor swap, refinement of the best point, (mu + lambda)
-// survival, held runs of signal segments, restarts and infeasible points.
+// determinism, independence from batch splitting, speed against uniform random search, batches
+// of two points or more (descents side by side, topped up with children), and the behaviour of
+// each gene kind, the actor swap, refinement of the best point, (mu + lambda) survival, held
+// runs of signal segments, restarts and infeasible points.
 #include "fuzz/genetic_algorithm.hpp"
 
 #include <gtest/gtest.h>
@@ -165,49 +166,72 @@ TEST(GeneticAlgorithm, FindsASmallBallSoonerThanUniformRandomSearch) {
   EXPECT_LT(median(genetic), median(uniform));
 }
 
-TEST(GeneticAlgorithm, TheRandomDescentWaitsUntilTheBestPointsDescentStopsImproving) {
+TEST(GeneticAlgorithm, TheTwoDescentsRunSideBySide) {
   // On a plateau the descent from the best point improves on nothing after its start.
   const Objective plateau = [](const UnitPoint&) { return 1.0; };
   GeneticAlgorithm algorithm(continuous_dimensions(4), 21, 500);
   const std::vector<UnitPoint> first = next_generation(algorithm, plateau);
   EXPECT_EQ(first.size(), 4u);  // max(4, d) points start the search while descents run
   EXPECT_EQ(algorithm.status().local_runs, 2u);
-  // From the best point (the first of equal values), which is not simulated again: its
-  // simplex steps along one axis at a time, d + 1 = 5 points without improvement, one
-  // simulation at a time.
-  std::vector<UnitPoint> round = next_generation(algorithm, plateau);
-  ASSERT_EQ(round.size(), 1u);
+  // One point of each in every round: from the best point (the first of equal values), which
+  // is not simulated again, its simplex's first step along the first axis; and the random
+  // descent's start.
+  const std::vector<UnitPoint> round = next_generation(algorithm, plateau);
+  ASSERT_EQ(round.size(), 2u);
   for (std::size_t axis = 1; axis < 4; ++axis) EXPECT_EQ(round[0][axis], first[0][axis]);
   EXPECT_NE(round[0][0], first[0][0]);
-  for (int i = 0; i < 4; ++i) EXPECT_EQ(next_generation(algorithm, plateau).size(), 1u);
-  // Then it yields and the random descent starts; as neither improves, both go on.
-  round = next_generation(algorithm, plateau);
-  ASSERT_EQ(round.size(), 2u);
   EXPECT_EQ(std::count(first.begin(), first.end(), round[1]), 0);
-}
-
-TEST(GeneticAlgorithm, ADescentThatKeepsImprovingKeepsTheTurn) {
-  // Every evaluation is better than the last by a decimetre, so no descent ever yields: each
-  // runs alone until it ends.
-  double value = 100;
-  const Objective improving = [&](const UnitPoint&) { return value -= 0.1; };
-  GeneticAlgorithm algorithm(continuous_dimensions(4), 22, 500);
-  next_generation(algorithm, improving);
-  ASSERT_EQ(algorithm.status().local_runs, 2u);
-  // Descent points one at a time, up to the next generation's eight children.
-  std::size_t descent_points = 0;
-  for (std::size_t size = 1; size == 1; size = next_generation(algorithm, improving).size()) {
-    ++descent_points;
-  }
-  EXPECT_GT(descent_points, 20u);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(next_generation(algorithm, plateau).size(), 2u);
 }
 
 TEST(GeneticAlgorithm, NoDescentStartsFromAViolation) {
   GeneticAlgorithm algorithm(continuous_dimensions(4), 23, 500);
-  next_generation(algorithm, [](const UnitPoint& point) { return point[0] - 0.5; });
+  const std::vector<UnitPoint> first =
+      next_generation(algorithm, [](const UnitPoint& point) { return point[0] - 0.5; });
   // Some point of the Latin hypercube violates: only the random descent runs.
   EXPECT_EQ(algorithm.status().local_runs, 1u);
-  EXPECT_EQ(next_generation(algorithm, sum_objective).size(), 1u);
+  // Its start, topped up with a child bred from the population.
+  const std::vector<UnitPoint> round = algorithm.propose(16);
+  ASSERT_EQ(round.size(), 2u);
+  EXPECT_EQ(std::count(first.begin(), first.end(), round[0]), 0);
+  EXPECT_EQ(std::count(first.begin(), first.end(), round[1]), 0);
+  // The child joins the population as soon as it is observed.
+  algorithm.observe(std::vector<Observation>{judged(round[0], 3.0), judged(round[1], -7.0)});
+  EXPECT_EQ(algorithm.status().best_objective, -7.0);
+  EXPECT_EQ(algorithm.status().best_point, round[1]);
+}
+
+// Sizes of the batches of a search driven with batches of up to 16 points (the search loop's).
+std::vector<std::size_t> batch_sizes(GeneticAlgorithm& algorithm, const Objective& objective,
+                                     std::size_t evaluations) {
+  std::vector<std::size_t> sizes;
+  for (std::size_t done = 0; done < evaluations;) {
+    const std::vector<UnitPoint> batch = algorithm.propose(16);
+    std::vector<Observation> results;
+    for (const UnitPoint& point : batch) results.push_back(judged(point, objective(point)));
+    algorithm.observe(results);
+    sizes.push_back(batch.size());
+    done += batch.size();
+  }
+  return sizes;
+}
+
+TEST(GeneticAlgorithm, EveryBatchHoldsAtLeastTwoPoints) {
+  // A descent asks for one point at a time; a batch of one would leave all workers but one idle.
+  const UnitPoint centre = {0.8, 0.2, 0.6, 0.4, 0.9, 0.1};
+  const Objective ball = [&](const UnitPoint& point) { return distance(point, centre) - 0.05; };
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    GeneticAlgorithm algorithm(continuous_dimensions(centre.size()), seed, 1000);
+    const std::vector<std::size_t> sizes = batch_sizes(algorithm, ball, 1000);
+    EXPECT_GT(algorithm.status().local_runs, 4u);
+    EXPECT_EQ(std::count(sizes.begin(), sizes.end(), 1u), 0) << "seed " << seed;
+  }
+  // Without the children, a descent left alone runs one point at a time.
+  GeneticAlgorithmOptions alone;
+  alone.descent_round_points = 1;
+  GeneticAlgorithm algorithm(continuous_dimensions(centre.size()), 1, 1000, alone);
+  const std::vector<std::size_t> sizes = batch_sizes(algorithm, ball, 1000);
+  EXPECT_GT(std::count(sizes.begin(), sizes.end(), 1u), 0);
 }
 
 TEST(GeneticAlgorithm, BeyondTheDimensionLimitTheGenerationsRunAlone) {
