@@ -24,7 +24,8 @@ class CampaignMpiTest : public CommandTest {
   int mpirun(int ranks, const std::filesystem::path& dir) {
     // Open MPI refuses root without these; CI containers run as root.
     const std::string command =
-        "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe -np " +
+        "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout -k 5 300 mpirun "
+        "--oversubscribe -np " +
         std::to_string(ranks) + " " + shell_quote(SCENFUZZ_EXECUTABLE) + " campaign run " +
         shell_quote(dir.string()) + " -j 1 </dev/null >" +
         shell_quote((dir_ / "mpi.out").string()) + " 2>&1";
