@@ -323,6 +323,10 @@ void declare_campaign_run(CLI::App& campaign, Action& action) {
       ->type_name("FILE");
   run->add_flag("--json", options->json,
                 "Print the run's summary as JSON, one line on stdout; progress goes to stderr");
+  add_checked_option(run, "--worker-timeout", options->worker_timeout, "SECONDS", positive(86400),
+                     "Under mpirun: seconds a worker rank may stay silent (it sends a heartbeat "
+                     "every second) before its search goes to another",
+                     "");
   run->footer(
       "Exit status: 0 no new failure mode and no regression; 1 a new failure mode or a "
       "regression; 2 errors. docs/campaigns.md describes the run and its outputs.");

@@ -16,21 +16,21 @@
 #include "fuzz/campaign/campaign_db.hpp"
 #include "fuzz/campaign/campaign_search.hpp"
 #include "fuzz/campaign/campaign_seeds.hpp"
+#include "fuzz/campaign/mpi_pool.hpp"
 
 namespace scenfuzz {
-
-class MpiSession;
 
 struct RoundContext {
   CampaignDb& db;
   const CampaignSeeds& seeds;
   const SimulationCommandOptions& simulation;
   std::int64_t run = 0;
-  std::size_t workers = 1;    // searches at once
+  std::size_t workers = 1;                                        // searches at once
   std::optional<std::chrono::steady_clock::time_point> deadline;  // the wall-time budget's end
   std::ostream& out;
   std::ostream& err;
   MpiSession* mpi = nullptr;  // under mpirun: the searches go to the other ranks (mpi_round.hpp)
+  MpiPoolTimes mpi_times;
 };
 
 enum class RoundEnd { complete, wall_time, interrupted, failed };

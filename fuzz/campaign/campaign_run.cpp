@@ -234,9 +234,18 @@ int run_in_folder(const CampaignRunOptions& options, const CampaignConfig& confi
   for (LoadedSeed& seed : seeds.seeds) seed.id = db.upsert_seed(seed.path, seed.content_hash);
   const std::int64_t run = run_to_use(db, config.ego_version, progress);
   const SimulationCommandOptions simulation = campaign_simulation(config);
-  RoundContext context{db,           seeds,    simulation, run, worker_count(options, config),
-                       std::nullopt, progress, err};
-  if (mpi && mpi->size() > 1) context.mpi = mpi;
+  MpiPoolTimes mpi_times;
+  mpi_times.dead_after_seconds = options.worker_timeout;
+  RoundContext context{db,
+                       seeds,
+                       simulation,
+                       run,
+                       worker_count(options, config),
+                       std::nullopt,
+                       progress,
+                       err,
+                       mpi && mpi->size() > 1 ? mpi : nullptr,
+                       mpi_times};
   if (config.budget_wall_seconds)
     context.deadline =
         Clock::now() + std::chrono::duration_cast<Clock::duration>(

@@ -15,6 +15,7 @@
 
 #include "fuzz/campaign/campaign_config.hpp"
 #include "fuzz/campaign/campaign_db.hpp"
+#include "fuzz/campaign/mpi_pool.hpp"
 #include "fuzz/campaign/replay_outcome.hpp"
 
 namespace scenfuzz {
@@ -26,6 +27,9 @@ struct CampaignRunOptions {
   // --json: the run's summary (run_json.hpp) as the one line on `out`; the progress lines go to
   // `err` instead, so that a script can read `out` whole.
   bool json = false;
+  // --worker-timeout: under mpirun, seconds a worker rank may stay silent before its search goes
+  // to another (mpi_pool.hpp).
+  double worker_timeout = MpiPoolTimes{}.dead_after_seconds;
 };
 
 // Replays one known failure mode against the current ego (called with the campaign folder as

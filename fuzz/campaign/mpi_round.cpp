@@ -81,7 +81,7 @@ RoundEnd run_round_on_ranks(RoundContext& context, std::int64_t round,
     return StopSignalGuard::stop_requested() || recorder.failed() ||
            (context.deadline && Clock::now() >= *context.deadline);
   };
-  context.mpi->distribute(sent, on_result, stop);
+  context.mpi->distribute(sent, on_result, stop, context.mpi_times);
   if (context.mpi->live_workers() == 0) {
     context.err << "scenfuzz: error: every MPI worker rank has died; the run stops (run it again "
                    "to continue)\n";
