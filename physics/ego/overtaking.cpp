@@ -132,7 +132,8 @@ PassTiming pass_timing(const OvertakeContext& context, double gap, const Cluster
 std::optional<double> lane_offset(const OvertakeContext& context, LaneIndex lane, double s) {
   const Polyline& path = context.route.path();
   MapPoint p = path.point_at(s);
-  double heading = path.heading_at(s);
+  // The route's kept segment headings: path.heading_at's atan2, computed once.
+  double heading = context.route.heading_at(s);
   PolylineProjection on = context.map.lane(lane).centre_line.project(p);
   if (on.distance > std::abs(on.lateral) + 1e-6) return std::nullopt;  // off its ends
   MapPoint q = context.map.lane(lane).centre_line.point_at(on.s);

@@ -19,6 +19,7 @@ class SegmentFrames {
   explicit SegmentFrames(const Polyline& path) {
     const auto& points = path.points();
     const auto& arc = path.arc_lengths();
+    directions_.reserve(path.segment_count());
     for (std::size_t segment = 0; segment < path.segment_count(); ++segment) {
       const double length = arc[segment + 1] - arc[segment];
       directions_.push_back({(points[segment + 1].x - points[segment].x) / length,

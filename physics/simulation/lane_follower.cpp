@@ -14,6 +14,7 @@
 #include "physics/map/nearest_on_path.hpp"
 #include "physics/map/polygon.hpp"
 #include "physics/map/segment_walk.hpp"
+#include "physics/simulation/bend_envelope.hpp"
 #include "physics/simulation/predicted_points.hpp"
 #include "physics/simulation/route_place.hpp"
 
@@ -48,24 +49,6 @@ double fourth_power(double x) {
   return squared * squared;
 }
 
-// At each vertex, the most speed from which every bend ahead can still be taken within the lateral
-// limit, braking at `deceleration` (a backward pass over the vertices).
-std::vector<double> bend_envelope(const Polyline& path, const std::vector<double>& headings,
-                                  double lateral_acceleration, double deceleration) {
-  const std::size_t count = path.points().size();
-  std::vector<double> envelope(count, kInfinity);
-  for (std::size_t i = count; i-- > 0;) {
-    double curvature = vertex_curvature(path, headings, i);
-    double cap = curvature > 1e-9 ? std::sqrt(lateral_acceleration / curvature) : kInfinity;
-    if (i + 1 < count) {
-      double ds = path.arc_lengths()[i + 1] - path.arc_lengths()[i];
-      cap = std::min(cap, std::sqrt(envelope[i + 1] * envelope[i + 1] + 2 * deceleration * ds));
-    }
-    envelope[i] = cap;
-  }
-  return envelope;
-}
-
 }  // namespace
 
 LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
@@ -79,13 +62,14 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
       leaves_at_end_(leaves_at_end),
       settings_(settings) {
   SCENFUZZ_DEMAND(path_.segment_count() > 0);
-  headings_ = segment_headings(path_);
+  headings_ = lazy_headings(path_);
   boxes_ = PolylineBoxes(path_);
   frames_ = SegmentFrames(path_);
   double lateral = body_.comfortable_lateral_acceleration > 0
                        ? body_.comfortable_lateral_acceleration
                        : body_.max_deceleration;
-  envelope_ = bend_envelope(path_, headings_, lateral, body_.comfortable_deceleration);
+  envelope_ =
+      bend_envelope(path_, headings_, lateral, body_.comfortable_deceleration, body_.max_speed);
   double distance = 0;
   for (const RouteSegment& segment : route_.segments) {
     route_starts_.push_back(distance);
@@ -99,7 +83,8 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   }
   // A start faster than the bends ahead allow is the nearest feasible one: as fast as they do.
   double speed = std::min({initial_speed, body_.max_speed, envelope_.front()});
-  state_ = state_on_path(path_, headings_, 0, speed, 0);
+  make_headings_known();
+  state_ = state_on_path(path_, headings_.values, 0, speed, 0);
   state_.yaw_rate = 0;
 }
 
@@ -110,7 +95,8 @@ void LaneFollower::start_at(double progress) {
   // that came to it would.
   segment_ = path_.segment_at(s_);
   const double limit = envelope_[std::min(segment_ + 1, envelope_.size() - 1)];
-  state_ = state_on_path(path_, headings_, s_, std::min(state_.speed, limit), 0);
+  make_headings_known();
+  state_ = state_on_path(path_, headings_.values, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
 }
 
@@ -464,7 +450,8 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
         nearest_on_path(path_, boxes_, frames_, points[which], first, until, reach, known);
     hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;
     if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
-    double relative = angle_difference(other.heading, headings_[nearest.segment]);
+    double relative =
+        angle_difference(other.heading, heading_of(headings_, path_, nearest.segment));
     double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
                     std::abs(std::cos(relative)) * world.widths[k] / 2;
     double along = std::abs(std::cos(relative)) * world.lengths[k] / 2 +
@@ -601,6 +588,12 @@ bool LaneFollower::pedestrians_at(const WorldSnapshot& world, const Crosswalk& c
   return false;
 }
 
+void LaneFollower::make_headings_known() {
+  constexpr std::size_t kHeadingRun = 16;  // segments ahead whose headings are computed at once
+  headed_until_ = segment_ + 2 + kHeadingRun;
+  ensure_headings(headings_, path_, segment_ > 0 ? segment_ - 1 : 0, headed_until_ - 1);
+}
+
 void LaneFollower::advance(double acceleration, double dt) {
   const double jerk = body_.max_jerk * dt;
   acceleration = std::clamp(acceleration, applied_ - jerk, applied_ + jerk);
@@ -617,7 +610,9 @@ void LaneFollower::advance(double acceleration, double dt) {
     if (!leaves_at_end_) next = 0;
   }
   segment_ = segment_at_from(path_, s_, segment_);
-  state_ = state_on_path(path_, headings_, s_, next, (next - v) / dt, segment_);
+  // state_on_path reads the headings of segment_ and its neighbours (the blends at its ends).
+  if (segment_ + 1 >= headed_until_) make_headings_known();
+  state_ = state_on_path(path_, headings_.values, s_, next, (next - v) / dt, segment_);
   state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
   // At a standstill the brakes hold without effort: no braking is carried into setting off.
   applied_ = next == 0 && acceleration < 0 ? 0 : acceleration;

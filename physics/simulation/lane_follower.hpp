@@ -17,6 +17,7 @@
 #include "physics/map/polyline.hpp"
 #include "physics/map/polyline_boxes.hpp"
 #include "physics/map/segment_frames.hpp"
+#include "physics/simulation/bend_envelope.hpp"
 #include "physics/simulation/world_snapshot.hpp"
 
 namespace scenfuzz {
@@ -128,11 +129,13 @@ class LaneFollower {
   std::optional<LaneIndex> junction_lane_after(const FeatureAhead& feature) const;
   double idm(const Stop& stop) const;
   void advance(double acceleration, double dt);
+  // The headings of segment_ - 1 to a run beyond segment_ + 1, into headings_ (headed_until_).
+  void make_headings_known();
 
   const RoadMap* map_;
   LaneRoute route_;
   Polyline path_;
-  std::vector<double> headings_;      // of each path segment
+  LazyHeadings headings_;             // of each path segment, computed where needed
   PolylineBoxes boxes_;               // of runs of path segments, for nearest_on_path
   SegmentFrames frames_;              // of path segments, for nearest_on_path's projections
   std::vector<double> route_starts_;  // route distance where each route segment begins
@@ -161,6 +164,9 @@ class LaneFollower {
   KinematicState state_;
   double s_ = 0;
   std::size_t segment_ = 0;  // path_.segment_at(s_), kept as s_ moves on (segment_walk.hpp)
+  // The headings of the path segments from segment_ - 1 up to (not including) this one are
+  // known: advance computes them a run ahead at a time, so that most steps only compare.
+  std::size_t headed_until_ = 0;
   // cos and sin of state_.heading (update_facing), for the scans; NaN: not taken yet.
   MapPoint facing_{1, 0};
   double facing_heading_ = std::numeric_limits<double>::quiet_NaN();  // whose they are

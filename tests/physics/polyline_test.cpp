@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -86,6 +87,41 @@ TEST(AngleDifference, EqualsTheRemainderDefinitionExactly) {
       EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(expected))
           << a << " - " << b;
     }
+}
+
+// project skips segments whose midpoint is out of reach; its answer must stay the first nearest
+// segment's projection, bit for bit, also at UTM-sized coordinates and for points on the line.
+TEST(Polyline, ProjectIsTheFirstNearestSegmentsProjectionBitForBit) {
+  std::mt19937_64 random(29);
+  std::uniform_real_distribution<double> length(0.05, 20.0), turn(-1.2, 1.2), offset(-30, 30);
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<MapPoint> points{{553000.0 + trial, 4181700.0 - trial}};
+    double heading = turn(random);
+    for (int i = 0; i < 60; ++i) {
+      heading += turn(random);
+      const double ds = length(random);
+      points.push_back(
+          {points.back().x + ds * std::cos(heading), points.back().y + ds * std::sin(heading)});
+    }
+    Polyline line(points);
+    for (int q = 0; q < 50; ++q) {
+      MapPoint p = line.point_at(std::uniform_real_distribution<double>(0, line.length())(random));
+      if (q % 2 == 1) p = {p.x + offset(random), p.y + offset(random)};
+      PolylineProjection expected;
+      expected.distance = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < line.segment_count(); ++k) {
+        PolylineProjection candidate = line.project_to_segment(p, k);
+        if (candidate.distance < expected.distance) expected = candidate;
+      }
+      PolylineProjection got = line.project(p);
+      ASSERT_EQ(got.segment, expected.segment);
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(got.s), std::bit_cast<std::uint64_t>(expected.s));
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(got.distance),
+                std::bit_cast<std::uint64_t>(expected.distance));
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(got.lateral),
+                std::bit_cast<std::uint64_t>(expected.lateral));
+    }
+  }
 }
 
 }  // namespace
