@@ -125,4 +125,14 @@ void FolderSearch::warn(const std::string& warning) {
   if (events_.warning) events_.warning(warning);
 }
 
+SearchOptions search_plan(const FuzzCommandOptions& options) {
+  SearchOptions plan;
+  plan.algorithm = options.algorithm;
+  plan.budget = options.budget;
+  plan.time_limit = options.time_limit;
+  plan.seed = options.seed;
+  plan.jobs = options.jobs;
+  return plan;
+}
+
 }  // namespace scenfuzz

@@ -96,4 +96,8 @@ class FolderSearch {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+// The search loop's options as the command's options set them (algorithm, budget, time limit,
+// seed, threads); the caller adds the targets.
+SearchOptions search_plan(const FuzzCommandOptions& options);
+
 }  // namespace scenfuzz

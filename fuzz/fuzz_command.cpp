@@ -64,12 +64,7 @@ std::optional<SearchOptions> search_options(const FuzzCommandOptions& options,
                                             const Evaluator& evaluator, std::ostream& err) {
   SCENFUZZ_DEMAND(options.budget > 0);  // the command line checks it
   const std::vector<std::string> objectives = evaluator.objectives();
-  SearchOptions search;
-  search.algorithm = options.algorithm;
-  search.budget = options.budget;
-  search.time_limit = options.time_limit;
-  search.seed = options.seed;
-  search.jobs = options.jobs;
+  SearchOptions search = search_plan(options);
   for (const std::string& name : options.specs) {
     auto found = std::find(objectives.begin(), objectives.end(), name);
     if (found == objectives.end()) {

@@ -87,12 +87,7 @@ CampaignSearchResult run_campaign_search(const CampaignSeeds& seeds,
     result.error = "scenfuzz: error: " + failure + "\n";
     return result;
   }
-  SearchOptions plan;
-  plan.algorithm = options.algorithm;
-  plan.budget = options.budget;
-  plan.time_limit = options.time_limit;
-  plan.seed = options.seed;
-  plan.jobs = options.jobs;
+  SearchOptions plan = search_plan(options);
   plan.targets = {arm.spec};
   const FolderSearchEnd end = search.run(plan);
   result.summary = end.summary;

@@ -14,15 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool read_file(const fs::path& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  text = bytes.str();
-  return static_cast<bool>(in) || in.eof();
-}
-
 // Writes `text` to `target` unless it is there already (same name, same content by
 // construction); an error message or empty.
 std::string place(const fs::path& target, const std::string& text) {
@@ -36,7 +27,7 @@ std::string place(const fs::path& target, const std::string& text) {
 ModeFiles copy_mode_files(const fs::path& campaign_folder, const fs::path& finding) {
   ModeFiles files;
   std::string text;
-  if (!read_file(finding, text)) {
+  if (!read_whole_file(finding, text)) {
     files.error = "cannot read the finding '" + finding.string() + "'";
     return files;
   }
@@ -49,7 +40,7 @@ ModeFiles copy_mode_files(const fs::path& campaign_folder, const fs::path& findi
   for (const char* suffix : kModeSidecars) {
     const fs::path sidecar = finding.parent_path() / (stem + suffix);
     std::string content;
-    if (!fs::exists(sidecar, error) || !read_file(sidecar, content)) continue;
+    if (!fs::exists(sidecar, error) || !read_whole_file(sidecar, content)) continue;
     if (std::string failure = place(modes / (hash + suffix), content); !failure.empty()) {
       files.error = failure;
       return files;
@@ -62,6 +53,15 @@ ModeFiles copy_mode_files(const fs::path& campaign_folder, const fs::path& findi
   }
   files.scenario_file = "modes/" + name;
   return files;
+}
+
+bool read_whole_file(const fs::path& path, std::string& text) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  text = bytes.str();
+  return static_cast<bool>(in) || in.eof();
 }
 
 void remove_mode_temporaries(const fs::path& campaign_folder) {

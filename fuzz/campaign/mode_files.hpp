@@ -23,6 +23,9 @@ struct ModeFiles {
 ModeFiles copy_mode_files(const std::filesystem::path& campaign_folder,
                           const std::filesystem::path& finding);
 
+// Reads the file at `path` whole into `text`; false when it cannot be read.
+bool read_whole_file(const std::filesystem::path& path, std::string& text);
+
 // Removes the temporary files of atomic writes a killed run left in DIR/modes/.
 void remove_mode_temporaries(const std::filesystem::path& campaign_folder);
 

@@ -60,15 +60,6 @@ SearchSummary read_summary(const json& value) {
   return summary;
 }
 
-bool read_file(const fs::path& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  text = bytes.str();
-  return true;
-}
-
 }  // namespace
 
 std::string encode_task(const CampaignSearchTask& task) {
@@ -141,10 +132,10 @@ std::vector<WireFile> finding_files(const CampaignSearchResult& result, std::str
     for (const char* suffix : kModeSidecars) {
       const fs::path sidecar = finding.parent_path() / (finding.stem().string() + suffix);
       WireFile file{sidecar.generic_string(), ""};
-      if (read_file(sidecar, file.content)) files.push_back(std::move(file));
+      if (read_whole_file(sidecar, file.content)) files.push_back(std::move(file));
     }
     WireFile file{finding.generic_string(), ""};
-    if (!read_file(finding, file.content)) {
+    if (!read_whole_file(finding, file.content)) {
       error = "cannot read the finding '" + file.path + "'";
       return {};
     }
