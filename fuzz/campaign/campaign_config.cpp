@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "fuzz/campaign/seed_paths.hpp"
+#include "fuzz/seed_paths.hpp"
 #include "fuzz/evaluator.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/search_strategy.hpp"

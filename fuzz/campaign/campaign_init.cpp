@@ -8,7 +8,7 @@
 
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/campaign/campaign_config.hpp"
-#include "fuzz/campaign/seed_paths.hpp"
+#include "fuzz/seed_paths.hpp"
 #include "fuzz/cli.hpp"
 #include "lang/diagnostic.hpp"
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "fuzz/campaign/content_hash.hpp"
-#include "fuzz/campaign/seed_paths.hpp"
+#include "fuzz/seed_paths.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/report_format.hpp"
 #include "lang/number_format.hpp"

@@ -1,6 +1,7 @@
-// A campaign's `seeds` entries on disk: a scenario file stands for itself, a folder for every
-// scenario file under it (.avu, .scenest, .sdl, at any depth, sorted), so a corpus folder is one
-// entry and files added to it join the next run.
+// Seed entries on disk (a campaign's `seeds`, the corpus arguments of the search, `coverage` and
+// `cmin`): a scenario file stands for itself, a folder for every scenario file under it (.avu,
+// .scenest, .sdl, at any depth, sorted), so a corpus folder is one entry and files added to it
+// join the next run.
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // expand_seed_entry: a stat, then a sorted recursive walk for folders.
-#include "fuzz/campaign/seed_paths.hpp"
+#include "fuzz/seed_paths.hpp"
 
 #include <algorithm>
 #include <array>
