@@ -72,17 +72,21 @@ void declare_space(CLI::App& app, Action& action) {
   struct SpaceOptions {
     std::string file;
     bool json = false;
+    MutationCommandOptions mutation;
   };
   auto options = std::make_shared<SpaceOptions>();
   CLI::App* space = app.add_subcommand(
-      "space", "Print the parameter space of a scenario: one dimension per range in the file");
+      "space",
+      "Print the parameter space of a scenario: one dimension per range in the file; for a "
+      "concrete file, the space the search derives around its values (--mutate)");
   space->add_option("FILE", options->file, "AVUnit, scenest or WMG SDL scenario file")
       ->required()
       ->type_name("");
   space->add_flag("--json", options->json, "Print a JSON document instead of a table");
+  add_mutation_options(space, options->mutation);
   space->callback([options, &action] {
     action = [options](std::ostream& out, std::ostream& err) {
-      return run_space(options->file, options->json, out, err);
+      return run_space(options->file, options->json, options->mutation, out, err);
     };
   });
 }

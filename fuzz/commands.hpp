@@ -17,10 +17,6 @@ namespace scenfuzz {
 // Returns kExitSuccess when no file has errors, kExitBadInput otherwise; every file is checked.
 int run_check(const std::vector<std::string>& paths, std::ostream& err);
 
-// `scenfuzz space FILE [--json]`: prints the file's parameter space to `out` as an aligned table,
-// or as JSON. Diagnostics go to `err`; a file with errors gives kExitBadInput and no space.
-int run_space(const std::string& path, bool json, std::ostream& out, std::ostream& err);
-
 struct MapCommandOptions {
   std::string name;                    // built-in map (with ?parameters), Apollo map name or file
   std::vector<std::string> map_paths;  // --map-path, in order
@@ -82,12 +78,26 @@ struct ScenarioFile {
 std::optional<ScenarioFile> read_scenario(const std::string& path, const std::string& purpose,
                                           std::ostream& err);
 
+// How a concrete scenario's values are mutated (sampler/mutation_space.hpp), as fuzz/options.def
+// declares it.
+struct MutationCommandOptions {
+#define SCENFUZZ_MUTATION_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
+};
+
 struct FuzzCommandOptions {
   std::string path;  // FILE
 #define SCENFUZZ_SEARCH_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
 #include "fuzz/options.def"
   SimulationCommandOptions simulation;
+  MutationCommandOptions mutation;
 };
+
+// `scenfuzz space FILE [--json] [--mutate KIND=SIZE]`: prints the file's parameter space to `out`
+// as an aligned table, or as JSON; a concrete file's derived space, marked as derived. Diagnostics
+// go to `err`; a file with errors gives kExitBadInput and no space.
+int run_space(const std::string& path, bool json, const MutationCommandOptions& mutation,
+              std::ostream& out, std::ostream& err);
 
 // `scenfuzz [options] FILE`: searches the scenario's parameter space and writes every finding.
 // Exit status kExitSuccess (no finding), kExitViolated (findings), kExitBadInput / kExitUsage.

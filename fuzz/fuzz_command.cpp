@@ -30,6 +30,7 @@
 #include "lang/number_format.hpp"
 #include "oracle/robustness.hpp"
 #include "oracle/trace_audit.hpp"
+#include "sampler/mutation_space.hpp"
 
 namespace scenfuzz {
 
@@ -52,8 +53,8 @@ std::optional<ScenarioEvaluator> make_evaluator(const FuzzCommandOptions& option
   }
   if (evaluator->space().dimensions.empty()) {
     err << "scenfuzz: error: '" << options.path
-        << "' has no parameter ranges: there is nothing to search (simulate it with 'scenfuzz "
-           "run')\n";
+        << "' has neither parameter ranges nor values to mutate (--mutate): there is nothing to "
+           "search (simulate it with 'scenfuzz run')\n";
     return std::nullopt;
   }
   return evaluator;
@@ -220,11 +221,30 @@ FolderSearchEvents console_events(const FuzzCommandOptions& options, ProgressRep
   return events;
 }
 
+// A concrete scenario is searched by mutation: its space is derived around its values (with a
+// note saying so). False after a bad --mutate on `err`.
+bool derive_space_if_concrete(const FuzzCommandOptions& options, ScenarioFile& input,
+                              std::ostream& err) {
+  const MutationSizesOrError sizes = mutation_sizes(options.mutation);
+  if (!sizes.error.empty()) {
+    err << "scenfuzz: error: " << sizes.error << "\n";
+    return false;
+  }
+  if (!searched_by_mutation(input.scenario)) return true;
+  input.scenario = derive_mutation_space(input.scenario, sizes.sizes);
+  if (!options.quiet && !options.json && !input.scenario.parameters.empty())
+    err << "scenfuzz: note: '" << options.path << "' has no parameter ranges: searching "
+        << input.scenario.parameters.size()
+        << " of its values within --mutate's neighbourhoods (scenfuzz space shows them)\n";
+  return true;
+}
+
 }  // namespace
 
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
   std::optional<ScenarioFile> input = read_scenario(options.path, "search", err);
   if (!input) return kExitBadInput;
+  if (!derive_space_if_concrete(options, *input, err)) return kExitUsage;
   apply_scenario_overrides(options.simulation, input->scenario);
   std::optional<ScenarioEvaluator> evaluator = make_evaluator(options, *input, err);
   if (!evaluator) return kExitBadInput;

@@ -214,11 +214,28 @@ void add_run_options(CLI::App* app, RunCommandOptions& options) {
   add_simulation_options(app, options.simulation);
 }
 
+void add_mutation_options(CLI::App* app, MutationCommandOptions& options) {
+#define SCENFUZZ_MUTATION_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
+  add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
+#include "fuzz/options.def"
+}
+
 void add_search_options(CLI::App* app, FuzzCommandOptions& options) {
 #define SCENFUZZ_SEARCH_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
   add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
 #include "fuzz/options.def"
+  add_mutation_options(app, options.mutation);
   add_simulation_options(app, options.simulation);
+}
+
+MutationSizesOrError mutation_sizes(const MutationCommandOptions& options) {
+  MutationSizesOrError result;
+  for (const std::string& option : options.mutate)
+    if (std::optional<std::string> problem = apply_mutation_option(option, result.sizes)) {
+      result.error = *problem;
+      return result;
+    }
+  return result;
 }
 
 std::optional<std::string> check_step_count(double duration, double dt,

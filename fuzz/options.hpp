@@ -17,6 +17,7 @@
 #include "oracle/judge.hpp"
 #include "physics/simulation/simulation.hpp"
 #include "physics/simulation/simulation_limits.hpp"
+#include "sampler/mutation_space.hpp"
 
 namespace CLI {
 class App;
@@ -84,8 +85,17 @@ void add_checked_option(CLI::App* app, const std::string& names,
 void add_simulation_options(CLI::App* app, SimulationCommandOptions& options);
 // `run`'s own options and the simulation's.
 void add_run_options(CLI::App* app, RunCommandOptions& options);
-// The search's own options and the simulation's.
+// The search's own options, the mutation's and the simulation's.
 void add_search_options(CLI::App* app, FuzzCommandOptions& options);
+// --mutate, for the search and `space`.
+void add_mutation_options(CLI::App* app, MutationCommandOptions& options);
+
+// The neighbourhood sizes --mutate asks for, over the defaults; or the first bad --mutate.
+struct MutationSizesOrError {
+  MutationSizes sizes;
+  std::string error;  // non-empty: the message, naming --mutate
+};
+MutationSizesOrError mutation_sizes(const MutationCommandOptions& options);
 
 // A simulation of `duration` s in steps of `dt` s (both already checked on their own) is at most
 // kMaxSimulationSteps long; otherwise the reason, naming --duration and --dt, for an error

@@ -1,4 +1,5 @@
-// `scenfuzz space FILE [--json]`: show the search space a logical scenario defines.
+// `scenfuzz space FILE [--json]`: show the search space a logical scenario defines, or the one the
+// search derives around a concrete scenario's values.
 #include <algorithm>
 #include <cstddef>
 #include <nlohmann/json.hpp>
@@ -7,9 +8,11 @@
 
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
+#include "fuzz/options.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/number_format.hpp"
+#include "sampler/mutation_space.hpp"
 #include "sampler/parameter_space.hpp"
 
 namespace scenfuzz {
@@ -35,6 +38,10 @@ std::string join_choices(const std::vector<std::string>& choices) {
   return text;
 }
 
+bool is_derived(const ParameterSpace& space) {
+  return !space.dimensions.empty() && space.dimensions.front().origin.has_value();
+}
+
 void print_table(const ScenarioTemplate& scenario, const ParameterSpace& space, std::ostream& out) {
   if (!scenario.has_scenario) {
     out << "no scenario: the file only defines values (no CreateScenario), so there is nothing "
@@ -42,9 +49,13 @@ void print_table(const ScenarioTemplate& scenario, const ParameterSpace& space, 
     return;
   }
   if (space.dimensions.empty()) {
-    out << "no parameters: the scenario is concrete\n";
+    out << "no parameters: the scenario is concrete and none of its values is mutated (--mutate)\n";
     return;
   }
+  const bool derived = is_derived(space);
+  if (derived)
+    out << "derived: the file has no ranges, so the search mutates its values within these "
+           "bounds (--mutate; docs/search.md)\n";
   bool any_discrete = false;
   for (const Dimension& d : space.dimensions)
     any_discrete = any_discrete || d.kind == ParameterKind::discrete;
@@ -52,6 +63,7 @@ void print_table(const ScenarioTemplate& scenario, const ParameterSpace& space, 
   using Row = std::vector<std::string>;
   std::vector<Row> rows;
   Row header = {"name", "kind", "lower", "upper", "unit", "line"};
+  if (derived) header.insert(header.begin() + 2, "value");
   if (any_discrete) header.push_back("choices");
   rows.push_back(header);
   for (const Dimension& d : space.dimensions) {
@@ -61,6 +73,7 @@ void print_table(const ScenarioTemplate& scenario, const ParameterSpace& space, 
                format_bound(d, d.upper),
                d.unit.empty() ? "-" : d.unit,
                format_location(d.location)};
+    if (derived) row.insert(row.begin() + 2, format_bound(d, d.origin.value_or(0)));
     if (any_discrete) row.push_back(join_choices(d.choices));
     rows.push_back(std::move(row));
   }
@@ -69,14 +82,14 @@ void print_table(const ScenarioTemplate& scenario, const ParameterSpace& space, 
   for (const Row& row : rows)
     for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
 
-  // Numbers (lower, upper) are right-aligned, text left-aligned; no trailing blanks.
-  constexpr std::size_t kLower = 2, kUpper = 3;
+  // Numbers (value, lower, upper) are right-aligned, text left-aligned; no trailing blanks.
+  const std::size_t first_number = 2, last_number = derived ? 4 : 3;
   for (const Row& row : rows) {
     std::string line;
     for (std::size_t c = 0; c < row.size(); ++c) {
       const std::string padding(widths[c] - row[c].size(), ' ');
       if (c > 0) line += "  ";
-      if (c == kLower || c == kUpper)
+      if (c >= first_number && c <= last_number)
         line += padding + row[c];
       else
         line += row[c] + (c + 1 < row.size() ? padding : "");
@@ -91,6 +104,7 @@ void print_json(const std::string& path, const ParameterSpace& space, std::ostre
     nlohmann::ordered_json entry;
     entry["name"] = d.name;
     entry["kind"] = std::string(kind_name(d.kind));
+    if (d.origin) entry["value"] = *d.origin;
     entry["lower"] = d.lower;
     entry["upper"] = d.upper;
     entry["unit"] = d.unit;
@@ -106,6 +120,7 @@ void print_json(const std::string& path, const ParameterSpace& space, std::ostre
   }
   nlohmann::ordered_json document;
   document["file"] = path;
+  document["derived"] = is_derived(space);
   document["dimensions"] = std::move(dimensions);
   // Invalid UTF-8 (a file name, a choice) is replaced rather than thrown on.
   out << document.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
@@ -113,12 +128,20 @@ void print_json(const std::string& path, const ParameterSpace& space, std::ostre
 
 }  // namespace
 
-int run_space(const std::string& path, bool json, std::ostream& out, std::ostream& err) {
+int run_space(const std::string& path, bool json, const MutationCommandOptions& mutation,
+              std::ostream& out, std::ostream& err) {
+  const MutationSizesOrError sizes = mutation_sizes(mutation);
+  if (!sizes.error.empty()) {
+    err << "scenfuzz: error: " << sizes.error << "\n";
+    return kExitUsage;
+  }
   std::optional<SourceFile> file = read_input(path, err);
   if (!file) return kExitBadInput;
-  const ScenarioParse result = parse_scenario_file(*file);
+  ScenarioParse result = parse_scenario_file(*file);
   err << format_diagnostics(*file, result.diagnostics);
   if (!result.ok()) return kExitBadInput;
+  if (searched_by_mutation(result.scenario))
+    result.scenario = derive_mutation_space(result.scenario, sizes.sizes);
 
   const ParameterSpace space = parameter_space(result.scenario);
   if (json)

@@ -1,6 +1,7 @@
 // One dimension of a logical scenario's search space, as the user wrote it.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,9 @@ struct Parameter {
   // The whole range construct in the source (`range(1, 10)`, or `range(a, b) & (c, d)` for a
   // coordinate offset, whose x and y parameters share it): what a concrete scenario replaces.
   SourceLocation location;
+  // Set when scenfuzz derived the parameter around a concrete file's value (mutation,
+  // sampler/mutation_space.hpp): that value, which `location` then spans.
+  std::optional<double> origin;
 
   bool operator==(const Parameter&) const = default;
 };

@@ -13,7 +13,8 @@ ParameterSpace parameter_space(const ScenarioTemplate& scenario) {
   ParameterSpace space;
   space.dimensions.reserve(scenario.parameters.size());
   for (const Parameter& p : scenario.parameters)
-    space.dimensions.push_back({p.name, p.kind, p.lower, p.upper, p.unit, p.choices, p.location});
+    space.dimensions.push_back(
+        {p.name, p.kind, p.lower, p.upper, p.unit, p.choices, p.location, p.origin});
   return space;
 }
 

@@ -2,6 +2,7 @@
 // between the unit cube [0,1]^d that search strategies work in and the parameters' own values.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -21,6 +22,7 @@ struct Dimension {
   std::string unit;
   std::vector<std::string> choices;  // discrete only
   SourceLocation location;           // the range construct in the user's file
+  std::optional<double> origin;      // derived by mutation: the concrete value it varies
 
   bool operator==(const Dimension&) const = default;
 };
