@@ -177,15 +177,37 @@ TEST_F(CliTest, SpacePrintsJson) {
   EXPECT_EQ(speed.at("column"), range_line.find("range(") + 1) << "the range construct";
 }
 
-TEST_F(CliTest, SpaceOfAConcreteScenario) {
+TEST_F(CliTest, SpaceOfAConcreteScenarioIsDerivedAroundItsValues) {
   const std::string path = write("concrete.avu", concrete_scenario());
   const Outcome table = scenfuzz({"space", path});
   EXPECT_EQ(table.exit_code, 0) << table.err;
-  EXPECT_EQ(table.out, "no parameters: the scenario is concrete\n");
-  const Outcome json = scenfuzz({"space", "--json", path});
+  EXPECT_EQ(table.out.rfind("derived: ", 0), 0u) << table.out;
+  EXPECT_NE(table.out.find("npc1.init.speed"), std::string::npos) << table.out;
+  const Outcome json = scenfuzz({"space", "--json", "--mutate", "speed=2", path});
   EXPECT_EQ(json.exit_code, 0) << json.err;
   const nlohmann::json document = nlohmann::json::parse(json.out);
-  EXPECT_EQ(document.at("dimensions"), nlohmann::json::array());
+  EXPECT_EQ(document.at("derived"), true);
+  const nlohmann::json* speed = nullptr;
+  for (const nlohmann::json& dimension : document.at("dimensions"))
+    if (dimension.at("name") == "npc1.init.speed") speed = &dimension;
+  ASSERT_NE(speed, nullptr) << json.out;
+  EXPECT_EQ(speed->at("value"), 7.5);
+  EXPECT_EQ(speed->at("lower"), 5.5);
+  EXPECT_EQ(speed->at("upper"), 9.5);
+  // With every kind kept as written, nothing is left to search.
+  std::vector<std::string> none = {"space"};
+  for (const char* kind :
+       {"position", "waypoint", "lateral", "heading", "speed", "weather", "time"})
+    none.insert(none.end(), {"--mutate", std::string(kind) + "=0"});
+  none.push_back(path);
+  const Outcome kept = scenfuzz(none);
+  EXPECT_EQ(kept.exit_code, 0) << kept.err;
+  EXPECT_EQ(kept.out,
+            "no parameters: the scenario is concrete and none of its values is mutated "
+            "(--mutate)\n");
+  const Outcome bad = scenfuzz({"space", "--mutate", "speed=fast", path});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--mutate speed=fast"), std::string::npos) << bad.err;
 }
 
 TEST_F(CliTest, SpaceOfABadFileReportsErrorsAndPrintsNoSpace) {
