@@ -16,12 +16,13 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "fuzz/seed_paths.hpp"
 #include "fuzz/evaluator.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/search_strategy.hpp"
+#include "fuzz/seed_paths.hpp"
 #include "lang/number_format.hpp"
 #include "lang/source_file.hpp"
+#include "sampler/mutation_space.hpp"
 
 namespace scenfuzz {
 
@@ -287,7 +288,7 @@ struct Reader {
   void read_search(const toml::table& root) {
     const toml::table* search = table(root, "search");
     if (search == nullptr) return;
-    check_keys(*search, "[search]", {"algo", "seed", "jobs"});
+    check_keys(*search, "[search]", {"algo", "seed", "jobs", "mutate"});
     if (const toml::node* algo = search->get("algo")) {
       if (auto name = algorithm(*algo, "search.algo")) config.search.algorithm = *name;
     }
@@ -300,6 +301,19 @@ struct Reader {
     if (const toml::node* jobs = search->get("jobs")) {
       if (auto value = integer(*jobs, "search.jobs", 0, static_cast<std::int64_t>(kMaxJobs)))
         config.search.jobs = static_cast<std::size_t>(*value);
+    }
+    if (const toml::node* mutate = search->get("mutate")) read_mutate(*mutate);
+  }
+
+  // `mutate = ["speed=2", ...]`, each item as a --mutate option.
+  void read_mutate(const toml::node& node) {
+    auto items = strings(node, "search.mutate");
+    if (!items) return;
+    MutationSizes sizes;
+    for (const auto& [item, where] : *items) {
+      if (std::optional<std::string> problem = apply_mutation_option(item, sizes))
+        error(where->source(), "'search.mutate': " + *problem);
+      config.search.mutate.push_back(item);
     }
   }
 

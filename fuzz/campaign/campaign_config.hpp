@@ -18,9 +18,10 @@ namespace scenfuzz {
 
 // The search options every seed gets unless its [[seed]] table overrides them.
 struct CampaignSearchDefaults {
-  std::string algorithm = "ga";  // as --algo: ga, random, halton, lhs, nlopt:NAME
-  std::uint64_t seed = 0;        // as --seed
-  std::size_t jobs = 0;          // as -j; 0 means all cores
+  std::string algorithm = "ga";     // as --algo: ga, random, halton, lhs, nlopt:NAME
+  std::uint64_t seed = 0;           // as --seed
+  std::size_t jobs = 0;             // as -j; 0 means all cores
+  std::vector<std::string> mutate;  // as --mutate: how concrete seeds are mutated (checked)
 };
 
 // A [[seed]] table: options for one seed file.

@@ -4,11 +4,12 @@
 #include <filesystem>
 
 #include "fuzz/campaign/content_hash.hpp"
-#include "fuzz/seed_paths.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/report_format.hpp"
+#include "fuzz/seed_paths.hpp"
 #include "lang/number_format.hpp"
 #include "physics/map/map_source.hpp"
+#include "sampler/mutation_space.hpp"
 
 namespace scenfuzz {
 
@@ -31,6 +32,9 @@ std::optional<LoadedSeed> load_seed(const CampaignConfig& config,
   seed.path = path;
   std::optional<ScenarioFile> input = read_scenario(path, "search", err);
   if (!input) return std::nullopt;
+  if (searched_by_mutation(input->scenario))
+    input->scenario =
+        derive_mutation_space(input->scenario, mutation_sizes({config.search.mutate}).sizes);
   seed.input = std::make_unique<ScenarioFile>(std::move(*input));
   seed.content_hash = content_hash(seed.input->file.text());
   apply_scenario_overrides(simulation, seed.input->scenario);
@@ -47,8 +51,7 @@ std::optional<LoadedSeed> load_seed(const CampaignConfig& config,
   searchable = !seed.evaluator->space().dimensions.empty();
   if (!searchable) {
     err << "scenfuzz: warning: seed '" << path
-        << "' has no parameter ranges: a concrete scenario cannot be searched yet; it is left "
-           "out of the run\n";
+        << "' has neither parameter ranges nor values to mutate: it is left out of the run\n";
     return seed;
   }
   const SetupProbe probe =

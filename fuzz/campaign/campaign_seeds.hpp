@@ -1,7 +1,7 @@
 // A campaign's seeds as a run searches them: every seed file read, parsed and set up once (all
 // of them checked before anything runs), and the arms of the run, one per searchable seed and
-// spec. A concrete seed (no parameter ranges) cannot be searched yet: it is named in a warning
-// and left out.
+// spec. A concrete seed (no parameter ranges) is searched by mutation ([search] mutate); one with
+// nothing to mutate either is named in a warning and left out.
 #pragma once
 
 #include <cstddef>

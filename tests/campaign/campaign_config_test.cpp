@@ -175,6 +175,8 @@ std::vector<Malformed> malformed_files() {
       {"an unknown algorithm", kSeeds + kBudget + "[search]\nalgo = \"gaa\"\n", "5:8",
        "'search.algo': unknown search algorithm 'gaa'; expected ga, random, halton, lhs or "
        "nlopt:NAME"},
+      {"a bad mutation size", kSeeds + kBudget + "[search]\nmutate = [\"speed=1\", \"colour=2\"]\n",
+       "5:22", "'search.mutate': --mutate: expected KIND=SIZE with KIND one of position"},
       {"an unknown NLopt algorithm", kSeeds + kBudget + "[search]\nalgo = \"nlopt:XX_FOO\"\n",
        "5:8", "'search.algo': NLopt algorithm 'XX_FOO' is unknown or not supported"},
       {"a fractional job count", kSeeds + kBudget + "[search]\njobs = 1.5\n", "5:8",

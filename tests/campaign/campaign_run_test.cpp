@@ -1,13 +1,14 @@
 // `scenfuzz campaign run`, in process: a small campaign runs end to end and fills its database and
 // DIR/modes/; a second run replays the known modes (injected verdicts, and the campaign's own
 // replay) and moves their statuses; -j 1 and -j 2 leave the same database; a seed with errors stops
-// everything before it runs, a concrete one is left out with a warning; a wall-time budget ends the
-// run.
+// everything before it runs, a concrete one is searched by mutation, one with nothing to mutate is
+// left out with a warning; a wall-time budget ends the run.
 #include "fuzz/campaign/campaign_run.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -194,21 +195,44 @@ TEST_F(CampaignRunTest, ASeedWithErrorsStopsTheRunBeforeAnything) {
   EXPECT_FALSE(fs::exists(folder / "searches"));
 }
 
-TEST_F(CampaignRunTest, AConcreteSeedIsLeftOutWithAWarning) {
-  const std::string concrete =
-      write("concrete.avu",
-            "ego_vehicle = AV((\"east_0\"->30, , 15), (\"east_0\"->450), (\"Lincoln2017MKZ\", "
-            "white));\n"
-            "other_start = (\"west_0\"->100, , 10);\n"
-            "other = Vehicle(other_start, uniform(other_start), (\"west_0\"->495), (\"Sedan\", "
-            "red));\n"
-            "scenario = CreateScenario{load(\"straight\"); ego_vehicle; {other}; {}; {};};\n"
-            "Trace trace = EXE(scenario);\n");
+// A concrete scenario's values, on the built-in straight road.
+std::string concrete_seed_text() {
+  return "ego_vehicle = AV((\"east_0\"->30, , 15), (\"east_0\"->450), (\"Lincoln2017MKZ\", "
+         "white));\n"
+         "other_start = (\"west_0\"->100, , 10);\n"
+         "other = Vehicle(other_start, uniform(other_start), (\"west_0\"->495), (\"Sedan\", "
+         "red));\n"
+         "scenario = CreateScenario{load(\"straight\"); ego_vehicle; {other}; {}; {};};\n"
+         "Trace trace = EXE(scenario);\n";
+}
+
+TEST_F(CampaignRunTest, AConcreteSeedIsSearchedByMutation) {
+  const std::string concrete = write("concrete.avu", concrete_seed_text());
   const fs::path folder =
       campaign("c", campaign_toml({concrete, source_file("corpora/avunit/cut_in_straight.avu")},
                                   "simulations = 64"));
+  const int status = run(folder);
+  EXPECT_TRUE(status == kExitSuccess || status == kExitViolated) << err_.str();
+  auto db = open(folder);
+  ASSERT_EQ(db->list_seeds().size(), 2u);
+  std::set<std::int64_t> searched;
+  for (const CampaignSearch& search : db->list_searches()) searched.insert(search.record.seed_id);
+  EXPECT_EQ(searched.size(), 2u) << "both seeds were searched";
+}
+
+TEST_F(CampaignRunTest, ASeedWithNothingToMutateIsLeftOutWithAWarning) {
+  const std::string concrete = write("concrete.avu", concrete_seed_text());
+  std::string mutate = "mutate = [";
+  for (const char* kind :
+       {"position", "waypoint", "lateral", "heading", "speed", "weather", "time"})
+    mutate += "\"" + std::string(kind) + "=0\", ";
+  mutate += "]\n";
+  const fs::path folder =
+      campaign("c", campaign_toml({concrete, source_file("corpora/avunit/cut_in_straight.avu")},
+                                  "simulations = 64", mutate));
   EXPECT_EQ(run(folder), kExitViolated) << err_.str();
-  EXPECT_NE(err_.str().find("warning: seed '" + concrete + "' has no parameter ranges"),
+  EXPECT_NE(err_.str().find("warning: seed '" + concrete +
+                            "' has neither parameter ranges nor values to mutate"),
             std::string::npos)
       << err_.str();
   auto db = open(folder);
