@@ -90,11 +90,14 @@ void print_cmin_report(const CminResult& result, const std::string& out_dir, std
     if (seed.verdict == CminVerdict::error)
       out << "error    " << seed.path << ": " << first_line(seed.coverage.error) << "\n";
   }
+  std::size_t reused = 0;
+  for (const CminSeed& seed : result.seeds) reused += seed.reused ? 1 : 0;
   out << "cmin: kept " << result.kept.size() << " of " << result.seeds.size() << " seeds ("
       << result.seeds.size() - result.kept.size() - errors << " dropped, " << errors
-      << " with errors), covering " << result.features << " features; " << result.covered_now
-      << " covered by this run, the others read from the control file; table in '" << out_dir
-      << "/cmin.json'\n";
+      << " with errors), covering " << result.features << " features, in '" << out_dir
+      << "' (the table: cmin.json)";
+  if (reused > 0) out << "; " << reused << " seeds' coverage read from cmin.control";
+  out << "\n";
   if (result.problem == CminProblem::nothing_covered)
     err << "scenfuzz: error: " << result.message << "\n";
 }

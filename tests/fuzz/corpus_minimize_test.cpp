@@ -27,6 +27,7 @@
 #include "fuzz/cli.hpp"
 #include "fuzz/cmin_control_file.hpp"
 #include "fuzz/cmin_table.hpp"
+#include "fuzz/folder_lock.hpp"
 #include "fuzz/set_cover.hpp"
 #include "tests/fuzz/command_runner.hpp"
 
@@ -370,6 +371,20 @@ TEST_F(CorpusMinimizeTest, AnOutputFolderThatIsNotCminsOrOverlapsAnInputIsRefuse
   EXPECT_NE(err.str().find("scenfuzz: error: the output folder"), std::string::npos);
 }
 
+TEST_F(CorpusMinimizeTest, AnOutputFolderInUseByAnotherRunIsRefused) {
+  planted_corpus();
+  FolderLock other;
+  FolderLockRefusal refusal;
+  ASSERT_TRUE(other.acquire(dir_ / "out", "cmin.lock", refusal)) << refusal.error;
+  PlantedCover cover;
+  const CminResult result = minimize_corpus(options("out"), cover.function());
+  EXPECT_EQ(result.problem, CminProblem::output_folder);
+  EXPECT_NE(result.message.find("is in use by another run (process " + std::to_string(::getpid())),
+            std::string::npos)
+      << result.message;
+  EXPECT_EQ(cover.calls(), 0u);
+}
+
 // The control file of a run killed after `lines` records: the records in the order a parallel
 // run wrote them and half of the next line, and nothing else in the output folder.
 void cut_short(const fs::path& out, std::size_t lines) {
@@ -444,6 +459,13 @@ TEST_F(CorpusMinimizeTest, AnEditedSeedIsCoveredAgainAndOnlyIt) {
   const CminResult result = minimize_corpus(options("out"), cover.function());
   ASSERT_EQ(result.problem, CminProblem::none) << result.message;
   EXPECT_EQ(cover.calls_by_path(), (std::map<std::string, int>{{corpus("subset.avu"), 1}}));
+  std::ostringstream out, err;
+  print_cmin_report(result, "out", out, err);
+  EXPECT_NE(out.str().find("kept 4 of 11 seeds (7 dropped, 0 with errors), covering 7 features, "
+                           "in 'out' (the table: cmin.json); 10 seeds' coverage read from "
+                           "cmin.control"),
+            std::string::npos)
+      << out.str();
   EXPECT_EQ(slurp(dir_ / "out/subset.avu"), "features a novel\n");
   // The same as a run from scratch on the edited corpus.
   PlantedCover fresh;
