@@ -38,6 +38,10 @@ Json dropped_json(const CminSeed& seed) {
           {"reason", drop_reason(seed)}};
 }
 
+std::string counted(std::size_t count, const std::string& noun) {
+  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 }  // namespace
@@ -82,7 +86,8 @@ void print_cmin_report(const CminResult& result, const std::string& out_dir, std
   for (std::size_t k : result.kept) {
     const CminSeed& seed = result.seeds[k];
     out << "kept     " << seed.path << " -> " << seed.output << ": "
-        << seed.coverage.features.size() << " features, " << seed.new_features.size() << " new\n";
+        << counted(seed.coverage.features.size(), "feature") << ", " << seed.new_features.size()
+        << " new\n";
   }
   for (const CminSeed& seed : result.seeds) {
     if (seed.verdict == CminVerdict::dropped)
@@ -94,7 +99,7 @@ void print_cmin_report(const CminResult& result, const std::string& out_dir, std
   for (const CminSeed& seed : result.seeds) reused += seed.reused ? 1 : 0;
   out << "cmin: kept " << result.kept.size() << " of " << result.seeds.size() << " seeds ("
       << result.seeds.size() - result.kept.size() - errors << " dropped, " << errors
-      << " with errors), covering " << result.features << " features, in '" << out_dir
+      << " with errors), covering " << counted(result.features, "feature") << ", in '" << out_dir
       << "' (the table: cmin.json)";
   if (reused > 0) out << "; " << reused << " seeds' coverage read from cmin.control";
   out << "\n";
