@@ -123,4 +123,18 @@ struct BenchCommandOptions {
 // kExitBadInput for a scenario that cannot be read.
 int run_bench(const BenchCommandOptions& options, std::ostream& out, std::ostream& err);
 
+struct CminCommandOptions {
+  std::vector<std::string> inputs;  // IN...: scenario files and folders of them
+  std::string out_dir;              // -o: where the kept seeds, cmin.json and cmin.control go
+  std::size_t jobs = 0;             // -j: seeds covered at once; 0 = cores
+  std::uint64_t seed = 0;           // --seed: the perception seed and the logical seeds' sample
+  SimulationCommandOptions simulation;
+};
+
+// `scenfuzz cmin IN... -o OUT_DIR`: copies the smallest subset of the seeds that keeps their
+// behaviour coverage into OUT_DIR (fuzz/corpus_minimize.hpp), with cmin.json saying why each seed
+// was kept or dropped; resumable after a kill from OUT_DIR/cmin.control. kExitSuccess, or
+// kExitBadInput when OUT_DIR cannot be used, no seed could be covered or it was interrupted.
+int run_cmin(const CminCommandOptions& options, std::ostream& out, std::ostream& err);
+
 }  // namespace scenfuzz
