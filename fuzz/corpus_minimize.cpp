@@ -20,6 +20,7 @@
 #include "fuzz/cmin_control_file.hpp"
 #include "fuzz/cmin_output_folder.hpp"
 #include "fuzz/cmin_table.hpp"
+#include "fuzz/content_hash.hpp"
 #include "fuzz/seed_paths.hpp"
 #include "fuzz/set_cover.hpp"
 
@@ -28,18 +29,6 @@ namespace scenfuzz {
 namespace fs = std::filesystem;
 
 namespace {
-
-// 64-bit FNV-1a as 16 hex digits, as a campaign names its seeds (fuzz/campaign/content_hash).
-std::string content_hash(const std::string& bytes) {
-  std::uint64_t state = 0xCBF29CE484222325ull;
-  for (unsigned char byte : bytes) {
-    state ^= byte;
-    state *= 0x100000001B3ull;
-  }
-  char buffer[17];
-  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(state));
-  return buffer;
-}
 
 bool read_bytes(const std::string& path, std::string& bytes, std::string& error) {
   std::ifstream in(path, std::ios::binary);

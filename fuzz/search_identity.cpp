@@ -1,31 +1,14 @@
 #include "fuzz/search_identity.hpp"
 
-#include <cstdint>
-#include <cstdio>
+#include "fuzz/content_hash.hpp"
 
 namespace scenfuzz {
-
-namespace {
-
-// FNV-1a, 64 bits: enough to tell an edited scenario file from the one a journal was made of.
-std::string text_hash(const std::string& text) {
-  std::uint64_t state = 0xCBF29CE484222325ull;
-  for (unsigned char byte : text) {
-    state ^= byte;
-    state *= 0x100000001B3ull;
-  }
-  char buffer[17];
-  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(state));
-  return buffer;
-}
-
-}  // namespace
 
 nlohmann::json search_identity(const FuzzCommandOptions& options, const SourceFile& file) {
   const SimulationCommandOptions& simulation = options.simulation;
   return {{"version", SCENFUZZ_VERSION},
           {"scenario", file.path()},
-          {"scenario_hash", text_hash(file.text())},
+          {"scenario_hash", content_hash(file.text())},
           {"algorithm", options.algorithm},
           {"seed", options.seed},
           {"budget", options.budget},

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/seed_paths.hpp"

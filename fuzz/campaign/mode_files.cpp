@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "fuzz/atomic_file.hpp"
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 #include "fuzz/output_folder.hpp"
 
 namespace scenfuzz {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "fuzz/campaign/campaign_db.hpp"
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 
 namespace scenfuzz {
 namespace {

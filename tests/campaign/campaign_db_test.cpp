@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 
 namespace scenfuzz {
 namespace {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "fuzz/campaign/budget_schedule.hpp"
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 #include "fuzz/campaign/scenario_replay.hpp"
 #include "fuzz/cli.hpp"
 #include "tests/campaign/campaign_fixture.hpp"

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 #include "fuzz/campaign/replay_status.hpp"
 #include "tests/fuzz/command_runner.hpp"
 

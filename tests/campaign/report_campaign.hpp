@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "fuzz/campaign/campaign_db.hpp"
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 #include "tests/fuzz/command_runner.hpp"
 
 namespace scenfuzz::test {

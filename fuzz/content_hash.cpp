@@ -1,5 +1,5 @@
 // FNV-1a (Fowler, Noll, Vo), 64 bits: offset basis 0xcbf29ce484222325, prime 0x100000001b3.
-#include "fuzz/campaign/content_hash.hpp"
+#include "fuzz/content_hash.hpp"
 
 #include <cstdio>
 #include <fstream>

@@ -1,7 +1,7 @@
-// The content hash that names a campaign's seeds and content-addressed files: 64-bit FNV-1a of
-// the exact bytes, as 16 lower-case hex digits. Stable across machines, builds and versions (the
-// database keeps these names), not cryptographic: it tells an edited file from the original, it
-// does not defend against someone forging one.
+// The content hash that names seeds (campaigns, cmin, a search's identity) and content-addressed
+// files: 64-bit FNV-1a of the exact bytes, as 16 lower-case hex digits. Stable across machines,
+// builds and versions (the database keeps these names), not cryptographic: it tells an edited file
+// from the original, it does not defend against someone forging one.
 #pragma once
 
 #include <cstdint>
