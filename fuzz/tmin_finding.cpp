@@ -108,6 +108,7 @@ std::optional<RunCommandOptions> replay_options(const std::vector<std::string>& 
 // One replay of a scenario as the search judges it.
 struct Replay {
   std::string mode;  // the failure-mode signature; empty: it did not fail
+  std::string atom;  // the violated atom as the mode names it (an ego failure: empty)
   std::string why;   // why it could not be judged, when it could not
   std::string spec;  // the violated spec's name (an ego failure: empty)
   TminCheck check;   // same_failure left for the caller
@@ -132,8 +133,10 @@ Replay replay(const SourceFile& file, ScenarioTemplate scenario, const RunComman
     if (outcome.trace->ego_failure) result.check.failure_time = outcome.trace->ego_failure->time;
     const std::vector<std::size_t> order = violation_order(outcome.verdicts);
     if (!order.empty()) {
-      result.spec = outcome.verdicts[order.front()].name;
-      result.check.failure_time = outcome.verdicts[order.front()].time;
+      const SpecVerdict& verdict = outcome.verdicts[order.front()];
+      result.spec = verdict.name;
+      result.check.failure_time = verdict.time;
+      if (outcome.map) result.atom = describe_failure(*outcome.trace, *outcome.map, verdict).atom;
     }
   } catch (const std::exception& error) {
     // A map that cannot be loaded, a spec that cannot be judged: this candidate does not fail.
@@ -157,11 +160,12 @@ std::optional<Printed> print_and_parse(const std::string& path, const std::strin
   return Printed{std::move(file), std::move(parsed.scenario)};
 }
 
-// A mode without its first field (the atom as written): the finding's own spelling of an atom
-// and canonical AVUnit's may differ ("dis_lead > 0.5" and the expression it names).
-std::string mode_beyond_atom(const std::string& mode) {
-  const std::size_t bar = mode.find(" | ");
-  return bar == std::string::npos ? mode : mode.substr(bar);
+// A replay's mode without the atom it starts with: the finding's own spelling of an atom and
+// canonical AVUnit's may differ ("dis_lead > 0.5" and the expression it names), and an atom may
+// hold " | " itself.
+std::string mode_beyond_atom(const Replay& replay) {
+  if (replay.atom.empty() || !replay.mode.starts_with(replay.atom)) return replay.mode;
+  return replay.mode.substr(replay.atom.size());
 }
 
 fs::path default_out_path(const std::string& input) {
@@ -252,7 +256,7 @@ TminResult minimize_finding(const std::string& finding_path, const TminOptions& 
   std::optional<Printed> canonical = print_and_parse(result.out_path, "", start.scenario);
   const Replay first =
       canonical ? replay(canonical->file, canonical->scenario, start.run, std::nullopt) : Replay{};
-  if (first.mode.empty() || mode_beyond_atom(first.mode) != mode_beyond_atom(start.original.mode) ||
+  if (first.mode.empty() || mode_beyond_atom(first) != mode_beyond_atom(start.original) ||
       first.spec != start.original.spec) {
     result.error = "'" + finding_path + "' printed as canonical AVUnit " +
                    (first.mode.empty() ? std::string("does not fail") : "fails as " + first.mode) +

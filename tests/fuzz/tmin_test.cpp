@@ -303,6 +303,31 @@ TEST_F(TminCommandTest, MinimisesAFindingOfTheSearchWithItsSeed) {
   EXPECT_EQ(test::slurp(out_path), first);
 }
 
+// Canonical AVUnit writes named terms out in full ("d" becomes the distance it names), and the
+// mode's atom here is a disjunction, " | " inside it: the mode is kept but for the atom's
+// spelling, and the output replays to the mode it records.
+TEST_F(TminCommandTest, ANamedAtomIsWrittenOutAndTheRestOfTheModeKept) {
+  std::string named = planted("12.345678");
+  const std::string spec = "G (dis(trace[ego], trace[truth][rammer]) > 0.5)";
+  named.replace(named.find(spec), spec.size(), "G ((d > 0.5) | (d > 1000))");
+  named.replace(named.find("no_rammer_collision = G"), 0,
+                "d = dis(trace[ego], trace[truth][rammer]);\n");
+  const std::string input = write("named.avu", named);
+  const std::string out_path = (dir_ / "named.min.avu").string();
+  Outcome tmin, replay;
+  minimise_and_replay(input, out_path, tmin, replay);
+  EXPECT_NE(tmin.out.find("actors 4 -> 1,"), std::string::npos) << tmin.out;
+  EXPECT_EQ(mode_line(test::slurp(out_path)), mode_line(tmin.out));
+  EXPECT_TRUE(mode_line(tmin.out).starts_with(
+      "failure mode: no_rammer_collision: dis(trace[ego], trace[truth][rammer]) > 0.5 | "))
+      << tmin.out;
+  EXPECT_NE(mode_line(tmin.out).find(" | car rammer | other | cruising | straight | rear-front"),
+            std::string::npos)
+      << tmin.out;
+  EXPECT_EQ(replay.exit_code, 1) << replay.out << replay.err;
+  EXPECT_NE(replay.out.find("ego rear / rammer front"), std::string::npos) << replay.out;
+}
+
 TEST_F(TminCommandTest, BadInputIsExitTwoWithAClearMessage) {
   const Outcome missing = scenfuzz({"tmin", (dir_ / "missing.avu").string()});
   EXPECT_EQ(missing.exit_code, 2);
