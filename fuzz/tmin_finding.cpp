@@ -212,6 +212,12 @@ struct Start {
 std::string load(const std::string& path, Start& start) {
   start.file = read_source_file(path);
   if (!start.file) return "cannot read '" + path + "'";
+  // The output is canonical AVUnit, and lang/wmg prints its own syntax tree, not the IR: a WMG
+  // scenario printed as AVUnit loses its manoeuvres and road parameters.
+  if (is_wmg_file(path))
+    return "'" + path +
+           "' is WMG SDL: tmin writes AVUnit, which cannot say what a WMG SDL scenario says "
+           "(manoeuvre phases, road parameters), so WMG SDL findings cannot be minimised yet";
   ScenarioParse parsed = parse_scenario_file(*start.file);
   if (!parsed.ok())
     return "'" + path + "' is not a scenario scenfuzz can read:\n" +
@@ -232,10 +238,11 @@ std::string load(const std::string& path, Start& start) {
   if (!run) return "'" + path + "': " + error;
   start.run = std::move(*run);
   start.original = replay(*start.file, start.scenario, start.run, std::nullopt);
+  if (start.original.mode.empty() && !start.original.why.empty())
+    return "'" + path + "' cannot be replayed and judged: " + start.original.why;
   if (start.original.mode.empty())
-    return "'" + path + "' does not fail when replayed" +
-           (start.original.why.empty() ? "" : " (" + start.original.why + ")") +
-           ": nothing to minimise";
+    return "'" + path + "' does not fail when replayed with seed " +
+           std::to_string(start.run.seed) + ": nothing to minimise";
   if (!start.header.mode.empty() && start.header.mode != start.original.mode)
     return "'" + path + "' no longer fails as its header says (" + start.header.mode +
            "): it replays as " + start.original.mode;

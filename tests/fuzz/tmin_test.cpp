@@ -343,13 +343,26 @@ TEST_F(TminCommandTest, BadInputIsExitTwoWithAClearMessage) {
   never_violated.replace(never_violated.find("> 0.5"), 5, "> -1");
   const Outcome passing = scenfuzz({"tmin", write("passing.avu", never_violated)});
   EXPECT_EQ(passing.exit_code, 2) << passing.out;
-  EXPECT_NE(passing.err.find("does not fail when replayed"), std::string::npos) << passing.err;
+  EXPECT_NE(passing.err.find("does not fail when replayed with seed 0"), std::string::npos)
+      << passing.err;
 
   // A header whose mode the scenario no longer shows.
   const Outcome stale = scenfuzz(
       {"tmin", write("stale.avu", "// failure mode: something else\n" + planted("12.345678"))});
   EXPECT_EQ(stale.exit_code, 2);
   EXPECT_NE(stale.err.find("no longer fails as its header says"), std::string::npos) << stale.err;
+
+  const Outcome wmg = scenfuzz({"tmin", test::source_file("corpora/wmg/cut_in.sdl")});
+  EXPECT_EQ(wmg.exit_code, 2);
+  EXPECT_NE(wmg.err.find("is WMG SDL: tmin writes AVUnit"), std::string::npos) << wmg.err;
+
+  std::string unknown_map = planted("12.345678");
+  unknown_map.replace(unknown_map.find("\"straight\""), 10, "\"no_such_map\"");
+  const Outcome no_map = scenfuzz({"tmin", write("no_map.avu", unknown_map)});
+  EXPECT_EQ(no_map.exit_code, 2);
+  EXPECT_NE(no_map.err.find("cannot be replayed and judged: map 'no_such_map' not found"),
+            std::string::npos)
+      << no_map.err;
 
   const Outcome garbage = scenfuzz({"tmin", write("garbage.avu", "this is not AVUnit\n")});
   EXPECT_EQ(garbage.exit_code, 2);
