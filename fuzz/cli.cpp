@@ -185,6 +185,31 @@ void declare_convert(CLI::App& app, Action& action) {
   });
 }
 
+void declare_tmin(CLI::App& app, Action& action) {
+  auto options = std::make_shared<TminCommandOptions>();
+  CLI::App* tmin = app.add_subcommand(
+      "tmin",
+      "Minimise a failing scenario while the same failure mode persists: remove actors, "
+      "waypoints and obstacles, neutral weather and noon, fewer digits, a shorter run");
+  tmin->add_option("FINDING", options->path,
+                   "A finding the search wrote (replayed with its header's seed and options), or "
+                   "a concrete scenario (replayed as 'scenfuzz run' does)")
+      ->required()
+      ->type_name("");
+  tmin->add_option("-o,--out", options->out_path,
+                   "Write the minimised scenario (AVUnit) here (default FINDING's folder, "
+                   "<name>.min.avu)")
+      ->type_name("FILE");
+  tmin->footer(
+      "Exit status: 0 written; 2 a file that cannot be read, is not a concrete scenario, or no "
+      "longer fails the same way when replayed. docs/search.md describes the steps.");
+  tmin->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      return run_tmin(*options, out, err);
+    };
+  });
+}
+
 // `bench`'s options, shared by its three subcommands.
 struct BenchLine {
   BenchCommandOptions options;
@@ -390,7 +415,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   Action action;
   for (void (*declare)(CLI::App&, Action&) :
        {declare_check, declare_space, declare_map, declare_run, declare_stl, declare_convert,
-        declare_bench, declare_campaign})
+        declare_tmin, declare_bench, declare_campaign})
     declare(app, action);
   try {
     app.parse(argc, argv);

@@ -103,6 +103,17 @@ int run_space(const std::string& path, bool json, const MutationCommandOptions& 
 // Exit status kExitSuccess (no finding), kExitViolated (findings), kExitBadInput / kExitUsage.
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err);
 
+struct TminCommandOptions {
+  std::string path;      // FINDING: a finding of the search, or a plain concrete scenario
+  std::string out_path;  // -o; empty: beside it, <name>.min.avu
+};
+
+// `scenfuzz tmin FINDING [-o OUT]`: reduces the failing scenario while the same failure mode
+// persists (fuzz/tmin_finding.hpp) and writes it; what changed and the replay command go to
+// `out`. kExitSuccess when written; kExitBadInput (message on `err`) for a file that cannot be
+// read, is not a concrete scenario or does not fail the same way when replayed.
+int run_tmin(const TminCommandOptions& options, std::ostream& out, std::ostream& err);
+
 enum class BenchKind { falsification, chasing_cars, parallel };
 
 struct BenchCommandOptions {

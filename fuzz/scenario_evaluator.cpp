@@ -69,6 +69,15 @@ std::string failure_mode_signature(const ScenarioRun& run) {
   return failure_mode_key(mode);
 }
 
+std::string run_signature(const ScenarioRun& run) {
+  const bool judged = run.infeasible.empty() && run.failure.empty();
+  if (judged) return failure_mode_signature(run);
+  if (!run.trace || !run.trace->ego_failure || !is_finding(*run.trace->ego_failure)) return "";
+  const EgoFailure& failure = *run.trace->ego_failure;
+  return std::string(ego_failure_kind_name(failure.kind)) +
+         (failure.signal.empty() ? "" : " " + failure.signal);
+}
+
 ScenarioEvaluator::ScenarioEvaluator(const SourceFile& file, const ScenarioTemplate& scenario,
                                      MapSearchPath search_path, SimulationOptions simulation)
     : file_(file),
@@ -174,8 +183,7 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
   if (run.trace && run.trace->ego_failure && is_finding(*run.trace->ego_failure)) {
     const EgoFailure& failure = *run.trace->ego_failure;
     evaluation.failure_kind = ego_failure_kind_name(failure.kind);
-    evaluation.signature =
-        evaluation.failure_kind + (failure.signal.empty() ? "" : " " + failure.signal);
+    evaluation.signature = run_signature(run);
   }
   if (!evaluation.judged()) return evaluation;
   for (const SpecVerdict& verdict : run.verdicts) {
@@ -192,7 +200,7 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
     evaluation.responsibility = responsibility_name(run.responsibilities.front().responsibility);
     evaluation.collision_reason = run.responsibilities.front().reason;
   }
-  evaluation.signature = failure_mode_signature(run);
+  evaluation.signature = run_signature(run);
   return evaluation;
 }
 

@@ -88,4 +88,8 @@ bool is_finding(const EgoFailure& failure);
 // violated.
 std::string failure_mode_signature(const ScenarioRun& run);
 
+// The failure mode the search files a run under (Evaluation::signature): for a judged run,
+// failure_mode_signature; for one the ego plugin cut short (is_finding), its kind and signal.
+std::string run_signature(const ScenarioRun& run);
+
 }  // namespace scenfuzz
