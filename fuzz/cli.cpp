@@ -181,6 +181,37 @@ void declare_convert(CLI::App& app, Action& action) {
   });
 }
 
+void declare_coverage(CLI::App& app, Action& action) {
+  auto options = std::make_shared<CoverageCommandOptions>();
+  CLI::App* coverage = app.add_subcommand(
+      "coverage",
+      "Print the behaviour-coverage features a corpus covers (manoeuvres, road features, "
+      "interactions, weather and light, law sub-violations; docs/coverage.md) and which seeds "
+      "cover each");
+  coverage
+      ->add_option("FILE", options->paths,
+                   "Seed scenario files (.avu, .scenest, .sdl) and folders of them")
+      ->required()
+      ->type_name("");
+  coverage->add_flag("--json", options->json, "Print a JSON document instead of tables");
+  add_checked_option(coverage, "-j,--jobs", options->jobs, "N", within(0, kMaxJobs),
+                     "Seeds covered at once; 0 means all cores", "all cores");
+  add_checked_option(coverage, "--seed", options->seed, "N", any_value(),
+                     "Seed of the perception noise and of a logical seed's sample", "");
+  add_simulation_options(coverage, options->simulation);
+  coverage->footer(
+      "A concrete seed is one simulation; a logical seed (with ranges) is simulated at the centre "
+      "of its space and 8 points of a scrambled Halton sequence. Seeds that cannot be covered are "
+      "listed with their errors. The output is the same for any -j. Exit status: 0 when at least "
+      "one seed was covered, 2 when none could be (or a bad command line).");
+  coverage->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      if (!simulation_options_valid(options->simulation, err)) return kExitUsage;
+      return run_coverage(*options, out, err);
+    };
+  });
+}
+
 // `bench`'s options, shared by its three subcommands.
 struct BenchLine {
   BenchCommandOptions options;
@@ -386,7 +417,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   Action action;
   for (void (*declare)(CLI::App&, Action&) :
        {declare_check, declare_space, declare_map, declare_run, declare_stl, declare_convert,
-        declare_bench, declare_campaign})
+        declare_coverage, declare_bench, declare_campaign})
     declare(app, action);
   try {
     app.parse(argc, argv);

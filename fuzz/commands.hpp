@@ -93,6 +93,20 @@ struct FuzzCommandOptions {
 // Exit status kExitSuccess (no finding), kExitViolated (findings), kExitBadInput / kExitUsage.
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err);
 
+struct CoverageCommandOptions {
+  std::vector<std::string> paths;  // FILE|DIR...: scenario files, folders of them
+  bool json = false;               // --json
+  std::size_t jobs = 0;            // -j: seeds covered at once; 0 = all cores
+  std::uint64_t seed = 0;          // --seed: the perception seed and a logical seed's sample
+  SimulationCommandOptions simulation;
+};
+
+// `scenfuzz coverage FILE|DIR...`: the behaviour-coverage features (docs/coverage.md) the corpus
+// covers and which seeds cover each, as a table or JSON on `out`; seeds that cannot be covered
+// are listed with their errors and never stop the run. The same output for any -j. kExitSuccess
+// when at least one seed was covered, kExitBadInput when none could be.
+int run_coverage(const CoverageCommandOptions& options, std::ostream& out, std::ostream& err);
+
 enum class BenchKind { falsification, chasing_cars, parallel };
 
 struct BenchCommandOptions {
