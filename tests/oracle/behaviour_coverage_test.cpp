@@ -13,6 +13,10 @@
 #include "lang/avunit/avunit.hpp"
 #include "oracle/law_coverage.hpp"
 #include "oracle/sub_violations.hpp"
+#include "oracle/trace_signals.hpp"
+#include "physics/map/map_source.hpp"
+#include "physics/simulation/simulation.hpp"
+#include "sampler/parameter_space.hpp"
 #include "tests/oracle/hand_traces.hpp"
 
 namespace scenfuzz {
@@ -336,6 +340,41 @@ TEST(BehaviourCoverageTest, TheThirteenLawsHaveEightyOneSubViolations) {
   const std::optional<std::vector<Formula>> subs = sub_violations(spec.formula);
   ASSERT_TRUE(subs);
   EXPECT_EQ(subs->size(), 81u + 1u);
+}
+
+// The shared law38 example (TrashFuzz's light rules, san_francisco) simulated at its values: its
+// 9 sub-violations are evaluated, and the reached ones are exactly those whose robustness,
+// computed without law_coverage's cache of leaves, is >= 0.
+TEST(BehaviourCoverageTest, TheSharedLaw38ExampleReachesWhatItsRobustnessSays) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();
+  const std::filesystem::path file =
+      test::shared_dir() / "examples" / "scenest" / "trashfuzz__codes_testing__law38.scenest";
+  const std::optional<SourceFile> source = read_source_file(file.string());
+  ASSERT_TRUE(source) << file;
+  const avunit::ParseResult parsed = avunit::parse(*source);
+  ASSERT_TRUE(parsed.ok()) << format_diagnostics(*source, parsed.diagnostics);
+  const std::vector<double> parameters;
+  const RoadMap map = load_scenario_map(
+      parsed.scenario.map, MapSearchPath{{test::shared_dir() / "maps" / "apollo"}}, parameters);
+  Diagnostics diagnostics;
+  const std::optional<SimulationSetup> setup =
+      prepare_simulation(parsed.scenario, parameters, map, 0, diagnostics);
+  ASSERT_TRUE(setup) << format_diagnostics(*source, diagnostics);
+  const Trace trace = simulate(map, *setup, {});
+  const Spec& law = parsed.scenario.specs.at(0);
+  ASSERT_TRUE(is_law_spec(law));
+  const std::optional<std::vector<Formula>> subs = sub_violations(law.formula);
+  ASSERT_TRUE(subs);
+  ASSERT_EQ(subs->size(), 9u);
+  const TraceSignals signals(trace, parsed.scenario, parameters, map);
+  std::vector<std::string> expected;
+  std::string values;
+  for (std::size_t k = 0; k < subs->size(); ++k) {
+    const double robustness = robustness_signal((*subs)[k], signals.source()).front();
+    values += std::to_string(robustness) + " ";
+    if (robustness >= 0) expected.push_back(law_feature_name(law.name, k + 1, subs->size()));
+  }
+  EXPECT_EQ(law_coverage(parsed.scenario, parameters, trace, map), expected) << values;
 }
 
 }  // namespace
