@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "oracle/failure_mode.hpp"
 #include "oracle/pair_geometry.hpp"
@@ -134,6 +135,23 @@ void record(Encounter& encounter, std::size_t sector, double gap, double closing
   encounter.most_closing[sector] = std::max(encounter.most_closing[sector], closing);
 }
 
+// The radius of a circle round the actor's body about its centre.
+double body_radius(const TraceActor& actor) {
+  return actor.shape == BodyShape::box ? std::hypot(actor.length, actor.width) / 2
+                                       : actor.length / 2;
+}
+
+// The gap between the bodies at sample i, or nullopt when it cannot lower the sector's least gap
+// (`lower` bounds it from below) and the bodies are surely within reach (the centres' distance
+// bounds it from above): the gap (pair_geometry) is the costly part of the pass.
+std::optional<double> gap_if_needed(const Trace& trace, const RoadMap& map, ActorId id,
+                                    std::size_t i, const Encounter& encounter, std::size_t sector,
+                                    double centres, double lower) {
+  const bool may_lower = !encounter.seen[sector] || lower < encounter.least_gap[sector];
+  if (!may_lower && centres <= kInteractionReach) return std::nullopt;
+  return body_gap(pair_geometry(trace, map, kEgo, id, i));
+}
+
 // Every other road user present and within reach at sample i, by sector; and overtaking.
 void note_encounters(const Trace& trace, const RoadMap& map, std::size_t i,
                      std::vector<Encounter>& encounters, Flags& flags) {
@@ -141,19 +159,25 @@ void note_encounters(const Trace& trace, const RoadMap& map, std::size_t i,
   for (ActorId id = 1; id < trace.actors.size(); ++id) {
     const TraceActor& other = trace.actors[id];
     if (!present_at(other, i)) continue;
-    // Centres this far apart cannot have bodies within reach (no body is 40 m long).
-    if (std::hypot(other.x[i] - ego.x[i], other.y[i] - ego.y[i]) > kInteractionReach + 40) continue;
-    const double gap = body_gap(pair_geometry(trace, map, kEgo, id, i));
-    if (gap > kInteractionReach) continue;
-    const std::size_t sector = sector_index(ego, other, i);
+    const double centres = std::hypot(other.x[i] - ego.x[i], other.y[i] - ego.y[i]);
+    // The gap is at least the larger of the gaps along and across, each at least the centres'
+    // offset on that axis (>= centres / sqrt 2 on one of them) less the bodies' radii.
+    const double lower = centres / std::numbers::sqrt2 - body_radius(ego) - body_radius(other);
+    if (lower > kInteractionReach) continue;
     Encounter& encounter = encounters[id];
-    record(encounter, sector, gap, closing_speed(ego, other, i));
+    const std::size_t sector = sector_index(ego, other, i);
+    const std::optional<double> gap =
+        gap_if_needed(trace, map, id, i, encounter, sector, centres, lower);
+    if (gap && *gap > kInteractionReach) continue;
+    record(encounter, sector, gap.value_or(encounter.least_gap[sector]),
+           closing_speed(ego, other, i));
     if (other.kind != TraceActorKind::vehicle) continue;
-    const bool same_way = std::abs(wrap_angle(other.heading[i] - ego.heading[i])) < kSameDirection;
     const auto where = static_cast<RelativeSector>(sector);
-    if (same_way && where == RelativeSector::F) encounter.ahead_in_lane = true;
     const bool behind =
         where == RelativeSector::R || where == RelativeSector::RSL || where == RelativeSector::RSR;
+    if (where != RelativeSector::F && !(behind && encounter.ahead_in_lane)) continue;
+    const bool same_way = std::abs(wrap_angle(other.heading[i] - ego.heading[i])) < kSameDirection;
+    if (same_way && where == RelativeSector::F) encounter.ahead_in_lane = true;
     if (same_way && behind && encounter.ahead_in_lane) flags[overtaking] = true;
   }
 }
