@@ -176,6 +176,13 @@ TEST(BehaviourCoverageTest, RoundaboutAndMergeAreRoadFeatures) {
             merge);
   EXPECT_TRUE(has(features, "road.merge")) << listed(features);
   EXPECT_FALSE(has(features, "road.roundabout")) << listed(features);
+
+  const RoadMap roundabout = builtin("roundabout");
+  const auto ring =
+      cover(ego_alone(roundabout, 3, along_lanes(roundabout, {"ring_0"}, 0, test::steady(8))),
+            roundabout);
+  EXPECT_TRUE(has(ring, "road.roundabout")) << listed(ring);
+  EXPECT_FALSE(has(ring, "road.merge")) << listed(ring);
 }
 
 // A pedestrian crosses the ego's lane 36 m ahead of where it starts, walking north at 1.5 m/s
