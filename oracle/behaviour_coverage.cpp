@@ -12,6 +12,7 @@
 #include <numbers>
 #include <optional>
 
+#include "lang/demand.hpp"
 #include "oracle/failure_mode.hpp"
 #include "oracle/pair_geometry.hpp"
 #include "physics/actors/actor_class.hpp"
@@ -386,6 +387,11 @@ std::vector<std::string> behaviour_coverage(const Trace& trace, const RoadMap& m
   std::vector<std::string> features;
   add_environment(conditions, features);
   if (trace.sample_count() > 0 && !trace.actors.empty()) {
+    // A trace's columns have one entry per sample (trace.hpp); the pass reads them unchecked.
+    for (const TraceActor& actor : trace.actors)
+      SCENFUZZ_DEMAND(actor.x.size() == trace.sample_count() &&
+                      actor.lane.size() == trace.sample_count() &&
+                      actor.s.size() == trace.sample_count());
     Flags flags{};
     std::vector<Encounter> encounters(trace.actors.size());
     const std::vector<int> lights = light_columns(trace, map);

@@ -5,6 +5,8 @@
 
 #include <utility>
 
+#include "lang/demand.hpp"
+
 namespace scenfuzz {
 namespace {
 
@@ -96,9 +98,17 @@ bool is_atom(const Formula& node) {
   return node.kind == FormulaKind::comparison || node.kind == FormulaKind::predicate;
 }
 
+// Operators have their operands (lang/spec.hpp): one for ~ G F X, two for & | -> U.
+void demand_operands(const Formula& node) {
+  const bool unary_kind = node.kind == FormulaKind::negation || node.kind == FormulaKind::always ||
+                          node.kind == FormulaKind::eventually || node.kind == FormulaKind::next;
+  SCENFUZZ_DEMAND(node.operands.size() == (unary_kind ? 1u : 2u));
+}
+
 List neg(const Formula& node) {
   if (is_atom(node))
     return Formulas{unary(FormulaKind::negation, node, std::nullopt, node.location)};
+  demand_operands(node);
   switch (node.kind) {
     case FormulaKind::negation: return pos(node.operands[0]);
     case FormulaKind::always:
@@ -115,6 +125,7 @@ List neg(const Formula& node) {
 
 List pos(const Formula& node) {
   if (is_atom(node)) return Formulas{node};
+  demand_operands(node);
   switch (node.kind) {
     case FormulaKind::negation: return neg(node.operands[0]);
     case FormulaKind::always:
