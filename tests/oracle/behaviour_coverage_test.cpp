@@ -323,6 +323,34 @@ TEST(BehaviourCoverageTest, ALawSpecReachesTheSubViolationsItsTraceSatisfies) {
   EXPECT_TRUE(law_coverage(scenario, {}, slow, map).empty());
 }
 
+// ((s < 1 | s > 2) & ... k times) -> s < 3: the antecedent has 2^k positive forms, each one
+// sub-violation; beyond kMaxSubViolations the spec is not expanded.
+TEST(BehaviourCoverageTest, SubViolationsMultiplyUpToTheirLimit) {
+  auto law = [](int k) {
+    Formula antecedent;
+    for (int j = 0; j < k; ++j) {
+      Formula either;
+      either.kind = FormulaKind::disjunction;
+      either.operands = {speed_compared(CompareOp::less, 1), speed_compared(CompareOp::greater, 2)};
+      if (j == 0) {
+        antecedent = either;
+        continue;
+      }
+      Formula both;
+      both.kind = FormulaKind::conjunction;
+      both.operands = {antecedent, either};
+      antecedent = both;
+    }
+    Formula implication;
+    implication.kind = FormulaKind::implication;
+    implication.operands = {antecedent, speed_compared(CompareOp::less, 3)};
+    return always(implication);
+  };
+  ASSERT_TRUE(sub_violations(law(9)));
+  EXPECT_EQ(sub_violations(law(9))->size(), 512u);
+  EXPECT_FALSE(sub_violations(law(10)));
+}
+
 TEST(BehaviourCoverageTest, LawFeatureNumbersArePaddedToSortInOrder) {
   EXPECT_EQ(law_feature_name("laws", 7, 81), "law.laws.07");
   EXPECT_EQ(law_feature_name("laws", 81, 81), "law.laws.81");
