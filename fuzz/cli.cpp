@@ -210,6 +210,60 @@ void declare_tmin(CLI::App& app, Action& action) {
   });
 }
 
+void declare_coverage(CLI::App& app, Action& action) {
+  auto options = std::make_shared<CoverageCommandOptions>();
+  CLI::App* coverage = app.add_subcommand(
+      "coverage",
+      "Print the behaviour-coverage features a corpus covers (manoeuvres, road features, "
+      "interactions, weather and light, law sub-violations; docs/coverage.md) and which seeds "
+      "cover each");
+  coverage
+      ->add_option("FILE", options->paths,
+                   "Seed scenario files (.avu, .scenest, .sdl) and folders of them")
+      ->required()
+      ->type_name("");
+  coverage->add_flag("--json", options->json, "Print a JSON document instead of tables");
+  add_corpus_options(coverage, *options);
+  coverage->footer(
+      "A concrete seed is one simulation; a logical seed (with ranges) is simulated at the centre "
+      "of its space and 8 points of a scrambled Halton sequence. Seeds that cannot be covered are "
+      "listed with their errors. The output is the same for any -j. Exit status: 0 when at least "
+      "one seed was covered, 2 when none could be (or a bad command line).");
+  coverage->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      if (!simulation_options_valid(options->simulation, err)) return kExitUsage;
+      return run_coverage(*options, out, err);
+    };
+  });
+}
+
+void declare_cmin(CLI::App& app, Action& action) {
+  auto options = std::make_shared<CminCommandOptions>();
+  CLI::App* cmin = app.add_subcommand(
+      "cmin",
+      "Minimise a seed corpus: copy the smallest subset of seeds that keeps its behaviour "
+      "coverage (docs/corpus.md)");
+  cmin->add_option("IN", options->inputs, "Seed scenario files and folders of them")
+      ->required()
+      ->type_name("");
+  cmin->add_option("-o,--output", options->out_dir,
+                   "Output folder: new, empty, or an earlier cmin's (which it resumes)")
+      ->required()
+      ->type_name("DIR");
+  add_corpus_options(cmin, *options);
+  cmin->footer(
+      "Kept seeds are copied unchanged into DIR with cmin.json saying what each covers and why "
+      "each dropped seed was dropped; DIR/cmin.control lets a killed run resume. Exit status: 0 "
+      "success; 2 a bad command line, a DIR that cannot be used, no seed that could be covered, "
+      "or an interruption (rerun to resume).");
+  cmin->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      if (!simulation_options_valid(options->simulation, err)) return kExitUsage;
+      return run_cmin(*options, out, err);
+    };
+  });
+}
+
 // `bench`'s options, shared by its three subcommands.
 struct BenchLine {
   BenchCommandOptions options;
@@ -415,7 +469,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   Action action;
   for (void (*declare)(CLI::App&, Action&) :
        {declare_check, declare_space, declare_map, declare_run, declare_stl, declare_convert,
-        declare_tmin, declare_bench, declare_campaign})
+        declare_tmin, declare_coverage, declare_cmin, declare_bench, declare_campaign})
     declare(app, action);
   try {
     app.parse(argc, argv);

@@ -114,6 +114,20 @@ struct TminCommandOptions {
 // read, is not a concrete scenario or does not fail the same way when replayed.
 int run_tmin(const TminCommandOptions& options, std::ostream& out, std::ostream& err);
 
+struct CoverageCommandOptions {
+  std::vector<std::string> paths;  // FILE|DIR...: scenario files, folders of them
+  bool json = false;               // --json
+#define SCENFUZZ_CORPUS_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
+  SimulationCommandOptions simulation;
+};
+
+// `scenfuzz coverage FILE|DIR...`: the behaviour-coverage features (docs/coverage.md) the corpus
+// covers and which seeds cover each, as a table or JSON on `out`; seeds that cannot be covered
+// are listed with their errors and never stop the run. The same output for any -j. kExitSuccess
+// when at least one seed was covered, kExitBadInput when none could be.
+int run_coverage(const CoverageCommandOptions& options, std::ostream& out, std::ostream& err);
+
 enum class BenchKind { falsification, chasing_cars, parallel };
 
 struct BenchCommandOptions {
@@ -137,8 +151,8 @@ int run_bench(const BenchCommandOptions& options, std::ostream& out, std::ostrea
 struct CminCommandOptions {
   std::vector<std::string> inputs;  // IN...: scenario files and folders of them
   std::string out_dir;              // -o: where the kept seeds, cmin.json and cmin.control go
-  std::size_t jobs = 0;             // -j: seeds covered at once; 0 = cores
-  std::uint64_t seed = 0;           // --seed: the perception seed and the logical seeds' sample
+#define SCENFUZZ_CORPUS_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
   SimulationCommandOptions simulation;
 };
 

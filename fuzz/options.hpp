@@ -87,6 +87,15 @@ void add_simulation_options(CLI::App* app, SimulationCommandOptions& options);
 void add_run_options(CLI::App* app, RunCommandOptions& options);
 // The search's own options, the mutation's and the simulation's.
 void add_search_options(CLI::App* app, FuzzCommandOptions& options);
+// -j and --seed of the corpus tools, on `options` (CoverageCommandOptions, CminCommandOptions),
+// and the simulation's options.
+template <typename CorpusOptions>
+void add_corpus_options(CLI::App* app, CorpusOptions& options) {
+#define SCENFUZZ_CORPUS_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
+  add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
+#include "fuzz/options.def"
+  add_simulation_options(app, options.simulation);
+}
 // --mutate, for the search and `space`.
 void add_mutation_options(CLI::App* app, MutationCommandOptions& options);
 

@@ -147,6 +147,7 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
   Diagnostics diagnostics;
   const std::optional<SimulationSetup> setup = set_up(run, seed, diagnostics);
   if (!setup) return run;
+  run.conditions = setup->conditions;
   if (std::optional<std::string> overlap = initial_overlap(*setup)) {
     run.infeasible = *overlap;
     return run;

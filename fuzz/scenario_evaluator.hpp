@@ -30,6 +30,7 @@ struct ScenarioRun {
   std::vector<SpecVerdict> verdicts;
   // Whose fault each of the ego's collisions was, in the trace's order.
   std::vector<CollisionResponsibility> responsibilities;
+  Conditions conditions;   // the weather and darkness it ran in (the setup's)
   std::string infeasible;  // why the point was rejected before simulating
   std::string failure;     // why it ran but could not be judged
 };
