@@ -13,6 +13,7 @@
 #include "fuzz/campaign/campaign_report.hpp"
 #include "fuzz/campaign/campaign_run.hpp"
 #include "fuzz/commands.hpp"
+#include "fuzz/corpus_search.hpp"
 #include "fuzz/options.hpp"
 
 namespace scenfuzz {
@@ -48,8 +49,10 @@ void declare_app(CLI::App& app) {
       "a search that could judge nothing.");
 }
 
-void declare_search(CLI::App& app, FuzzCommandOptions& options) {
-  app.add_option("FILE", options.path, "Logical scenario to search (AVUnit, scenest or WMG SDL)")
+void declare_search(CLI::App& app, FuzzCommandOptions& options, std::vector<std::string>& entries) {
+  app.add_option("FILE", entries,
+                 "Scenario to search (AVUnit, scenest or WMG SDL; a concrete one is mutated), or "
+                 "several, or folders of them: a corpus, the budget shared evenly")
       ->type_name("");
   add_search_options(&app, options);
 }
@@ -448,13 +451,16 @@ void declare_campaign(CLI::App& app, Action& action) {
   declare_campaign_run(*campaign, action);
 }
 
-int run_search_command(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
-  if (options.path.empty()) {
+int run_search_command(FuzzCommandOptions& options, const std::vector<std::string>& entries,
+                       std::ostream& out, std::ostream& err) {
+  if (entries.empty()) {
     err << "scenfuzz: error: name a scenario to search (scenfuzz --budget 500 base.avu) or a "
            "subcommand\nRun with --help for more information.\n";
     return kExitUsage;
   }
   if (!simulation_options_valid(options.simulation, err)) return kExitUsage;
+  if (is_corpus_search(entries)) return run_corpus_search(options, entries, out, err);
+  options.path = entries.front();
   return run_fuzz(options, out, err);
 }
 
@@ -465,7 +471,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "scenfuzz"};
   declare_app(app);
   FuzzCommandOptions search;
-  declare_search(app, search);
+  std::vector<std::string> search_entries;
+  declare_search(app, search, search_entries);
   Action action;
   for (void (*declare)(CLI::App&, Action&) :
        {declare_check, declare_space, declare_map, declare_run, declare_stl, declare_convert,
@@ -477,7 +484,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
     // Help and --version exit 0; every other parse error is a usage error.
     return app.exit(e, out, err) == 0 ? kExitSuccess : kExitUsage;
   }
-  return action ? action(out, err) : run_search_command(search, out, err);
+  return action ? action(out, err) : run_search_command(search, search_entries, out, err);
 }
 
 }  // namespace
