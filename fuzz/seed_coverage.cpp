@@ -121,7 +121,11 @@ SeedCoverage cover_seed(const std::string& path, const SeedCoverageOptions& opti
   std::ostringstream diagnostics;
   std::optional<ScenarioFile> input = read_scenario(path, "cover", diagnostics);
   if (!input) {
-    coverage.error = trimmed(diagnostics.str());
+    // The error stands on its own in coverage's and cmin's lists: without the command's prefix.
+    std::string error = trimmed(diagnostics.str());
+    const std::string prefix = "scenfuzz: error: ";
+    if (error.starts_with(prefix)) error.erase(0, prefix.size());
+    coverage.error = error;
     return coverage;
   }
   apply_scenario_overrides(options.simulation, input->scenario);
