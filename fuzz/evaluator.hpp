@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -70,6 +71,9 @@ class Evaluator {
   virtual ~Evaluator() = default;
   virtual std::vector<SearchDimension> dimensions() const = 0;
   virtual std::vector<std::string> objectives() const = 0;
+  // Where the search starts (a point of the unit cube): a concrete seed's values as written.
+  // Nullopt: the strategies choose every point.
+  virtual std::optional<std::vector<double>> start_point() const { return std::nullopt; }
   // The evaluation of `unit_point` with every random draw seeded from `seed`. Called from
   // several threads at once: implementations keep no mutable shared state.
   virtual Evaluation evaluate(std::span<const double> unit_point, std::uint64_t seed) const = 0;

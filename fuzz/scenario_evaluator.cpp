@@ -103,6 +103,16 @@ std::vector<SearchDimension> ScenarioEvaluator::dimensions() const {
   return dimensions;
 }
 
+std::optional<std::vector<double>> ScenarioEvaluator::start_point() const {
+  if (space_.dimensions.empty()) return std::nullopt;
+  std::vector<double> written;
+  for (const Dimension& dimension : space_.dimensions) {
+    if (!dimension.origin) return std::nullopt;
+    written.push_back(*dimension.origin);
+  }
+  return encode(space_, written);
+}
+
 std::vector<std::string> ScenarioEvaluator::objectives() const {
   if (scenario_.specs.empty()) return {kNoCollisionSpec};
   std::vector<std::string> names;

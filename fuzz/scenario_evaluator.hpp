@@ -51,6 +51,8 @@ class ScenarioEvaluator : public Evaluator {
 
   std::vector<SearchDimension> dimensions() const override;
   std::vector<std::string> objectives() const override;
+  // A space derived around a concrete file (every dimension has an origin): its written values.
+  std::optional<std::vector<double>> start_point() const override;
   // Throws OracleError when a spec cannot be judged on the trace (the same for every point).
   Evaluation evaluate(std::span<const double> unit_point, std::uint64_t seed) const override;
 

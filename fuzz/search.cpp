@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "fuzz/search_strategy.hpp"
+#include "fuzz/start_point_strategy.hpp"
 #include "sampler/random.hpp"
 
 namespace scenfuzz {
@@ -65,10 +66,15 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
     // Equal shares; the first targets take the remainder.
     target.remaining =
         options.budget / objectives.size() + (k < options.budget % objectives.size());
-    // Each target's strategy draws from its own stream of the run seed.
+    // Each target's strategy draws from its own stream of the run seed. A concrete seed's own
+    // values are the first target's first point.
+    const std::optional<UnitPoint> written = k == 0 ? evaluator.start_point() : std::nullopt;
+    const std::size_t strategy_budget = target.remaining - (written && target.remaining > 1);
     target.strategy =
         make_search_strategy(options.algorithm, dimensions,
-                             derive_seed(options.seed, ~std::uint64_t{k}), target.remaining);
+                             derive_seed(options.seed, ~std::uint64_t{k}), strategy_budget);
+    if (written)
+      target.strategy = std::make_unique<StartPointStrategy>(*written, std::move(target.strategy));
     targets.push_back(std::move(target));
   }
 

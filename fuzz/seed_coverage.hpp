@@ -21,7 +21,7 @@ struct SeedCoverage {
   std::string path;
   // Sorted, unique feature names ("ego.turn_left", "interaction.pedestrian.FSR.closing_2_5.near").
   std::vector<std::string> features;
-  std::size_t simulations = 0;     // how many simulations covering it took
+  std::size_t simulations = 0;        // how many simulations covering it took
   std::uint64_t simulated_steps = 0;  // their steps together: the seed's cost (cmin's tie-break)
   std::uintmax_t file_size = 0;       // bytes (cmin's first tie-break: smaller wins)
   bool logical = false;               // it has parameter ranges (covered by a sample)

@@ -57,6 +57,17 @@ TEST_F(ConcreteSearchTest, AConcreteFileIsSearchedByMutationAndItsFindingsReplay
   EXPECT_NE(start, "") << finding;
   EXPECT_NE(start, "cut_start = (\"east_1\"->80, , 17);") << "mutated";
   EXPECT_NE(finding.find("//   cutter.init.speed = "), std::string::npos) << finding;
+  // The first evaluation is the file as written.
+  const auto rows = scenfuzz::test::read_csv(slurp(dir_ / "out" / "evaluations.csv"));
+  ASSERT_GE(rows.size(), 2u);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(rows[0].begin(), rows[0].end(), name) -
+                                    rows[0].begin());
+  };
+  EXPECT_EQ(rows[1].at(column("evaluation")), "0");
+  EXPECT_EQ(rows[1].at(column("ego.init.position.s")), "50");
+  EXPECT_EQ(rows[1].at(column("cutter.init.speed")), "17");
+  EXPECT_EQ(rows[1].at(column("cutter.waypoint[1].speed")), "12");
 
   // Its replay line reproduces the collision.
   const std::string replay = line_starting(finding, "// replay: scenfuzz run ");
