@@ -1,11 +1,11 @@
 // The responsibility rules, tried in order (docs/oracle.md, "Responsibility"): an obstacle cannot
-// be at fault; a broken light or stop sign, then missing priority at a junction (signs, then a
-// left turn against oncoming traffic, then priority to the right where nothing controls the
-// junction), decides a crossing, and a sign a merge along one road; an ego standing still is not at
-// fault unless it stopped across a vehicle's path too late for it to stop; a turning ego gives way
-// to pedestrians on the crosswalk; a pedestrian or a crossing road user is judged by when it
-// entered the other's path; road users along the same road by RSS's dangerous time and proper
-// response.
+// be at fault; one that moved as no road user can just before the impact is; a broken light or stop
+// sign, then missing priority at a junction (signs, then a left turn against oncoming traffic, then
+// priority to the right where nothing controls the junction), decides a crossing, and a sign a
+// merge along one road; an ego standing still is not at fault unless it stopped across a vehicle's
+// path too late for it to stop; a turning ego gives way to pedestrians on the crosswalk; a
+// pedestrian or a crossing road user is judged by when it entered the other's path; road users
+// along the same road by RSS's dangerous time and proper response.
 #include "oracle/responsibility.hpp"
 
 #include <algorithm>
@@ -16,6 +16,7 @@
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/crosswalk_priority.hpp"
+#include "oracle/implausible_motion.hpp"
 #include "oracle/junction_priority.hpp"
 #include "oracle/merge_lanes.hpp"
 #include "oracle/pair_geometry.hpp"
@@ -550,6 +551,12 @@ Verdict decide(const Trace& trace, const RoadMap& map, const Collision& collisio
   const TraceActor& o = trace.actors[other];
   if (o.kind == TraceActorKind::obstacle)
     return {Responsibility::ego, "drove into a stationary obstacle (" + o.name + ")"};
+  if (std::optional<std::string> motion =
+          o.kind == TraceActorKind::vehicle
+              ? implausible_motion_before(trace, map, other, collision.time)
+              : std::nullopt)
+    return {Responsibility::other,
+            definite(described(o)) + " moved as no road user can: " + *motion};
   if (std::optional<Verdict> verdict = map_rule(trace, map, other, k, rss)) return *verdict;
   if (std::optional<Verdict> verdict = stationary_rule(trace, map, collision, other, k, rss))
     return *verdict;

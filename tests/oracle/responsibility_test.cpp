@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "oracle/implausible_motion.hpp"
 #include "oracle/judge.hpp"
 #include "oracle/rss_distances.hpp"
 #include "physics/map/lane_queries.hpp"
@@ -592,6 +593,36 @@ TEST(ResponsibilityTest, ACarHittingTheEgosSideIsNeverSaidToEnterItsPathAtImpact
   EXPECT_FALSE(says_zero_seconds(r.reason)) << r.reason;
   EXPECT_EQ(r.reason.find("the car entered the ego's path"), std::string::npos) << r.reason;
   EXPECT_FALSE(r.triage.entry) << "touching the ego's flank at impact is no entry into its path";
+}
+
+// A car ahead that stops harder than any car can (20 m/s^2) just before the ego runs into it: the
+// ego could not have anticipated it, so the collision is the other's, with the reason.
+TEST(ResponsibilityTest, ACarThatMovedAsNoCarCanJustBeforeImpactIsAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10);
+  move(trace, map, trace.actors[0], cruise_east(10, kEast1, 12));
+  move(trace, map, trace.actors[1], braking_east(10 + 20 + kCarLength, kEast1, 12, 2, 20));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason.rfind("the car moved as no road user can: accelerating or braking harder "
+                           "than its class can",
+                           0),
+            0u)
+      << r.reason;
+}
+
+// The same impossible stop long before the ego arrives (it then stood still for seconds): the ego
+// had all that time to see a standing car, so running into it stays the ego's fault.
+TEST(ResponsibilityTest, MotionAsNoCarCanLongBeforeImpactDoesNotExcuseTheEgo) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(14);
+  move(trace, map, trace.actors[0], cruise_east(10, kEast1, 12));
+  move(trace, map, trace.actors[1], braking_east(10 + 140, kEast1, 10, 0.5, 20));
+  end_at_contact(trace);
+  const CollisionResponsibility r = judge(trace, map);
+  ASSERT_GT(trace.collisions.at(0).time, 0.5 + kImplausibleMotionWindow + 1);
+  EXPECT_EQ(r.responsibility, Responsibility::ego) << r.reason;
 }
 
 TEST(RssParametersTest, DefaultsAreAdRssLibsAndNamesOverrideThem) {
