@@ -147,6 +147,7 @@ void noon(Reducer& reducer) {
     reducer.reduction.changes.push_back("time of day " + was + " -> 12:00");
 }
 
+// Each number of the scenario to the fewest significant digits that keep the failure.
 void round_numbers(Reducer& reducer) {
   std::vector<double> numbers = scenario_numbers(reducer.reduction.result.scenario);
   reducer.reduction.digits_before = total_digits(numbers);
