@@ -200,8 +200,8 @@ void declare_tmin(CLI::App& app, Action& action) {
       ->required()
       ->type_name("");
   tmin->add_option("-o,--out", options->out_path,
-                   "Write the minimised scenario (AVUnit) here (default FINDING's folder, "
-                   "<name>.min.avu)")
+                   "Write the minimised scenario (in FINDING's language) here (default "
+                   "FINDING's folder, <name>.min.avu or <name>.min.sdl)")
       ->type_name("FILE");
   tmin->footer(
       "Exit status: 0 written; 2 a file that cannot be read, is not a concrete scenario, or no "

@@ -147,36 +147,15 @@ void noon(Reducer& reducer) {
     reducer.reduction.changes.push_back("time of day " + was + " -> 12:00");
 }
 
-std::size_t total_digits(const std::vector<double>& numbers) {
-  std::size_t digits = 0;
-  for (double number : numbers) digits += static_cast<std::size_t>(significant_digits(number));
-  return digits;
-}
-
-// Each number to the fewest significant digits that keep the failure, found by bisection (the
-// failure is assumed to persist from some number of digits on).
+// Each number of the scenario to the fewest significant digits that keep the failure.
 void round_numbers(Reducer& reducer) {
   std::vector<double> numbers = scenario_numbers(reducer.reduction.result.scenario);
   reducer.reduction.digits_before = total_digits(numbers);
-  for (std::size_t i = 0; i < numbers.size(); ++i) {
-    const double original = numbers[i];
-    const int digits = significant_digits(original);
-    int fewest = 1, enough = digits;
-    while (fewest < enough) {
-      const int middle = (fewest + enough) / 2;
-      std::vector<double> trial = numbers;
-      trial[i] = round_to_significant(original, middle);
-      TminCandidate candidate = reducer.reduction.result;
-      set_scenario_numbers(candidate.scenario, trial);
-      if (reducer.adopt_if_failing(std::move(candidate))) {
-        enough = middle;
-        numbers = std::move(trial);
-      } else {
-        fewest = middle + 1;
-      }
-    }
-    if (enough < digits) ++reducer.reduction.numbers_rounded;
-  }
+  reducer.reduction.numbers_rounded = round_each(numbers, [&](const std::vector<double>& trial) {
+    TminCandidate candidate = reducer.reduction.result;
+    set_scenario_numbers(candidate.scenario, trial);
+    return reducer.adopt_if_failing(std::move(candidate));
+  });
   reducer.reduction.digits_after = total_digits(numbers);
   if (reducer.reduction.numbers_rounded > 0)
     reducer.reduction.changes.push_back(
@@ -186,16 +165,14 @@ void round_numbers(Reducer& reducer) {
         std::to_string(reducer.reduction.digits_after) + " significant digits");
 }
 
-void cut_duration(Reducer& reducer) {
-  const TminCheck& check = reducer.check;
-  if (!std::isfinite(check.failure_time) || !std::isfinite(check.end_time)) return;
-  const double cut = std::ceil(check.failure_time + kDurationMargin);
-  if (cut >= check.end_time) return;
+void cut_the_duration(Reducer& reducer) {
+  const std::optional<double> cut = cut_duration(reducer.check);
+  if (!cut) return;
   TminCandidate candidate = reducer.reduction.result;
-  candidate.duration = cut;
-  const double ended = check.end_time;
+  candidate.duration = *cut;
+  const double ended = reducer.check.end_time;
   if (reducer.adopt_if_failing(std::move(candidate)))
-    reducer.reduction.changes.push_back("duration cut to " + format_number(cut) +
+    reducer.reduction.changes.push_back("duration cut to " + format_number(*cut) +
                                         " s (the run went on to " +
                                         format_number(std::round(ended * 100) / 100) + " s)");
 }
@@ -246,6 +223,42 @@ std::vector<bool> reduce_list(std::size_t count,
   return kept;
 }
 
+std::size_t round_each(std::vector<double>& numbers,
+                       const std::function<bool(const std::vector<double>&)>& fails_with) {
+  std::size_t rounded = 0;
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    const double original = numbers[i];
+    const int digits = significant_digits(original);
+    int fewest = 1, enough = digits;
+    while (fewest < enough) {
+      const int middle = (fewest + enough) / 2;
+      std::vector<double> trial = numbers;
+      trial[i] = round_to_significant(original, middle);
+      if (fails_with(trial)) {
+        enough = middle;
+        numbers = std::move(trial);
+      } else {
+        fewest = middle + 1;
+      }
+    }
+    if (enough < digits) ++rounded;
+  }
+  return rounded;
+}
+
+std::size_t total_digits(const std::vector<double>& numbers) {
+  std::size_t digits = 0;
+  for (double number : numbers) digits += static_cast<std::size_t>(significant_digits(number));
+  return digits;
+}
+
+std::optional<double> cut_duration(const TminCheck& check) {
+  if (!std::isfinite(check.failure_time) || !std::isfinite(check.end_time)) return std::nullopt;
+  const double cut = std::ceil(check.failure_time + kDurationMargin);
+  if (cut >= check.end_time) return std::nullopt;
+  return cut;
+}
+
 std::vector<double> scenario_numbers(const ScenarioTemplate& scenario) {
   ScenarioTemplate copy = scenario;
   std::vector<double> numbers;
@@ -273,7 +286,7 @@ TminReduction reduce_failing_scenario(TminCandidate start, const TminCheck& star
   neutral_weather(reducer);
   noon(reducer);
   round_numbers(reducer);
-  cut_duration(reducer);
+  cut_the_duration(reducer);
   return reduction;
 }
 

@@ -56,6 +56,20 @@ TminReduction reduce_failing_scenario(TminCandidate start, const TminCheck& star
 std::vector<bool> reduce_list(std::size_t count,
                               const std::function<bool(const std::vector<bool>&)>& fails_with);
 
+// Each of `numbers` rounded to the fewest significant digits that keep the failure, found by
+// bisection (the failure is assumed to persist from some number of digits on); a rounding is kept
+// when `fails_with(trial)` says the candidate with those numbers still fails. Returns how many
+// numbers were rounded.
+std::size_t round_each(std::vector<double>& numbers,
+                       const std::function<bool(const std::vector<double>&)>& fails_with);
+
+// The significant digits of all `numbers` together.
+std::size_t total_digits(const std::vector<double>& numbers);
+
+// Where a run that fails as `check` says is cut: kDurationMargin past the failure, rounded up to a
+// whole second; none when either time is unknown or the cut would not be shorter.
+std::optional<double> cut_duration(const TminCheck& check);
+
 // The constant numbers of a template's scenario (its specs, events and end conditions apart: they
 // say what the failure is; the time of day apart: seconds since midnight do not round to
 // readable times), in a fixed walk order, and setting them back in that order.

@@ -1,6 +1,7 @@
-// minimize_finding (tmin_finding.hpp): the finding's header read back, every candidate printed as
-// canonical AVUnit, parsed again and replayed with the search's own evaluator, so that what the
-// reduction keeps is exactly what the written file replays.
+// minimize_finding (tmin_finding.hpp): the finding's header read back, every candidate printed in
+// the finding's language (canonical AVUnit, or WMG SDL level 2 from the finding's syntax tree),
+// parsed again and replayed with the search's own evaluator, so that what the reduction keeps is
+// exactly what the written file replays.
 #include "fuzz/tmin_finding.hpp"
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <sstream>
 
@@ -18,8 +20,12 @@
 #include "fuzz/scenario_evaluator.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "fuzz/tmin.hpp"
+#include "fuzz/tmin_wmg.hpp"
 #include "lang/avunit/avunit.hpp"
 #include "lang/number_format.hpp"
+#include "lang/wmg/parser.hpp"
+#include "lang/wmg/syntax_printer.hpp"
+#include "lang/wmg/wmg.hpp"
 #include "oracle/failure_mode.hpp"
 #include "oracle/robustness.hpp"
 
@@ -146,18 +152,24 @@ Replay replay(const SourceFile& file, ScenarioTemplate scenario, const RunComman
   return result;
 }
 
-// The scenario as canonical AVUnit, parsed again (nullopt when it does not read back).
+// A candidate's printed text, parsed again (nullopt when it does not read back).
 struct Printed {
   SourceFile file;
   ScenarioTemplate scenario;
 };
 
-std::optional<Printed> print_and_parse(const std::string& path, const std::string& header,
-                                       const ScenarioTemplate& scenario) {
-  SourceFile file(path, header + avunit::print(scenario));
-  avunit::ParseResult parsed = avunit::parse(file);
+template <typename Parse>
+std::optional<Printed> parse_printed(SourceFile file, const Parse& parse) {
+  auto parsed = parse(file);
   if (!parsed.ok() || !parsed.scenario.has_scenario) return std::nullopt;
   return Printed{std::move(file), std::move(parsed.scenario)};
+}
+
+// `text` read back in the language it is written in.
+std::optional<Printed> parse_printed(const std::string& path, std::string text, bool wmg) {
+  SourceFile file(path, std::move(text));
+  if (wmg) return parse_printed(std::move(file), [](const SourceFile& f) { return wmg::parse(f); });
+  return parse_printed(std::move(file), [](const SourceFile& f) { return avunit::parse(f); });
 }
 
 // A replay's mode without the atom it starts with: the finding's own spelling of an atom and
@@ -168,9 +180,10 @@ std::string mode_beyond_atom(const Replay& replay) {
   return replay.mode.substr(replay.atom.size());
 }
 
+// The output is in the finding's language: <stem>.min.avu or <stem>.min.sdl.
 fs::path default_out_path(const std::string& input) {
   const fs::path path(input);
-  return path.parent_path() / (path.stem().string() + ".min.avu");
+  return path.parent_path() / (path.stem().string() + ".min" + concrete_extension(input));
 }
 
 // The replay's words for the output: its path, the seed, the finding's other options, and the
@@ -190,20 +203,32 @@ std::string replay_command(const std::string& out, const RunCommandOptions& run,
   return command;
 }
 
+// What either language's reduction gives: the result printed, its duration, what changed.
+struct Reduced {
+  std::string text;  // without the output's header
+  std::optional<double> duration;
+  std::vector<std::string> changes;
+  std::size_t actors_removed = 0, waypoints_removed = 0, obstacles_removed = 0;
+  std::size_t digits_before = 0, digits_after = 0;
+  std::size_t checks = 0;
+};
+
 std::string output_header(const std::string& input, const std::string& mode,
-                          const TminReduction& reduction, const std::string& replay) {
-  std::string header = "// scenfuzz tmin: " + input + " minimised in " +
+                          const Reduced& reduction, const std::string& replay) {
+  const std::string comment = comment_prefix(input);
+  std::string header = comment + "scenfuzz tmin: " + input + " minimised in " +
                        std::to_string(reduction.checks) + " replays, the same failure\n";
-  header += "// failure mode: " + mode + "\n";
-  if (reduction.changes.empty()) header += "// nothing could be removed or changed\n";
-  for (const std::string& change : reduction.changes) header += "// " + change + "\n";
-  return header + "// replay: " + replay + "\n";
+  header += comment + "failure mode: " + mode + "\n";
+  if (reduction.changes.empty()) header += comment + "nothing could be removed or changed\n";
+  for (const std::string& change : reduction.changes) header += comment + change + "\n";
+  return header + comment + "replay: " + replay + "\n";
 }
 
 // The input read, parsed and replayed: what the reduction starts from.
 struct Start {
   std::optional<SourceFile> file;
   ScenarioTemplate scenario;
+  std::optional<wmg::Level2File> tree;  // a WMG SDL file's level-2 syntax tree
   RunCommandOptions run;
   FindingHeader header;
   Replay original;
@@ -212,12 +237,6 @@ struct Start {
 std::string load(const std::string& path, Start& start) {
   start.file = read_source_file(path);
   if (!start.file) return "cannot read '" + path + "'";
-  // The output is canonical AVUnit, and lang/wmg prints its own syntax tree, not the IR: a WMG
-  // scenario printed as AVUnit loses its manoeuvres and road parameters.
-  if (is_wmg_file(path))
-    return "'" + path +
-           "' is WMG SDL: tmin writes AVUnit, which cannot say what a WMG SDL scenario says "
-           "(manoeuvre phases, road parameters), so WMG SDL findings cannot be minimised yet";
   ScenarioParse parsed = parse_scenario_file(*start.file);
   if (!parsed.ok())
     return "'" + path + "' is not a scenario scenfuzz can read:\n" +
@@ -229,6 +248,14 @@ std::string load(const std::string& path, Start& start) {
            std::to_string(parsed.scenario.parameters.size()) +
            " parameters; tmin minimises a concrete one (a finding of the search)";
   start.scenario = std::move(parsed.scenario);
+  if (is_wmg_file(path)) {
+    // WMG SDL is reduced on its level-2 tree (a level-1 file as the level-2 text it stands for):
+    // the IR cannot be printed back as WMG SDL.
+    const wmg::Level2Text level2 = wmg::level2_text(*start.file);
+    wmg::Level2ParseResult tree = wmg::parse_level2(SourceFile(path, level2.text));
+    if (!tree.file) return "'" + path + "' has no level-2 text tmin can reduce";
+    start.tree = std::move(tree.file);
+  }
   std::string error;
   std::optional<FindingHeader> header =
       read_header(start.file->text(), comment_prefix(path), error);
@@ -249,6 +276,40 @@ std::string load(const std::string& path, Start& start) {
   return "";
 }
 
+Reduced reduce_avunit(const Start& start, const TminCheck& first_check,
+                      const std::function<TminCheck(std::string, std::optional<double>)>& check) {
+  const TminReduction reduction =
+      reduce_failing_scenario(TminCandidate{start.scenario, start.run.simulation.duration},
+                              first_check, [&](const TminCandidate& candidate) {
+                                return check(avunit::print(candidate.scenario), candidate.duration);
+                              });
+  return Reduced{avunit::print(reduction.result.scenario),
+                 reduction.result.duration,
+                 reduction.changes,
+                 reduction.actors_removed,
+                 reduction.waypoints_removed,
+                 reduction.obstacles_removed,
+                 reduction.digits_before,
+                 reduction.digits_after,
+                 reduction.checks};
+}
+
+Reduced reduce_wmg(const Start& start, const TminCheck& first_check,
+                   const std::function<TminCheck(std::string, std::optional<double>)>& check) {
+  const WmgTminReduction reduction =
+      reduce_failing_wmg(WmgTminCandidate{*start.tree, start.run.simulation.duration}, first_check,
+                         [&](const WmgTminCandidate& candidate) {
+                           return check(wmg::print_level2(candidate.file), candidate.duration);
+                         });
+  Reduced reduced{wmg::print_level2(reduction.result.file), reduction.result.duration,
+                  reduction.changes};
+  reduced.actors_removed = reduction.actors_removed;
+  reduced.digits_before = reduction.digits_before;
+  reduced.digits_after = reduction.digits_after;
+  reduced.checks = reduction.checks;
+  return reduced;
+}
+
 }  // namespace
 
 TminResult minimize_finding(const std::string& finding_path, const TminOptions& options) {
@@ -258,40 +319,49 @@ TminResult minimize_finding(const std::string& finding_path, const TminOptions& 
   if (!result.ok()) return result;
   result.out_path =
       options.out_path.empty() ? default_out_path(finding_path).string() : options.out_path;
+  // `scenfuzz run` reads a file by its extension: the output's must be the finding's language's.
+  const bool wmg = start.tree.has_value();
+  if (is_wmg_file(result.out_path) != wmg) {
+    result.error = "'" + result.out_path + "': the minimised " + finding_path + " is written in " +
+                   (wmg ? "WMG SDL" : "AVUnit") + ", so its name must end in " +
+                   concrete_extension(finding_path);
+    return result;
+  }
 
-  // Every candidate is replayed as the AVUnit it prints as, so the kept mode is the output's.
-  std::optional<Printed> canonical = print_and_parse(result.out_path, "", start.scenario);
+  // Every candidate is replayed as the text it prints as, so the kept mode is the output's.
+  const std::string canonical_text =
+      wmg ? wmg::print_level2(*start.tree) : avunit::print(start.scenario);
+  std::optional<Printed> canonical = parse_printed(result.out_path, canonical_text, wmg);
   const Replay first =
       canonical ? replay(canonical->file, canonical->scenario, start.run, std::nullopt) : Replay{};
   if (first.mode.empty() || mode_beyond_atom(first) != mode_beyond_atom(start.original) ||
       first.spec != start.original.spec) {
-    result.error = "'" + finding_path + "' printed as canonical AVUnit " +
+    result.error = "'" + finding_path + "' printed as canonical " +
+                   (wmg ? "WMG SDL level 2 " : "AVUnit ") +
                    (first.mode.empty() ? std::string("does not fail") : "fails as " + first.mode) +
                    ", not as " + start.original.mode + ": it cannot be minimised";
     return result;
   }
   result.mode = first.mode;
-  const TminPredicate still_fails = [&](const TminCandidate& candidate) {
-    std::optional<Printed> printed = print_and_parse(result.out_path, "", candidate.scenario);
+  const auto still_fails = [&](std::string text, std::optional<double> duration) {
+    std::optional<Printed> printed = parse_printed(result.out_path, std::move(text), wmg);
     if (!printed) return TminCheck{};
-    Replay again = replay(printed->file, printed->scenario, start.run, candidate.duration);
+    Replay again = replay(printed->file, printed->scenario, start.run, duration);
     again.check.same_failure = again.mode == result.mode;
     return again.check;
   };
   TminCheck first_check = first.check;
   first_check.same_failure = true;
-  const TminReduction reduction = reduce_failing_scenario(
-      TminCandidate{start.scenario, start.run.simulation.duration}, first_check, still_fails);
+  const Reduced reduction = wmg ? reduce_wmg(start, first_check, still_fails)
+                                : reduce_avunit(start, first_check, still_fails);
 
   result.replay =
-      replay_command(result.out_path, start.run, start.header.replay, reduction.result.duration);
+      replay_command(result.out_path, start.run, start.header.replay, reduction.duration);
   const std::string header = output_header(finding_path, result.mode, reduction, result.replay);
   // The written text itself replayed once more: the output must fail as the finding did.
-  std::optional<Printed> output =
-      print_and_parse(result.out_path, header, reduction.result.scenario);
+  std::optional<Printed> output = parse_printed(result.out_path, header + reduction.text, wmg);
   const Replay check =
-      output ? replay(output->file, output->scenario, start.run, reduction.result.duration)
-             : Replay{};
+      output ? replay(output->file, output->scenario, start.run, reduction.duration) : Replay{};
   if (check.mode != result.mode) {
     result.error = "the minimised scenario replays as '" + check.mode + "', not as '" +
                    result.mode + "' (please report this)";

@@ -3,7 +3,8 @@
 // scenario (seed 0, default options, the failure `run` judges), replays it as the search judges,
 // reduces it (fuzz/tmin.hpp) while the same failure-mode signature persists, checks that the
 // result replays to that mode and writes it atomically as canonical AVUnit with a header of what
-// changed and the replay command. The search's and campaigns' `--tmin` call minimize_finding.
+// changed and the replay command (WMG SDL findings as WMG SDL level 2, fuzz/tmin_wmg.hpp). The
+// search's and campaigns' `--tmin` call minimize_finding.
 #pragma once
 
 #include <cstddef>
@@ -13,7 +14,7 @@
 namespace scenfuzz {
 
 struct TminOptions {
-  std::string out_path;  // empty: beside the input, <stem>.min.avu
+  std::string out_path;  // empty: beside the input, <stem>.min.avu (.min.sdl for WMG SDL)
 };
 
 struct TminResult {

@@ -67,6 +67,9 @@ Formula while_formula(const WhileConstraint& constraint, const std::string& pref
 Formula end_formula(const EndCondition& condition, const std::string& prefix,
                     Translation& translation);
 
+// The ego: the actor whose condition guards a `DO: AUTO`, else the first initialised.
+std::string ego_name(const Dynamics& dynamics);
+
 // The sector as written: F, FSR, SR, RSR, R, RSL, SL, FSL.
 std::string sector_text(RelativeLocation location);
 

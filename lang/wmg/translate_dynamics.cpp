@@ -118,16 +118,6 @@ Actor relative_actor(const RelativeActorInit& init, Translation& translation) {
   return actor;
 }
 
-// The ego: the actor whose condition guards a `DO: AUTO`, else the first initialised.
-std::string ego_name(const Dynamics& dynamics) {
-  for (const Ssms& ssms : dynamics.sequences) {
-    if (!ssms.autonomous) continue;
-    for (const WhenCondition& condition : ssms.conditions)
-      if (const auto* actor = std::get_if<ActorCondition>(&condition)) return actor->actor.name;
-  }
-  return dynamics.initialisation.first.actor.name;
-}
-
 scenfuzz::ManoeuvrePhase translate_phase(const wmg::ManoeuvrePhase& phase, const std::string& actor,
                                          const std::string& prefix, Translation& translation) {
   scenfuzz::ManoeuvrePhase result;
@@ -152,6 +142,16 @@ scenfuzz::ManoeuvrePhase translate_phase(const wmg::ManoeuvrePhase& phase, const
 }
 
 }  // namespace
+
+// The ego: the actor whose condition guards a `DO: AUTO`, else the first initialised.
+std::string ego_name(const Dynamics& dynamics) {
+  for (const Ssms& ssms : dynamics.sequences) {
+    if (!ssms.autonomous) continue;
+    for (const WhenCondition& condition : ssms.conditions)
+      if (const auto* actor = std::get_if<ActorCondition>(&condition)) return actor->actor.name;
+  }
+  return dynamics.initialisation.first.actor.name;
+}
 
 void translate_dynamics(const Dynamics& dynamics, Translation& translation) {
   const Initialisation& init = dynamics.initialisation;
