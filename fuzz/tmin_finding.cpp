@@ -168,11 +168,6 @@ std::string mode_beyond_atom(const Replay& replay) {
   return replay.mode.substr(replay.atom.size());
 }
 
-fs::path default_out_path(const std::string& input) {
-  const fs::path path(input);
-  return path.parent_path() / (path.stem().string() + ".min.avu");
-}
-
 // The replay's words for the output: its path, the seed, the finding's other options, and the
 // cut duration instead of the finding's.
 std::string replay_command(const std::string& out, const RunCommandOptions& run,
@@ -249,15 +244,32 @@ std::string load(const std::string& path, Start& start) {
   return "";
 }
 
+bool asked_to_stop(const TminOptions& options) {
+  return options.interrupted && options.interrupted();
+}
+
+TminResult interrupted_result(const std::string& finding_path) {
+  TminResult result;
+  result.interrupted = true;
+  result.error = "the minimisation of '" + finding_path + "' was interrupted";
+  return result;
+}
+
 }  // namespace
 
+std::string default_minimised_path(const std::string& input) {
+  const fs::path path(input);
+  return (path.parent_path() / (path.stem().string() + ".min.avu")).string();
+}
+
 TminResult minimize_finding(const std::string& finding_path, const TminOptions& options) {
+  if (asked_to_stop(options)) return interrupted_result(finding_path);
   TminResult result;
   Start start;
   result.error = load(finding_path, start);
   if (!result.ok()) return result;
   result.out_path =
-      options.out_path.empty() ? default_out_path(finding_path).string() : options.out_path;
+      options.out_path.empty() ? default_minimised_path(finding_path) : options.out_path;
 
   // Every candidate is replayed as the AVUnit it prints as, so the kept mode is the output's.
   std::optional<Printed> canonical = print_and_parse(result.out_path, "", start.scenario);
@@ -272,6 +284,9 @@ TminResult minimize_finding(const std::string& finding_path, const TminOptions& 
   }
   result.mode = first.mode;
   const TminPredicate still_fails = [&](const TminCandidate& candidate) {
+    // Once a stop is asked for, every candidate "passes" without a replay: the reduction then
+    // ends in moments, and its result is thrown away below.
+    if (asked_to_stop(options)) return TminCheck{};
     std::optional<Printed> printed = print_and_parse(result.out_path, "", candidate.scenario);
     if (!printed) return TminCheck{};
     Replay again = replay(printed->file, printed->scenario, start.run, candidate.duration);
@@ -283,6 +298,7 @@ TminResult minimize_finding(const std::string& finding_path, const TminOptions& 
   const TminReduction reduction = reduce_failing_scenario(
       TminCandidate{start.scenario, start.run.simulation.duration}, first_check, still_fails);
 
+  if (asked_to_stop(options)) return interrupted_result(finding_path);
   result.replay =
       replay_command(result.out_path, start.run, start.header.replay, reduction.result.duration);
   const std::string header = output_header(finding_path, result.mode, reduction, result.replay);
