@@ -55,6 +55,11 @@ ModeFiles copy_mode_files(const fs::path& campaign_folder, const fs::path& findi
   return files;
 }
 
+std::string minimised_mode_file(const std::string& scenario_file) {
+  const fs::path path(scenario_file);
+  return (path.parent_path() / (path.stem().string() + ".min.avu")).generic_string();
+}
+
 bool read_whole_file(const fs::path& path, std::string& text) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
