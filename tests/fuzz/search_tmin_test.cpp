@@ -161,6 +161,27 @@ TEST_F(SearchTminTest, AFinishedSearchResumedWithTminIsMinimised) {
   EXPECT_EQ(minimised_files(out), before);
 }
 
+// When the search writes a finding anew (a mode's new representative; here: a finding whose header
+// no longer names its evaluation, which a resumed search writes again), the minimised file of the
+// one it replaces goes: it is minimised again, not kept.
+TEST_F(SearchTminTest, AFindingWrittenAnewIsMinimisedAnew) {
+  const fs::path out = dir_ / "search";
+  ASSERT_EQ(search(out.string(), {"--tmin"}).exit_code, 1);
+  const std::map<std::string, std::string> minimised = minimised_files(out);
+  ASSERT_EQ(minimised.size(), 2u);
+  const fs::path finding = out / "findings" / "001-no_rammer_collision.avu";
+  const fs::path stale = out / "findings" / "001-no_rammer_collision.min.avu";
+  std::string text = test::slurp(finding);
+  ASSERT_NE(text.find(", evaluation "), std::string::npos) << text;
+  text.replace(text.find(", evaluation "), 13, ", evaluation 1000");
+  std::ofstream(finding, std::ios::binary) << text;
+  std::ofstream(stale, std::ios::binary) << "// stale\n";
+
+  ASSERT_EQ(search(out.string(), {"--resume", "--tmin"}).exit_code, 1);
+  EXPECT_EQ(test::slurp(finding).find(", evaluation 1000"), std::string::npos);
+  EXPECT_EQ(minimised_files(out), minimised);
+}
+
 // A finding that no longer fails on replay (here: its spec edited after the search) cannot be
 // minimised: a warning and its reason in summary.json, the other finding minimised, and the
 // search's exit status unchanged.
