@@ -70,6 +70,7 @@ class FolderSearch {
   FolderSearchEnd run(const SearchOptions& search);
 
   const SearchOutputs& outputs() const { return outputs_; }
+  SearchOutputs& outputs() { return outputs_; }  // after run(): what --tmin adds to the summary
   const FindingLog& log() const { return log_; }
   // The scenario file of every finding written, by finding number.
   const std::map<std::size_t, std::string>& finding_files() const { return files_; }

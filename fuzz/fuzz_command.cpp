@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,7 @@
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
 #include "fuzz/findings.hpp"
+#include "fuzz/findings_tmin.hpp"
 #include "fuzz/folder_search.hpp"
 #include "fuzz/journal_replay.hpp"
 #include "fuzz/options.hpp"
@@ -145,9 +147,13 @@ std::string collisions_line(const SearchOutputs& outputs) {
   return line;
 }
 
+// --tmin's outcome per finding number.
+using Minimised = std::map<std::size_t, TminJobResult>;
+
 void print_report(const FuzzCommandOptions& options, const SearchSummary& summary,
                   const SearchOutputs& outputs, const FindingLog& log,
-                  const std::vector<std::string>& objectives, std::ostream& out) {
+                  const std::vector<std::string>& objectives, const Minimised& minimised,
+                  std::ostream& out) {
   if (options.json) {
     out << nlohmann::json{{"event", "summary"}, {"summary", outputs.summary(summary, log, true)}}
                .dump()
@@ -168,7 +174,12 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
   if (log.duplicates() > 0)
     out << " (" << log.duplicates() << " more evaluations of the same modes)";
   out << (kept.empty() ? "\n" : ":\n");
-  for (const Finding* finding : kept) out << finding_line(*finding) << "\n";
+  for (const Finding* finding : kept) {
+    out << finding_line(*finding) << "\n";
+    if (auto tmin = minimised.find(finding->number);
+        tmin != minimised.end() && !tmin->second.minimised_file.empty())
+      out << "      minimised: " << tmin->second.minimised_file << "\n";
+  }
   for (std::size_t k = 0; k < objectives.size() && k < outputs.time_outs().size(); ++k)
     if (outputs.time_outs()[k] > 0)
       out << "  " << objectives[k] << ": " << outputs.time_outs()[k]
@@ -239,6 +250,43 @@ bool derive_space_if_concrete(const FuzzCommandOptions& options, ScenarioFile& i
   return true;
 }
 
+// --tmin after a search that ended as it should (not stopped by a signal or a failed write):
+// each finding minimised beside it, what became of each recorded for summary.json, and a warning
+// for each that could not be. An interruption leaves the rest for --resume.
+Minimised minimise_search_findings(const FuzzCommandOptions& options, FolderSearch& folder,
+                                   const FolderSearchEnd& end, std::ostream& err) {
+  if (!options.tmin || end.problem != FolderSearchProblem::none ||
+      end.summary.stop == StopReason::interrupted || end.summary.stop == StopReason::error)
+    return {};
+  std::vector<std::size_t> numbers;
+  std::vector<TminJob> jobs;
+  for (const auto& [number, file] : folder.finding_files()) {
+    numbers.push_back(number);
+    jobs.push_back({file, ""});
+  }
+  if (jobs.empty()) return {};
+  if (!options.quiet && !options.json)
+    err << "scenfuzz: minimising " << jobs.size() << (jobs.size() == 1 ? " finding" : " findings")
+        << " (--tmin)\n";
+  const std::vector<TminJobResult> results =
+      minimise_findings(jobs, options.jobs, [] { return StopSignalGuard::stop_requested(); });
+  Minimised minimised;
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    const TminJobResult& result = results[k];
+    minimised[numbers[k]] = result;
+    folder.outputs().set_minimised(numbers[k], result.minimised_file, result.reason);
+    if (result.minimised_file.empty() && !result.interrupted)
+      err << "scenfuzz: warning: finding " << finding_number_text(numbers[k])
+          << " is not minimised: " << result.reason << "\n";
+  }
+  if (std::any_of(results.begin(), results.end(), [](const auto& r) { return r.interrupted; }))
+    err << "scenfuzz: note: minimising was interrupted; --resume --tmin minimises the rest\n";
+  if (std::string failure = folder.outputs().rewrite_summary(end.summary, folder.log());
+      !failure.empty())
+    err << "scenfuzz: warning: " << failure << "\n";
+  return minimised;
+}
+
 }  // namespace
 
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
@@ -266,9 +314,12 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
         << "'; starting a new one\n";
 
   FolderSearchEnd end;
+  Minimised minimised;
   {
+    // One guard for both: a stop during the search skips --tmin, one during --tmin ends it.
     StopSignalGuard guard;
     end = folder.run(*search);
+    minimised = minimise_search_findings(options, folder, end, err);
   }
   if (end.problem == FolderSearchProblem::unjudgeable) {
     err << end.message;
@@ -279,7 +330,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
         << "': " << end.message << "; replace it with --force\n";
     return kExitBadInput;
   }
-  print_report(options, end.summary, folder.outputs(), folder.log(), objectives, out);
+  print_report(options, end.summary, folder.outputs(), folder.log(), objectives, minimised, out);
   return exit_status(folder, end, err);
 }
 

@@ -11,6 +11,7 @@
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "fuzz/search_identity.hpp"
+#include "fuzz/tmin_finding.hpp"
 #include "lang/number_format.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/trace/trace_export.hpp"
@@ -303,6 +304,8 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
     written_[finding.number] = scenario_path.string();
     return scenario_path.string();
   }
+  // A mode's new representative: the minimised file of the one it replaces (--tmin) goes first.
+  fs::remove(default_minimised_path(scenario_path.string()), error);
   const ScenarioRun run = evaluator_.run(finding.point, finding.seed);
   const bool replayed =
       run.trace && (finding.ego_failure() ? run.trace->ego_failure.has_value()
@@ -367,6 +370,8 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
     }
     if (auto file = written_.find(finding.number); file != written_.end())
       entry["file"] = file->second;
+    if (auto tmin = minimised_.find(finding.number); tmin != minimised_.end())
+      entry.update(tmin->second);
     findings.push_back(entry);
   }
   nlohmann::json best = nlohmann::json::object();
@@ -459,6 +464,17 @@ std::string SearchOutputs::write_summary(const SearchSummary& search, const Find
   last_summary_ = Clock::now();
   findings_in_summary_ = log.findings().size();
   return failure.empty() ? written : failure;
+}
+
+void SearchOutputs::set_minimised(std::size_t number, const std::string& file,
+                                  const std::string& reason) {
+  minimised_[number] = file.empty()
+                           ? nlohmann::json{{"minimised", nullptr}, {"not_minimised", reason}}
+                           : nlohmann::json{{"minimised", file}};
+}
+
+std::string SearchOutputs::rewrite_summary(const SearchSummary& search, const FindingLog& log) {
+  return write_summary(search, log, true, "");
 }
 
 std::string SearchOutputs::why_nothing_judged(const SearchSummary& search) const {

@@ -68,6 +68,12 @@ class SearchOutputs {
   nlohmann::json summary(const SearchSummary& search, const FindingLog& log, bool complete,
                          const std::string& error = "") const;
 
+  // --tmin's outcome for a finding: its minimised file, or why there is none. summary.json
+  // lists it with the finding once rewrite_summary (or a later summary) writes it.
+  void set_minimised(std::size_t number, const std::string& file, const std::string& reason);
+  // The final summary.json written again, with what came after the search (--tmin).
+  std::string rewrite_summary(const SearchSummary& search, const FindingLog& log);
+
   // The lowest robustness seen per objective (empty before the first judged evaluation).
   const std::vector<double>& best() const { return best_; }
   // Simulations whose trace audit found something, and the issues by AuditKind over the search.
@@ -111,6 +117,8 @@ class SearchOutputs {
   std::vector<double> best_;
   std::map<std::size_t, std::string> written_;  // finding number -> scenario file
   std::set<std::size_t> lost_;                  // finding numbers whose files failed
+  // --tmin: finding number -> {"minimised": file} or {"minimised": null, "not_minimised": why}.
+  std::map<std::size_t, nlohmann::json> minimised_;
   std::string first_infeasible_;
   std::string first_failure_;
   std::size_t ego_failures_ = 0;

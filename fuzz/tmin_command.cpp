@@ -9,7 +9,7 @@
 namespace scenfuzz {
 
 int run_tmin(const TminCommandOptions& options, std::ostream& out, std::ostream& err) {
-  const TminResult result = minimize_finding(options.path, TminOptions{options.out_path});
+  const TminResult result = minimize_finding(options.path, TminOptions{options.out_path, {}});
   if (!result.ok()) {
     err << "scenfuzz: error: " << result.error << "\n";
     return kExitBadInput;

@@ -180,12 +180,6 @@ std::string mode_beyond_atom(const Replay& replay) {
   return replay.mode.substr(replay.atom.size());
 }
 
-// The output is in the finding's language: <stem>.min.avu or <stem>.min.sdl.
-fs::path default_out_path(const std::string& input) {
-  const fs::path path(input);
-  return path.parent_path() / (path.stem().string() + ".min" + concrete_extension(input));
-}
-
 // The replay's words for the output: its path, the seed, the finding's other options, and the
 // cut duration instead of the finding's.
 std::string replay_command(const std::string& out, const RunCommandOptions& run,
@@ -310,15 +304,34 @@ Reduced reduce_wmg(const Start& start, const TminCheck& first_check,
   return reduced;
 }
 
+bool asked_to_stop(const TminOptions& options) {
+  return options.interrupted && options.interrupted();
+}
+
+TminResult interrupted_result(const std::string& finding_path) {
+  TminResult result;
+  result.interrupted = true;
+  result.error = "the minimisation of '" + finding_path + "' was interrupted";
+  return result;
+}
+
 }  // namespace
 
+std::string default_minimised_path(const std::string& input) {
+  // The output is in the finding's language: <stem>.min.avu or <stem>.min.sdl.
+  const fs::path path(input);
+  return (path.parent_path() / (path.stem().string() + ".min" + concrete_extension(input)))
+      .string();
+}
+
 TminResult minimize_finding(const std::string& finding_path, const TminOptions& options) {
+  if (asked_to_stop(options)) return interrupted_result(finding_path);
   TminResult result;
   Start start;
   result.error = load(finding_path, start);
   if (!result.ok()) return result;
   result.out_path =
-      options.out_path.empty() ? default_out_path(finding_path).string() : options.out_path;
+      options.out_path.empty() ? default_minimised_path(finding_path) : options.out_path;
   // `scenfuzz run` reads a file by its extension: the output's must be the finding's language's.
   const bool wmg = start.tree.has_value();
   if (is_wmg_file(result.out_path) != wmg) {
@@ -344,6 +357,9 @@ TminResult minimize_finding(const std::string& finding_path, const TminOptions& 
   }
   result.mode = first.mode;
   const auto still_fails = [&](std::string text, std::optional<double> duration) {
+    // Once a stop is asked for, every candidate "passes" without a replay: the reduction then
+    // ends in moments, and its result is thrown away below.
+    if (asked_to_stop(options)) return TminCheck{};
     std::optional<Printed> printed = parse_printed(result.out_path, std::move(text), wmg);
     if (!printed) return TminCheck{};
     Replay again = replay(printed->file, printed->scenario, start.run, duration);
@@ -355,6 +371,7 @@ TminResult minimize_finding(const std::string& finding_path, const TminOptions& 
   const Reduced reduction = wmg ? reduce_wmg(start, first_check, still_fails)
                                 : reduce_avunit(start, first_check, still_fails);
 
+  if (asked_to_stop(options)) return interrupted_result(finding_path);
   result.replay =
       replay_command(result.out_path, start.run, start.header.replay, reduction.duration);
   const std::string header = output_header(finding_path, result.mode, reduction, result.replay);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ namespace scenfuzz {
 
 struct TminOptions {
   std::string out_path;  // empty: beside the input, <stem>.min.avu (.min.sdl for WMG SDL)
+  // Asked before every replay: true stops the reduction, and nothing is written (the result's
+  // `interrupted` says so). Empty: never stops.
+  std::function<bool()> interrupted;
 };
 
 struct TminResult {
@@ -26,10 +30,14 @@ struct TminResult {
   std::size_t actors_before = 0, actors_removed = 0;
   std::size_t waypoints_removed = 0, obstacles_removed = 0;
   std::size_t digits_before = 0, digits_after = 0;
-  std::size_t replays = 0;  // simulations the reduction ran
+  std::size_t replays = 0;   // simulations the reduction ran
+  bool interrupted = false;  // a stop came first (TminOptions::interrupted); error says so
 
   bool ok() const { return error.empty(); }
 };
+
+// Where tmin writes by default: beside the input, <stem>.min.avu (.min.sdl for WMG SDL).
+std::string default_minimised_path(const std::string& input);
 
 // Reduces the scenario in `finding_path`; the result says what was written, or why nothing was.
 // Deterministic: the same input and options give the same output, byte for byte.

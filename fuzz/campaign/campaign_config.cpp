@@ -288,7 +288,7 @@ struct Reader {
   void read_search(const toml::table& root) {
     const toml::table* search = table(root, "search");
     if (search == nullptr) return;
-    check_keys(*search, "[search]", {"algo", "seed", "jobs", "mutate"});
+    check_keys(*search, "[search]", {"algo", "seed", "jobs", "mutate", "tmin"});
     if (const toml::node* algo = search->get("algo")) {
       if (auto name = algorithm(*algo, "search.algo")) config.search.algorithm = *name;
     }
@@ -303,6 +303,12 @@ struct Reader {
         config.search.jobs = static_cast<std::size_t>(*value);
     }
     if (const toml::node* mutate = search->get("mutate")) read_mutate(*mutate);
+    if (const toml::node* tmin = search->get("tmin")) {
+      if (tmin->is_boolean())
+        config.search.tmin = tmin->as_boolean()->get();
+      else
+        error(tmin->source(), "'search.tmin': expected true or false, found " + type_text(*tmin));
+    }
   }
 
   // `mutate = ["speed=2", ...]`, each item as a --mutate option.

@@ -22,6 +22,7 @@ struct CampaignSearchDefaults {
   std::uint64_t seed = 0;           // as --seed
   std::size_t jobs = 0;             // as -j; 0 means all cores
   std::vector<std::string> mutate;  // as --mutate: how concrete seeds are mutated (checked)
+  bool tmin = false;                // as --tmin: each new failure mode's finding minimised
 };
 
 // A [[seed]] table: options for one seed file.

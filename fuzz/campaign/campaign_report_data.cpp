@@ -7,6 +7,8 @@
 #include <system_error>
 #include <utility>
 
+#include "fuzz/campaign/mode_files.hpp"
+
 namespace scenfuzz {
 
 namespace fs = std::filesystem;
@@ -30,6 +32,14 @@ std::string picture_of(const fs::path& dir, const std::string& scenario_file) {
   std::error_code error;
   if (!fs::is_regular_file(dir / picture, error)) return {};
   return picture.generic_string();
+}
+
+// modes/<hash>.min.avu beside modes/<hash>.<ext> ([search] tmin), when it exists.
+std::string minimised_of(const fs::path& dir, const std::string& scenario_file) {
+  if (scenario_file.empty()) return {};
+  const std::string minimised = minimised_mode_file(scenario_file);
+  std::error_code error;
+  return fs::is_regular_file(dir / minimised, error) ? minimised : std::string();
 }
 
 // Each seed's searches in order, their robustness values concatenated: the seed's chart, its
@@ -168,6 +178,7 @@ ReportData load_report_data(CampaignDb& db, const fs::path& dir, const std::stri
     shown.first_seen_started = run_started[shown.mode.first_seen_run];
     shown.last_seen_started = run_started[shown.mode.last_seen_run];
     shown.picture = picture_of(dir, shown.mode.record.scenario_file);
+    shown.minimised = minimised_of(dir, shown.mode.record.scenario_file);
     count_in_runs(shown.mode, events, data.runs);
     data.failure_modes.push_back(std::move(shown));
   }

@@ -66,6 +66,9 @@ struct ReportFailureMode {
   // modes/<hash>.svg beside the scenario file, relative to the campaign folder; empty when the
   // finding had no picture.
   std::string picture;
+  // modes/<hash>.min.avu ([search] tmin), relative to the campaign folder; empty when there is
+  // none.
+  std::string minimised;
 };
 
 struct ReportData {

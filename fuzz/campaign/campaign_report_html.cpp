@@ -133,6 +133,9 @@ std::string failure_mode_row(const ReportFailureMode& shown, const ReportPage& p
     scenario = "<span class=\"signature\">scenario: <a href=\"" +
                text(url_path(page.campaign_prefix + mode.scenario_file)) + "\">" +
                text(mode.scenario_file) + "</a></span>";
+  if (!shown.minimised.empty())
+    scenario += "<span class=\"signature\"><a href=\"" +
+                text(url_path(page.campaign_prefix + shown.minimised)) + "\">minimised</a></span>";
   return "<tr>" + cell(thumbnail(shown, page)) +
          cell("<b>" + text(mode.spec) + "</b><span class=\"signature\">" + text(mode.signature) +
               "</span>") +

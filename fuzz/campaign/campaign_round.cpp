@@ -8,10 +8,13 @@
 #include <exception>
 #include <mutex>
 #include <numeric>
+#include <set>
 #include <thread>
+#include <utility>
 
 #include "fuzz/campaign/mode_files.hpp"
 #include "fuzz/campaign/mpi_round.hpp"
+#include "fuzz/findings_tmin.hpp"
 #include "fuzz/stop_signals.hpp"
 #include "lang/number_format.hpp"
 
@@ -83,10 +86,35 @@ SearchRecord search_record(const RoundContext& context, std::int64_t round,
   return record;
 }
 
-// Copies the modes' files into DIR/modes/ and records the search with them; false after an
-// error on `err`.
-bool record(RoundContext& context, std::int64_t round, const CampaignSearchTask& task,
-            const CampaignSearchResult& result) {
+// [search] tmin: the representatives of `modes` new to their seed minimised beside them in
+// DIR/modes/, before the search is recorded (so a killed run, continued, finds the search to
+// record again and what was minimised in place). One that cannot be minimised is warned of.
+// False when a stop came first: the search is then left to be recorded by the continued run.
+bool minimise_new_modes(RoundContext& context, const std::vector<FailureModeRecord>& modes) {
+  std::set<std::pair<std::int64_t, std::string>> known;
+  for (const CampaignFailureMode& mode : context.db.list_failure_modes())
+    known.emplace(mode.record.seed_id, mode.record.signature);
+  std::vector<TminJob> jobs;
+  for (const FailureModeRecord& mode : modes)
+    if (!known.contains({mode.seed_id, mode.signature}))
+      jobs.push_back({mode.scenario_file, minimised_mode_file(mode.scenario_file)});
+  const std::vector<TminJobResult> results =
+      minimise_findings(jobs, context.workers, [] { return StopSignalGuard::stop_requested(); });
+  bool stopped = false;
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    stopped = stopped || results[k].interrupted;
+    if (results[k].minimised_file.empty() && !results[k].interrupted)
+      context.err << "scenfuzz: warning: the failure mode of " << jobs[k].finding_file
+                  << " is not minimised: " << results[k].reason << "\n";
+  }
+  return !stopped;
+}
+
+// Copies the modes' files into DIR/modes/, minimises the new ones ([search] tmin) and records
+// the search with them; `failed` after an error on `err`, `interrupted` when a stop came during
+// the minimisation.
+RoundEnd record(RoundContext& context, std::int64_t round, const CampaignSearchTask& task,
+                const CampaignSearchResult& result) {
   const CampaignArm& arm = context.seeds.arms[task.arm];
   const LoadedSeed& seed = context.seeds.seeds[arm.seed];
   std::vector<FailureModeRecord> modes;
@@ -94,12 +122,13 @@ bool record(RoundContext& context, std::int64_t round, const CampaignSearchTask&
     const ModeFiles files = copy_mode_files(".", found.finding_file);
     if (!files.error.empty()) {
       context.err << "scenfuzz: error: " << files.error << "\n";
-      return false;
+      return RoundEnd::failed;
     }
     modes.push_back({seed.id, found.signature, found.spec, found.responsibility,
                      files.scenario_file,
                      replay_command(context.simulation, files.scenario_file, found.seed)});
   }
+  if (context.tmin && !minimise_new_modes(context, modes)) return RoundEnd::interrupted;
   const SearchRecord search = search_record(context, round, task, result);
   const RecordedSearch recorded =
       context.db.record_search_result(search, result.evaluations, modes);
@@ -110,7 +139,7 @@ bool record(RoundContext& context, std::int64_t round, const CampaignSearchTask&
               << " (" << recorded.new_modes << " new)";
   if (search.status == SearchStatus::stopped) context.out << ", stopped at the wall time";
   context.out << "\n" << std::flush;
-  return true;
+  return RoundEnd::complete;
 }
 
 bool past(const std::optional<Clock::time_point>& deadline) {
@@ -192,7 +221,7 @@ void RoundRecorder::take(const CampaignSearchTask& task, const RoundSlot& slot) 
     end_ = StopSignalGuard::stop_requested() ? RoundEnd::interrupted : RoundEnd::wall_time;
   } else {
     try {
-      if (!record(context_, round_, task, slot.result)) end_ = RoundEnd::failed;
+      end_ = record(context_, round_, task, slot.result);
     } catch (const CampaignDbError& error) {
       context_.err << "scenfuzz: error: " << error.what() << "\n";
       end_ = RoundEnd::failed;

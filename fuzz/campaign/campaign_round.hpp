@@ -31,6 +31,7 @@ struct RoundContext {
   std::ostream& err;
   MpiSession* mpi = nullptr;  // under mpirun: the searches go to the other ranks (mpi_round.hpp)
   MpiPoolTimes mpi_times;
+  bool tmin = false;  // [search] tmin: each new mode's representative minimised before recording
 };
 
 enum class RoundEnd { complete, wall_time, interrupted, failed };

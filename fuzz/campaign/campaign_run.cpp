@@ -246,6 +246,7 @@ int run_in_folder(const CampaignRunOptions& options, const CampaignConfig& confi
                        err,
                        mpi && mpi->size() > 1 ? mpi : nullptr,
                        mpi_times};
+  context.tmin = config.search.tmin;
   if (config.budget_wall_seconds)
     context.deadline =
         Clock::now() + std::chrono::duration_cast<Clock::duration>(

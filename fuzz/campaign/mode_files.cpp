@@ -7,6 +7,7 @@
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/content_hash.hpp"
 #include "fuzz/output_folder.hpp"
+#include "fuzz/tmin_finding.hpp"
 
 namespace scenfuzz {
 
@@ -53,6 +54,10 @@ ModeFiles copy_mode_files(const fs::path& campaign_folder, const fs::path& findi
   }
   files.scenario_file = "modes/" + name;
   return files;
+}
+
+std::string minimised_mode_file(const std::string& scenario_file) {
+  return fs::path(default_minimised_path(scenario_file)).generic_string();
 }
 
 bool read_whole_file(const fs::path& path, std::string& text) {

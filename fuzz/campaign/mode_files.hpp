@@ -23,6 +23,10 @@ struct ModeFiles {
 ModeFiles copy_mode_files(const std::filesystem::path& campaign_folder,
                           const std::filesystem::path& finding);
 
+// Where [search] tmin puts the minimised scenario of a mode whose representative is
+// `scenario_file` ("modes/<hash>.<ext>"): beside it, "modes/<hash>.min.avu" (".min.sdl").
+std::string minimised_mode_file(const std::string& scenario_file);
+
 // Reads the file at `path` whole into `text`; false when it cannot be read.
 bool read_whole_file(const std::filesystem::path& path, std::string& text);
 

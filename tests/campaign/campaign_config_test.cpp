@@ -70,6 +70,7 @@ wall_seconds = 1800.5
 algo = "nlopt:GN_ISRES"
 seed = 7
 jobs = 2
+tmin = true
 
 [[seed]]
 path = "corpus/b.avu"
@@ -94,11 +95,12 @@ path = "./a.avu"
   EXPECT_EQ(config.search.algorithm, "nlopt:GN_ISRES");
   EXPECT_EQ(config.search.seed, 7u);
   EXPECT_EQ(config.search.jobs, 2u);
+  EXPECT_TRUE(config.search.tmin);
   ASSERT_EQ(config.seed_overrides.size(), 2u);
   EXPECT_EQ(config.seed_overrides[0].path, "corpus/b.avu");
   EXPECT_EQ(config.seed_overrides[0].budget_share, 2.5);
   EXPECT_EQ(config.seed_overrides[0].algorithm, "random");
-  EXPECT_EQ(config.seed_overrides[0].location.line, 22u);
+  EXPECT_EQ(config.seed_overrides[0].location.line, 23u);
   EXPECT_EQ(config.seed_overrides[1].path, "a.avu");
   EXPECT_EQ(config.seed_overrides[1].budget_share, 1.0);
   EXPECT_FALSE(config.seed_overrides[1].algorithm);
@@ -117,6 +119,7 @@ TEST_F(CampaignConfigTest, DefaultsWhatItLeavesOut) {
   EXPECT_EQ(config.search.algorithm, "ga");
   EXPECT_EQ(config.search.seed, 0u);
   EXPECT_EQ(config.search.jobs, 0u);
+  EXPECT_FALSE(config.search.tmin);
   EXPECT_TRUE(config.seed_overrides.empty());
   EXPECT_TRUE(config.map_paths.empty());
 }
@@ -181,6 +184,8 @@ std::vector<Malformed> malformed_files() {
        "5:8", "'search.algo': NLopt algorithm 'XX_FOO' is unknown or not supported"},
       {"a fractional job count", kSeeds + kBudget + "[search]\njobs = 1.5\n", "5:8",
        "'search.jobs': expected a whole number from 0 to 1024, found 1.5"},
+      {"tmin as a string", kSeeds + kBudget + "[search]\ntmin = \"yes\"\n", "5:8",
+       "'search.tmin': expected true or false, found a string"},
       {"a negative search seed", kSeeds + kBudget + "[search]\nseed = -1\n", "5:8",
        "'search.seed': expected a whole number from 0 to 9223372036854775807, found -1"},
       {"a seed that does not exist", "seeds = [\"a.avu\", \"missing.avu\"]\n" + kBudget, "1:19",

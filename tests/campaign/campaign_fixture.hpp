@@ -1,7 +1,8 @@
 // What the campaign-run tests share: a small campaign over three corpus seeds that need no Apollo
 // map (a few seconds per run), and a canonical dump of a campaign's database — every table's rows
-// in key order, times left out — with the list of its DIR/modes files, for comparing the outcome
-// of two runs (-j 1 against -j 2, killed against uninterrupted).
+// in key order, times left out — with the list of its DIR/modes files (and the content of the
+// minimised ones), for comparing the outcome of two runs (-j 1 against -j 2, killed against
+// uninterrupted).
 #pragma once
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "fuzz/campaign/campaign_db.hpp"
+#include "fuzz/content_hash.hpp"
 #include "tests/fuzz/command_runner.hpp"
 
 namespace scenfuzz::test {
@@ -72,7 +74,13 @@ inline std::string canonical_dump(const std::filesystem::path& dir) {
   for (const auto& entry : std::filesystem::directory_iterator(dir / "modes", error))
     files.push_back(entry.path().filename().string());
   std::sort(files.begin(), files.end());
-  for (const std::string& file : files) dump << "file " << file << "\n";
+  // The other files are named by the hash of their content; a minimised one ([search] tmin) is
+  // not, so its content is compared too.
+  for (const std::string& file : files) {
+    dump << "file " << file;
+    if (file.ends_with(".min.avu")) dump << " " << content_hash(slurp(dir / "modes" / file));
+    dump << "\n";
+  }
   return dump.str();
 }
 

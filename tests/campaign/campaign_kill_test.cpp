@@ -1,7 +1,8 @@
 // `scenfuzz campaign run` through the real executable, interrupted the ways a nightly job is:
 // kill -9 at random moments (seeded, so the moments are the same each time) and SIGTERM, each
 // followed by runs until one completes, must leave exactly the database and modes/ of an
-// uninterrupted run; and a second run on the same folder at once is refused, naming the first.
+// uninterrupted run (with [search] tmin = true too); and a second run on the same folder at once
+// is refused, naming the first.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -86,15 +87,17 @@ void wait_for_output(Background& process, const fs::path& path, const std::strin
 
 class CampaignKillTest : public CommandTest {
  protected:
-  fs::path campaign(const std::string& name) {
+  // `more`: lines for campaign.toml's [search] table.
+  fs::path campaign(const std::string& name, const std::string& more = "") {
     fs::create_directories(dir_ / name);
-    write(name + "/campaign.toml", campaign_toml(small_campaign_seeds(), "simulations = 320"));
+    write(name + "/campaign.toml",
+          campaign_toml(small_campaign_seeds(), "simulations = 320", more));
     return dir_ / name;
   }
 
   // The uninterrupted run's dump, and how long it took.
-  std::string uninterrupted(double& seconds) {
-    const fs::path folder = campaign("whole");
+  std::string uninterrupted(double& seconds, const std::string& more = "") {
+    const fs::path folder = campaign("whole", more);
     const Clock::time_point start = Clock::now();
     const Outcome outcome = scenfuzz({"campaign", "run", folder.string(), "-j", "2"});
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -154,6 +157,24 @@ TEST_F(CampaignKillTest, KilledAtRandomMomentsItEndsAsAnUninterruptedRun) {
     EXPECT_TRUE(dump == expected) << first_difference(dump, expected);
   }
   EXPECT_GE(kills, 8);
+}
+
+// With [search] tmin = true the minimised files (compared by content) are the same too: a kill
+// during a minimisation leaves the search unrecorded and the file unwritten, and the continued run
+// records and minimises it.
+TEST_F(CampaignKillTest, WithTminKilledAtRandomMomentsItEndsAsAnUninterruptedRun) {
+  double seconds = 0;
+  const std::string expected = uninterrupted(seconds, "tmin = true\n");
+  ASSERT_NE(expected.find(".min.avu "), std::string::npos) << expected;
+  std::mt19937 random(20261127);
+  int kills = 0;
+  for (int sequence = 0; sequence < 3 && kills < 6; ++sequence) {
+    const fs::path folder = campaign("killed-" + std::to_string(sequence), "tmin = true\n");
+    kills = kill_until_it_ends(folder, seconds / (6 << sequence), random);
+    const std::string dump = canonical_dump(folder);
+    EXPECT_TRUE(dump == expected) << first_difference(dump, expected);
+  }
+  EXPECT_GE(kills, 6);
 }
 
 TEST_F(CampaignKillTest, SigtermStopsWithEverythingRecordedAndTheNextRunContinues) {
