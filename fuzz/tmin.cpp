@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string>
 #include <utility>
 
 #include "fuzz/significant_digits.hpp"
+#include "fuzz/tmin_specs.hpp"
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/walk_values.hpp"
@@ -59,6 +62,13 @@ void remove_actors(Reducer& reducer) {
     TminCandidate candidate = reducer.reduction.result;
     candidate.scenario.vehicles = kept_items(vehicles, kept);
     candidate.scenario.pedestrians = kept_items(pedestrians, kept, vehicles.size());
+    // The spec atoms that read a removed actor go with it.
+    std::set<std::string> removed;
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      if (!kept[i])
+        removed.insert(i < vehicles.size() ? vehicles[i].name
+                                           : pedestrians[i - vehicles.size()].name);
+    candidate.scenario.specs = specs_without_actors(candidate.scenario.specs, removed);
     return candidate;
   };
   const std::vector<bool> kept = reduce_list(

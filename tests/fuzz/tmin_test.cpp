@@ -13,6 +13,8 @@
 
 #include "command_runner.hpp"
 #include "fuzz/significant_digits.hpp"
+#include "fuzz/tmin_specs.hpp"
+#include "lang/avunit/avunit.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -276,6 +278,55 @@ TEST_F(TminCommandTest, RemovesThePlantedActorsAndKeepsTheFailure) {
   const Outcome again = scenfuzz({"tmin", out_path, "-o", (dir_ / "again.avu").string()});
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_NE(again.out.find("nothing could be removed or changed"), std::string::npos) << again.out;
+}
+
+// LawBreaker's style: one spec names every NPC (`G(dis1 >= 0.5 & dis2 >= 0.5 & ...)`). The NPCs
+// the failure does not involve still go, and the conjuncts that read them with them.
+TEST_F(TminCommandTest, ActorsASpecNamesGoWithTheirAtoms) {
+  std::string text = planted("12.345678");
+  const std::string spec = "G (dis(trace[ego], trace[truth][rammer]) > 0.5)";
+  text.replace(text.find(spec), spec.size(),
+               "G (dis(trace[ego], trace[truth][rammer]) > 0.5 & "
+               "dis(trace[ego], trace[truth][far1]) > 0.5 & "
+               "dis(trace[ego], trace[truth][far2]) > 0.5 & "
+               "dis(trace[ego], trace[truth][far3]) > 0.5)");
+  const std::string input = write("named.avu", text);
+  const std::string out_path = (dir_ / "named.min.avu").string();
+  Outcome tmin, replay;
+  minimise_and_replay(input, out_path, tmin, replay);
+  EXPECT_NE(tmin.out.find("actors 4 -> 1,"), std::string::npos) << tmin.out;
+  const std::string minimised = test::slurp(out_path);
+  const std::string body = minimised.substr(minimised.find("// AVUnit printed by scenfuzz"));
+  for (const char* gone : {"far1", "far2", "far3"})
+    EXPECT_EQ(body.find(gone), std::string::npos) << gone << "\n" << minimised;
+  EXPECT_NE(body.find("dis(trace[ego], trace[truth][rammer]) > 0.5"), std::string::npos) << body;
+  EXPECT_EQ(replay.exit_code, 1) << replay.out << replay.err;
+  EXPECT_NE(replay.out.find("ego rear / rammer front"), std::string::npos) << replay.out;
+}
+
+TEST(TminSpecs, AtomsThatReadARemovedActorGoAndWhatCannotStandWithoutThem) {
+  const avunit::ParseResult parse = avunit::parse(SourceFile(
+      "specs.avu",
+      std::string(kPlanted).replace(std::string(kPlanted).find("RAMMER_SPEED"), 12, "5") +
+          "both = G (dis(trace[ego], trace[truth][rammer]) > 0.5 & "
+          "dis(trace[ego], trace[truth][far1]) > 0.5);\n"
+          "either = F (dis(trace[ego], trace[truth][far1]) < 3 | "
+          "dis(trace[ego], trace[truth][far2]) < 3);\n"
+          "implied = G (dis(trace[ego], trace[truth][far1]) < 5 -> "
+          "dis(trace[ego], trace[truth][rammer]) > 1);\n"
+          "trace |= both;\ntrace |= either;\ntrace |= implied;\n"));
+  ASSERT_TRUE(parse.ok());
+  const std::vector<Spec> kept = specs_without_actors(parse.scenario.specs, {"far1"});
+  std::vector<std::string> names;
+  for (const Spec& spec : kept) names.push_back(spec.name);
+  // `implied` cannot stand without its condition; `either` keeps its far2 side; `both` its rammer
+  // side.
+  EXPECT_EQ(names, (std::vector<std::string>{"no_rammer_collision", "both", "either"}));
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[1].formula.operands.at(0).kind, FormulaKind::comparison);
+  EXPECT_EQ(kept[2].formula.operands.at(0).kind, FormulaKind::comparison);
+  EXPECT_EQ(specs_without_actors(parse.scenario.specs, {"far1", "far2", "rammer"}).size(), 0u);
+  EXPECT_EQ(specs_without_actors(parse.scenario.specs, {}), parse.scenario.specs);
 }
 
 TEST_F(TminCommandTest, MinimisesAFindingOfTheSearchWithItsSeed) {
