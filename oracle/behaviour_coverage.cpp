@@ -264,7 +264,8 @@ void note_lane(const RoadMap& map, std::int32_t lane, std::int32_t& previous, Fl
   previous = lane;
 }
 
-void note_activity(const Trace& trace, const RoadMap& map, std::size_t i, Flags& flags) {
+void note_activity(const Trace& trace, const RoadMap& map, std::size_t i, RoadFeatureMemo& memo,
+                   Flags& flags) {
   switch (ego_activity_at(trace, map, i)) {
     case EgoActivity::following: flags[following] = true; break;
     case EgoActivity::turning_left: flags[turn_left] = true; break;
@@ -273,7 +274,7 @@ void note_activity(const Trace& trace, const RoadMap& map, std::size_t i, Flags&
     case EgoActivity::pulling_out: flags[pulling_out] = true; break;
     default: break;
   }
-  switch (road_feature_at(trace, map, i)) {
+  switch (road_feature_at(trace, map, i, memo)) {
     case RoadFeature::crosswalk: flags[crosswalk] = true; break;
     case RoadFeature::roundabout: flags[roundabout] = true; break;
     case RoadFeature::merge: flags[merge] = true; break;
@@ -396,9 +397,10 @@ std::vector<std::string> behaviour_coverage(const Trace& trace, const RoadMap& m
     std::vector<Encounter> encounters(trace.actors.size());
     const std::vector<int> lights = light_columns(trace, map);
     std::int32_t previous_lane = -1;
+    RoadFeatureMemo memo;
     for (std::size_t i = 0; i < trace.sample_count(); ++i) {
       note_lane(map, trace.actors[kEgo].lane[i], previous_lane, flags);
-      note_activity(trace, map, i, flags);
+      note_activity(trace, map, i, memo, flags);
       note_controls(trace, map, i, lights, flags);
       note_encounters(trace, map, i, encounters, flags);
     }

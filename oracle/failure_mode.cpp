@@ -116,9 +116,17 @@ bool joined_by_two(const RoadMap& map, LaneIndex index) {
                        [&](LaneIndex p) { return !map.lane(p).junction; }) >= 2;
 }
 
+// ending_beside_another, looked up in `memo` or worked out once.
+bool acceleration_lane(const RoadMap& map, LaneIndex index, RoadFeatureMemo& memo) {
+  if (memo.acceleration_lane.empty()) memo.acceleration_lane.assign(map.lanes().size(), -1);
+  signed char& known = memo.acceleration_lane[index];
+  if (known < 0) known = ending_beside_another(map, map.lane(index)) ? 1 : 0;
+  return known == 1;
+}
+
 // Merging: on or beside an acceleration lane (within a lane width of its centre line), on a lane
 // two lanes run into, or within kMergeLookahead before one.
-bool merges(const RoadMap& map, LaneIndex index, double s, MapPoint p) {
+bool merges(const RoadMap& map, LaneIndex index, double s, MapPoint p, RoadFeatureMemo& memo) {
   const Lane& lane = map.lane(index);
   std::vector<LaneIndex> here = {index};
   here.insert(here.end(), lane.left_forward_neighbours.begin(), lane.left_forward_neighbours.end());
@@ -126,7 +134,7 @@ bool merges(const RoadMap& map, LaneIndex index, double s, MapPoint p) {
               lane.right_forward_neighbours.end());
   for (LaneIndex near : here) {
     const Lane& candidate = map.lane(near);
-    if (ending_beside_another(map, candidate) && candidate.centre_line.project(p).distance < 4)
+    if (acceleration_lane(map, near, memo) && candidate.centre_line.project(p).distance < 4)
       return true;
   }
   if (joined_by_two(map, index)) return true;
@@ -202,6 +210,12 @@ EgoActivity ego_activity_at(const Trace& trace, const RoadMap& map, std::size_t 
 }
 
 RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t i) {
+  RoadFeatureMemo memo;
+  return road_feature_at(trace, map, i, memo);
+}
+
+RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t i,
+                            RoadFeatureMemo& memo) {
   const TraceActor& ego = trace.actors[kEgo];
   const MapPoint p{ego.x[i], ego.y[i]};
   const std::optional<LaneIndex> lane = lane_at(ego, i);
@@ -211,7 +225,7 @@ RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t 
   if (lane && map.lane(*lane).junction) return RoadFeature::junction;
   for (const Junction& junction : map.junctions())
     if (near_polygon(p, junction.outline, kJunctionMargin)) return RoadFeature::junction;
-  if (lane && merges(map, *lane, ego.s[i], p)) return RoadFeature::merge;
+  if (lane && merges(map, *lane, ego.s[i], p, memo)) return RoadFeature::merge;
   return RoadFeature::straight;
 }
 
