@@ -60,6 +60,10 @@ struct Evaluation {
   // What the simulated world did wrong (oracle/trace_audit.hpp): issues per AuditKind, counted
   // per search; empty when the evaluator audits nothing or nothing was simulated.
   std::vector<std::size_t> audit;
+  // The behaviour-coverage features the run covered (docs/coverage.md), sorted and unique:
+  // the search's summary reports their union. Empty when the evaluator computes none or the
+  // run left no trace (fuzz/run_coverage.hpp).
+  std::vector<std::string> coverage;
   double wall_seconds = 0;
 
   bool feasible() const { return infeasible.empty(); }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "fuzz/run_coverage.hpp"
 #include "oracle/failure_mode.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/simulation/initial_overlap.hpp"
@@ -191,6 +192,7 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
     const TraceAudit audit = audit_trace(*run.trace, *run.map);
     evaluation.audit.assign(audit.counts.begin(), audit.counts.end());
   }
+  evaluation.coverage = run_coverage(run, scenario_);
   if (run.trace && run.trace->ego_failure && is_finding(*run.trace->ego_failure)) {
     const EgoFailure& failure = *run.trace->ego_failure;
     evaluation.failure_kind = ego_failure_kind_name(failure.kind);

@@ -23,8 +23,9 @@ namespace {
 
 // The fixed columns before the parameters and after the specs.
 constexpr std::size_t kLeading = 5;  // evaluation, seed, target, status, kind
-// audit, endings, violated, responsibility, collision_reason, signature, wall_seconds, reason
-constexpr std::size_t kTrailing = 8;
+// audit, endings, violated, responsibility, collision_reason, signature, wall_seconds, reason,
+// coverage
+constexpr std::size_t kTrailing = 9;
 
 std::string status_name(const Evaluation& evaluation) {
   return !evaluation.feasible() ? "infeasible" : !evaluation.judged() ? "failed" : "judged";
@@ -163,6 +164,24 @@ bool parse_violated(const std::string& text, const std::vector<std::string>& obj
   return true;
 }
 
+// "ego.following;light.day": the run's behaviour-coverage features, in their sorted order.
+std::string coverage_text(const std::vector<std::string>& features) {
+  std::string text;
+  for (const std::string& feature : features) text += (text.empty() ? "" : ";") + feature;
+  return text;
+}
+
+std::vector<std::string> parse_coverage(const std::string& text) {
+  std::vector<std::string> features;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    features.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return features;
+}
+
 }  // namespace
 
 SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives)
@@ -175,7 +194,8 @@ SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::strin
     header_ += "," + csv_field("robustness." + objective);
   for (const std::string& objective : objectives_) header_ += "," + csv_field("guide." + objective);
   header_ +=
-      ",audit,endings,violated,responsibility,collision_reason,signature,wall_seconds,reason\n";
+      ",audit,endings,violated,responsibility,collision_reason,signature,wall_seconds,reason,"
+      "coverage\n";
 }
 
 std::string SearchJournal::row(const EvaluationRecord& record) const {
@@ -205,7 +225,8 @@ std::string SearchJournal::row(const EvaluationRecord& record) const {
          csv_field(evaluation.responsibility) + "," + csv_field(evaluation.collision_reason) + "," +
          csv_field(evaluation.signature) + "," +
          format_number(std::round(evaluation.wall_seconds * 1e6) / 1e6) + "," +
-         csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "\n";
+         csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "," +
+         csv_field(coverage_text(evaluation.coverage)) + "\n";
   return row;
 }
 
@@ -252,6 +273,7 @@ std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::
   evaluation.collision_reason = fields[trailing + 4];
   evaluation.signature = fields[trailing + 5];
   parse_number(fields[trailing + 6], evaluation.wall_seconds);
+  evaluation.coverage = parse_coverage(fields[trailing + 8]);
   if (status == "infeasible") {
     evaluation.infeasible = reason.empty() ? "infeasible" : reason;
   } else if (status == "failed") {

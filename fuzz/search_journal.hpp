@@ -10,7 +10,9 @@
 // specs whose verdict the run's end left open, "reach=time-out;clearance=stuck"), violated (the
 // violated specs, the earliest first, "clearance;reach"), responsibility and collision_reason (of
 // the ego's first collision), signature (the failure mode, which de-duplicates findings),
-// wall_seconds, reason.
+// wall_seconds, reason, coverage (the run's behaviour-coverage features, docs/coverage.md,
+// "ego.following;light.day": journalled so that a resumed search reports the coverage of the
+// evaluations it replays without simulating them again).
 #pragma once
 
 #include <filesystem>

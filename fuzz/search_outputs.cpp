@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "fuzz/atomic_file.hpp"
+#include "fuzz/coverage_summary.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "fuzz/search_identity.hpp"
@@ -162,6 +163,7 @@ void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
   }
   record_design(record);
   record_collision(evaluation, record.index);
+  coverage_.insert(evaluation.coverage.begin(), evaluation.coverage.end());
 }
 
 void SearchOutputs::record_collision(const Evaluation& evaluation, std::size_t index) {
@@ -421,6 +423,7 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
       rates[objectives_[k]] =
           static_cast<double>(design_violations_[k]) / static_cast<double>(design_points_);
   }
+  document["coverage"] = coverage_summary_json(coverage_);
   document["time_outs"] = time_outs;
   document["stuck"] = stuck;
   document["first_design"] = {

@@ -82,6 +82,9 @@ class SearchOutputs {
   // Per objective: evaluations whose verdict was a time-out (not violations).
   const std::vector<std::size_t>& time_outs() const { return time_outs_; }
   const CollisionCounts& collisions() const { return collisions_; }
+  // The behaviour-coverage features of every evaluation so far (replayed ones included), as
+  // summary.json's "coverage" reports them.
+  const std::set<std::string>& coverage() const { return coverage_; }
 
   // Once the first design (EvaluationRecord::first_design) is over, or with `search_over`: a
   // warning for every spec violated at more than half of its judged points, naming the rate and
@@ -130,6 +133,7 @@ class SearchOutputs {
   // Per objective: evaluations whose verdict was a time-out, and stuck ones.
   std::vector<std::size_t> time_outs_, stuck_;
   CollisionCounts collisions_;
+  std::set<std::string> coverage_;
   // The first design: judged points, violations per objective and the first violating record.
   std::size_t design_points_ = 0;
   std::vector<std::size_t> design_violations_;

@@ -10,10 +10,9 @@
 #include <stdexcept>
 
 #include "fuzz/options.hpp"
+#include "fuzz/run_coverage.hpp"
 #include "fuzz/scenario_evaluator.hpp"
 #include "lang/number_format.hpp"
-#include "oracle/behaviour_coverage.hpp"
-#include "oracle/law_coverage.hpp"
 #include "oracle/robustness.hpp"
 #include "sampler/point_samplers.hpp"
 
@@ -49,14 +48,9 @@ std::string located(const SourceFile& file, const OracleError& error) {
 // A run's features appended to `features`; false when the run left no trace to read.
 bool cover_run(const ScenarioRun& run, const ScenarioTemplate& scenario,
                std::vector<std::string>& features, SeedCoverage& coverage) {
-  if (!run.trace || !run.map || run.trace->sample_count() == 0) return false;
-  // An ego plugin that could not even start drove nothing: that is the plugin's problem.
-  if (run.trace->ego_failure && !is_finding(*run.trace->ego_failure)) return false;
-  const std::vector<std::string> behaviour =
-      behaviour_coverage(*run.trace, *run.map, run.conditions);
-  features.insert(features.end(), behaviour.begin(), behaviour.end());
-  const std::vector<std::string> laws = law_coverage(scenario, run.values, *run.trace, *run.map);
-  features.insert(features.end(), laws.begin(), laws.end());
+  if (!has_coverage(run)) return false;
+  const std::vector<std::string> covered = run_coverage(run, scenario);
+  features.insert(features.end(), covered.begin(), covered.end());
   ++coverage.simulations;
   coverage.simulated_steps += run.trace->sample_count();
   return true;

@@ -116,8 +116,8 @@ double closing_speed(const TraceActor& ego, const TraceActor& other, std::size_t
 }
 
 // The least distance between the bodies, from the gaps along and across the ego's frame.
-double body_gap(const PairGeometry& g) {
-  return std::hypot(std::max(g.gap_lon, 0.0), std::max(g.gap_lat, 0.0));
+double body_gap(const BodyGaps& g) {
+  return std::hypot(std::max(g.lon, 0.0), std::max(g.lat, 0.0));
 }
 
 std::size_t sector_index(const TraceActor& ego, const TraceActor& other, std::size_t i) {
@@ -145,18 +145,22 @@ double body_radius(const TraceActor& actor) {
 // The gap between the bodies at sample i, or nullopt when it cannot lower the sector's least gap
 // (`lower` bounds it from below) and the bodies are surely within reach (the centres' distance
 // bounds it from above): the gap (pair_geometry) is the costly part of the pass.
+// `frame`: the ego's frame at sample i (pair_frame_heading, a lane lookup), worked out at the
+// first gap the sample needs and kept for its other road users.
 std::optional<double> gap_if_needed(const Trace& trace, const RoadMap& map, ActorId id,
                                     std::size_t i, const Encounter& encounter, std::size_t sector,
-                                    double centres, double lower) {
+                                    double centres, double lower, std::optional<double>& frame) {
   const bool may_lower = !encounter.seen[sector] || lower < encounter.least_gap[sector];
   if (!may_lower && centres <= kInteractionReach) return std::nullopt;
-  return body_gap(pair_geometry(trace, map, kEgo, id, i));
+  if (!frame) frame = pair_frame_heading(trace, map, kEgo, i);
+  return body_gap(body_gaps(trace, kEgo, id, i, *frame));
 }
 
 // Every other road user present and within reach at sample i, by sector; and overtaking.
 void note_encounters(const Trace& trace, const RoadMap& map, std::size_t i,
                      std::vector<Encounter>& encounters, Flags& flags) {
   const TraceActor& ego = trace.actors[kEgo];
+  std::optional<double> frame;
   for (ActorId id = 1; id < trace.actors.size(); ++id) {
     const TraceActor& other = trace.actors[id];
     if (!present_at(other, i)) continue;
@@ -168,7 +172,7 @@ void note_encounters(const Trace& trace, const RoadMap& map, std::size_t i,
     Encounter& encounter = encounters[id];
     const std::size_t sector = sector_index(ego, other, i);
     const std::optional<double> gap =
-        gap_if_needed(trace, map, id, i, encounter, sector, centres, lower);
+        gap_if_needed(trace, map, id, i, encounter, sector, centres, lower, frame);
     if (gap && *gap > kInteractionReach) continue;
     record(encounter, sector, gap.value_or(encounter.least_gap[sector]),
            closing_speed(ego, other, i));
@@ -264,7 +268,8 @@ void note_lane(const RoadMap& map, std::int32_t lane, std::int32_t& previous, Fl
   previous = lane;
 }
 
-void note_activity(const Trace& trace, const RoadMap& map, std::size_t i, Flags& flags) {
+void note_activity(const Trace& trace, const RoadMap& map, std::size_t i, RoadFeatureMemo& memo,
+                   Flags& flags) {
   switch (ego_activity_at(trace, map, i)) {
     case EgoActivity::following: flags[following] = true; break;
     case EgoActivity::turning_left: flags[turn_left] = true; break;
@@ -273,7 +278,7 @@ void note_activity(const Trace& trace, const RoadMap& map, std::size_t i, Flags&
     case EgoActivity::pulling_out: flags[pulling_out] = true; break;
     default: break;
   }
-  switch (road_feature_at(trace, map, i)) {
+  switch (road_feature_at(trace, map, i, memo)) {
     case RoadFeature::crosswalk: flags[crosswalk] = true; break;
     case RoadFeature::roundabout: flags[roundabout] = true; break;
     case RoadFeature::merge: flags[merge] = true; break;
@@ -396,9 +401,10 @@ std::vector<std::string> behaviour_coverage(const Trace& trace, const RoadMap& m
     std::vector<Encounter> encounters(trace.actors.size());
     const std::vector<int> lights = light_columns(trace, map);
     std::int32_t previous_lane = -1;
+    RoadFeatureMemo memo;
     for (std::size_t i = 0; i < trace.sample_count(); ++i) {
       note_lane(map, trace.actors[kEgo].lane[i], previous_lane, flags);
-      note_activity(trace, map, i, flags);
+      note_activity(trace, map, i, memo, flags);
       note_controls(trace, map, i, lights, flags);
       note_encounters(trace, map, i, encounters, flags);
     }

@@ -116,9 +116,17 @@ bool joined_by_two(const RoadMap& map, LaneIndex index) {
                        [&](LaneIndex p) { return !map.lane(p).junction; }) >= 2;
 }
 
+// ending_beside_another, looked up in `memo` or worked out once.
+bool acceleration_lane(const RoadMap& map, LaneIndex index, RoadFeatureMemo& memo) {
+  if (memo.acceleration_lane.empty()) memo.acceleration_lane.assign(map.lanes().size(), -1);
+  signed char& known = memo.acceleration_lane[index];
+  if (known < 0) known = ending_beside_another(map, map.lane(index)) ? 1 : 0;
+  return known == 1;
+}
+
 // Merging: on or beside an acceleration lane (within a lane width of its centre line), on a lane
 // two lanes run into, or within kMergeLookahead before one.
-bool merges(const RoadMap& map, LaneIndex index, double s, MapPoint p) {
+bool merges(const RoadMap& map, LaneIndex index, double s, MapPoint p, RoadFeatureMemo& memo) {
   const Lane& lane = map.lane(index);
   std::vector<LaneIndex> here = {index};
   here.insert(here.end(), lane.left_forward_neighbours.begin(), lane.left_forward_neighbours.end());
@@ -126,7 +134,7 @@ bool merges(const RoadMap& map, LaneIndex index, double s, MapPoint p) {
               lane.right_forward_neighbours.end());
   for (LaneIndex near : here) {
     const Lane& candidate = map.lane(near);
-    if (ending_beside_another(map, candidate) && candidate.centre_line.project(p).distance < 4)
+    if (acceleration_lane(map, near, memo) && candidate.centre_line.project(p).distance < 4)
       return true;
   }
   if (joined_by_two(map, index)) return true;
@@ -202,16 +210,61 @@ EgoActivity ego_activity_at(const Trace& trace, const RoadMap& map, std::size_t 
 }
 
 RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t i) {
+  RoadFeatureMemo memo;
+  return road_feature_at(trace, map, i, memo);
+}
+
+namespace {
+
+RoadFeatureMemo::Box box_of(const std::vector<MapPoint>& outline) {
+  RoadFeatureMemo::Box box;
+  if (outline.empty()) return box;
+  box = {outline[0].x, outline[0].y, outline[0].x, outline[0].y, false};
+  for (const MapPoint& vertex : outline) {
+    box.low_x = std::min(box.low_x, vertex.x);
+    box.low_y = std::min(box.low_y, vertex.y);
+    box.high_x = std::max(box.high_x, vertex.x);
+    box.high_y = std::max(box.high_y, vertex.y);
+  }
+  return box;
+}
+
+void box_outlines(const RoadMap& map, RoadFeatureMemo& memo) {
+  if (memo.boxed) return;
+  for (const Crosswalk& crosswalk : map.crosswalks())
+    memo.crosswalks.push_back(box_of(crosswalk.outline));
+  for (const Junction& junction : map.junctions())
+    memo.junctions.push_back(box_of(junction.outline));
+  memo.boxed = true;
+}
+
+// Whether p is farther than `margin` (and a micrometre more, for rounding) from the box: then
+// near_polygon is false too, and its own pass over the outline is skipped.
+bool clear_of(const RoadFeatureMemo::Box& box, MapPoint p, double margin) {
+  const double reach = std::max(margin, 0.0) + 1e-6;
+  return box.empty || p.x < box.low_x - reach || p.x > box.high_x + reach ||
+         p.y < box.low_y - reach || p.y > box.high_y + reach;
+}
+
+}  // namespace
+
+RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t i,
+                            RoadFeatureMemo& memo) {
+  box_outlines(map, memo);
   const TraceActor& ego = trace.actors[kEgo];
   const MapPoint p{ego.x[i], ego.y[i]};
   const std::optional<LaneIndex> lane = lane_at(ego, i);
   if (lane && on_roundabout(map, *lane)) return RoadFeature::roundabout;
-  for (const Crosswalk& crosswalk : map.crosswalks())
-    if (near_polygon(p, crosswalk.outline, kCrosswalkMargin)) return RoadFeature::crosswalk;
+  for (std::size_t k = 0; k < map.crosswalks().size(); ++k)
+    if (!clear_of(memo.crosswalks[k], p, kCrosswalkMargin) &&
+        near_polygon(p, map.crosswalks()[k].outline, kCrosswalkMargin))
+      return RoadFeature::crosswalk;
   if (lane && map.lane(*lane).junction) return RoadFeature::junction;
-  for (const Junction& junction : map.junctions())
-    if (near_polygon(p, junction.outline, kJunctionMargin)) return RoadFeature::junction;
-  if (lane && merges(map, *lane, ego.s[i], p)) return RoadFeature::merge;
+  for (std::size_t k = 0; k < map.junctions().size(); ++k)
+    if (!clear_of(memo.junctions[k], p, kJunctionMargin) &&
+        near_polygon(p, map.junctions()[k].outline, kJunctionMargin))
+      return RoadFeature::junction;
+  if (lane && merges(map, *lane, ego.s[i], p, memo)) return RoadFeature::merge;
   return RoadFeature::straight;
 }
 

@@ -67,6 +67,23 @@ std::string actor_class_name(const TraceActor& actor);
 EgoActivity ego_activity_at(const Trace& trace, const RoadMap& map, std::size_t sample);
 RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t sample);
 
+// What road_feature_at learns about the map (whether each lane is an acceleration lane, which
+// projects its end on every neighbour: costly on long curved lanes; the bounding boxes of the
+// crosswalks and junctions, which a city map has hundreds of), kept over one pass over a trace so
+// that it is worked out once instead of at every sample. Empty: nothing known.
+struct RoadFeatureMemo {
+  struct Box {
+    double low_x = 0, low_y = 0, high_x = 0, high_y = 0;
+    bool empty = true;  // an outline without points
+  };
+  std::vector<signed char> acceleration_lane;  // by lane: -1 not known yet, else 0 or 1
+  std::vector<Box> crosswalks, junctions;      // by index in the map; built on first use
+  bool boxed = false;
+};
+// road_feature_at with `memo`, which must only ever be used with `map`. The same answer.
+RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t sample,
+                            RoadFeatureMemo& memo);
+
 // The failure mode of a violated verdict, responsibility left empty for the caller. The other
 // actor: the one the ego first collided with, if it collided, with the touching sides; else the
 // nearest road user (vehicle or pedestrian, centre to centre, within kNearbyActor) at the

@@ -61,23 +61,53 @@ double wrap_angle(double a) {
   return a <= -std::numbers::pi ? a + 2 * std::numbers::pi : a;
 }
 
+double pair_frame_heading(const Trace& trace, const RoadMap& map, ActorId reference,
+                          std::size_t sample) {
+  return followed_lane_heading(trace, map, reference, sample)
+      .value_or(trace.actors[reference].heading[sample]);
+}
+
+namespace {
+
+// The other's centre in the frame: ahead (x) and to the left (y).
+void frame_offset(const TraceActor& r, const TraceActor& o, std::size_t sample, double frame,
+                  double& dx, double& dy) {
+  const double c = std::cos(frame);
+  const double s = std::sin(frame);
+  const double ex = o.x[sample] - r.x[sample];
+  const double ey = o.y[sample] - r.y[sample];
+  dx = ex * c + ey * s;
+  dy = -ex * s + ey * c;
+}
+
+BodyGaps gaps_at(const TraceActor& r, const TraceActor& o, std::size_t sample, double frame,
+                 double dx, double dy) {
+  const Extent re = projected_extent(r, r.heading[sample], frame);
+  const Extent oe = projected_extent(o, o.heading[sample], frame);
+  return {std::abs(dx) - re.along - oe.along, std::abs(dy) - re.across - oe.across};
+}
+
+}  // namespace
+
+BodyGaps body_gaps(const Trace& trace, ActorId reference, ActorId other, std::size_t sample,
+                   double frame_heading) {
+  const TraceActor& r = trace.actors[reference];
+  const TraceActor& o = trace.actors[other];
+  double dx = 0, dy = 0;
+  frame_offset(r, o, sample, frame_heading, dx, dy);
+  return gaps_at(r, o, sample, frame_heading, dx, dy);
+}
+
 PairGeometry pair_geometry(const Trace& trace, const RoadMap& map, ActorId reference, ActorId other,
                            std::size_t sample) {
   const TraceActor& r = trace.actors[reference];
   const TraceActor& o = trace.actors[other];
   PairGeometry g;
-  g.frame_heading =
-      followed_lane_heading(trace, map, reference, sample).value_or(r.heading[sample]);
-  const double c = std::cos(g.frame_heading);
-  const double s = std::sin(g.frame_heading);
-  const double ex = o.x[sample] - r.x[sample];
-  const double ey = o.y[sample] - r.y[sample];
-  g.dx = ex * c + ey * s;
-  g.dy = -ex * s + ey * c;
-  const Extent re = projected_extent(r, r.heading[sample], g.frame_heading);
-  const Extent oe = projected_extent(o, o.heading[sample], g.frame_heading);
-  g.gap_lon = std::abs(g.dx) - re.along - oe.along;
-  g.gap_lat = std::abs(g.dy) - re.across - oe.across;
+  g.frame_heading = pair_frame_heading(trace, map, reference, sample);
+  frame_offset(r, o, sample, g.frame_heading, g.dx, g.dy);
+  const BodyGaps gaps = gaps_at(r, o, sample, g.frame_heading, g.dx, g.dy);
+  g.gap_lon = gaps.lon;
+  g.gap_lat = gaps.lat;
   const Velocity rv = velocity(trace, map, reference, sample, g.frame_heading);
   const Velocity ov = velocity(trace, map, other, sample, g.frame_heading);
   g.reference_lon = rv.along;

@@ -36,6 +36,20 @@ struct PairGeometry {
 PairGeometry pair_geometry(const Trace& trace, const RoadMap& map, ActorId reference, ActorId other,
                            std::size_t sample);
 
+// pair_geometry's parts, for a caller that needs only the gaps (behaviour coverage: the velocities
+// cost two more lane lookups). The frame of `reference` at `sample`: the heading of the lane it
+// follows, else its own.
+double pair_frame_heading(const Trace& trace, const RoadMap& map, ActorId reference,
+                          std::size_t sample);
+// The gaps between the bodies along and across the frame `frame_heading` (pair_geometry's gap_lon
+// and gap_lat, the same values).
+struct BodyGaps {
+  double lon = 0;
+  double lat = 0;
+};
+BodyGaps body_gaps(const Trace& trace, ActorId reference, ActorId other, std::size_t sample,
+                   double frame_heading);
+
 // The angle a to (-pi, pi].
 double wrap_angle(double a);
 

@@ -82,6 +82,15 @@ CREATE TABLE sightings (
   PRIMARY KEY (run_id, failure_mode_id, search_id)) WITHOUT ROWID;
 )sql";
 
+// Version 3: the behaviour-coverage features (docs/coverage.md) each search reached, so that a
+// seed's coverage is the union over its searches and a run's over the run's searches.
+constexpr const char* kCoverageSchema = R"sql(
+CREATE TABLE coverage (
+  search_id INTEGER NOT NULL REFERENCES searches (id),
+  feature TEXT NOT NULL,
+  PRIMARY KEY (search_id, feature)) WITHOUT ROWID;
+)sql";
+
 [[noreturn]] void fail(sqlite3* connection, const std::string& doing) {
   throw CampaignDbError("campaign.db: " + doing + ": " + sqlite3_errmsg(connection));
 }
@@ -204,6 +213,7 @@ std::string prepare_schema(sqlite3* connection) {
     if (tables.integer(0) != 0)
       return "it is an SQLite database, but not a campaign's (no schema_version table)";
     execute(connection, kSchema, "creating the schema");
+    execute(connection, kCoverageSchema, "creating the coverage table");
     Statement version(connection, "INSERT INTO schema_version (version) VALUES (?)");
     version.bind(1, kCampaignSchemaVersion).step();
     transaction.commit();
@@ -211,6 +221,13 @@ std::string prepare_schema(sqlite3* connection) {
   }
   Statement version(connection, "SELECT version FROM schema_version");
   const std::int64_t found = version.step() ? version.integer(0) : 0;
+  if (found == 2) {
+    // Schema 2 to 3: the coverage table; the searches recorded before it have none.
+    execute(connection, kCoverageSchema, "adding the coverage table");
+    execute(connection, "UPDATE schema_version SET version = 3", "updating the schema version");
+    transaction.commit();
+    return {};
+  }
   if (found != kCampaignSchemaVersion)
     return "its schema version is " + std::to_string(found) + ", this scenfuzz reads version " +
            std::to_string(kCampaignSchemaVersion) +
@@ -452,7 +469,8 @@ std::int64_t CampaignDb::record_search(const SearchRecord& search,
 
 RecordedSearch CampaignDb::record_search_result(const SearchRecord& search,
                                                 std::span<const CampaignEvaluation> evaluations,
-                                                std::span<const FailureModeRecord> modes) {
+                                                std::span<const FailureModeRecord> modes,
+                                                std::span<const std::string> coverage) {
   Transaction transaction(connection_);
   RecordedSearch recorded;
   std::vector<std::int64_t> found;
@@ -470,6 +488,12 @@ RecordedSearch CampaignDb::record_search_result(const SearchRecord& search,
   for (const std::int64_t mode_id : found) {
     sighting.bind(1, search.run_id).bind(2, mode_id).bind(3, recorded.search_id).step();
     sighting.reset();
+  }
+  Statement feature(connection_,
+                    "INSERT OR IGNORE INTO coverage (search_id, feature) VALUES (?, ?)");
+  for (const std::string& name : coverage) {
+    feature.bind(1, recorded.search_id).bind(2, std::string_view(name)).step();
+    feature.reset();
   }
   transaction.commit();
   return recorded;
@@ -590,6 +614,15 @@ std::vector<CampaignSighting> CampaignDb::list_sightings() {
   return sightings;
 }
 
+std::vector<std::string> CampaignDb::list_coverage(std::int64_t search_id) {
+  if (!has_table(connection_, "coverage")) return {};
+  Statement rows(connection_, "SELECT feature FROM coverage WHERE search_id = ? ORDER BY feature");
+  rows.bind(1, search_id);
+  std::vector<std::string> features;
+  while (rows.step()) features.push_back(rows.text(0));
+  return features;
+}
+
 std::optional<CampaignRun> CampaignDb::unfinished_run() {
   Statement row(connection_,
                 "SELECT id, started, ended, ego_version FROM runs ORDER BY id DESC LIMIT 1");
@@ -614,7 +647,8 @@ std::string check_readable_schema(sqlite3* connection) {
     return "it is an SQLite database, but not a campaign's (no schema_version table)";
   Statement version(connection, "SELECT version FROM schema_version");
   const std::int64_t found = version.step() ? version.integer(0) : 0;
-  if (found == kCampaignSchemaVersion) return {};
+  // Version 2 differs only by the coverage table, which list_coverage does without.
+  if (found == kCampaignSchemaVersion || found == 2) return {};
   return "its schema version is " + std::to_string(found) + ", this scenfuzz reads version " +
          std::to_string(kCampaignSchemaVersion) +
          (found > kCampaignSchemaVersion ? " (a newer scenfuzz wrote it)" : "");

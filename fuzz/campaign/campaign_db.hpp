@@ -32,8 +32,10 @@ class CampaignDbError : public std::runtime_error {
 
 // The schema this build reads and writes; schema_version holds the database's. Version 1 (before
 // `campaign run` existed) lacked the searches' round and arm and the replays table; such a
-// database is refused with a message saying to start the campaign's database afresh.
-inline constexpr std::int64_t kCampaignSchemaVersion = 2;
+// database is refused with a message saying to start the campaign's database afresh. Version 2
+// lacked the coverage table: a run adds it (its searches then have no coverage recorded) and a
+// report reads a version-2 database as one without coverage.
+inline constexpr std::int64_t kCampaignSchemaVersion = 3;
 
 enum class SearchStatus { running, done, stopped, failed };
 enum class FailureModeStatus { new_mode, still_failing, fixed, flaky, regressed };
@@ -179,9 +181,12 @@ class CampaignDb {
   // failure modes it found (each as upsert_failure_mode, and each a sighting), so that a kill
   // never leaves a search without its modes. `search.new_modes` is ignored: the modes its seed did
   // not have before are counted and stored with it.
+  // `coverage`: the behaviour-coverage features the search reached (its summary.json's), stored
+  // in the same transaction.
   RecordedSearch record_search_result(const SearchRecord& search,
                                       std::span<const CampaignEvaluation> evaluations,
-                                      std::span<const FailureModeRecord> modes);
+                                      std::span<const FailureModeRecord> modes,
+                                      std::span<const std::string> coverage = {});
 
   // The regression replay of one failure mode in a run, with the status its verdict sets, in one
   // transaction; a second replay of the same mode in the same run is refused (CampaignDbError).
@@ -203,6 +208,8 @@ class CampaignDb {
   std::vector<CampaignFailureMode> list_failure_modes();
   std::vector<CampaignReplay> list_replays();      // by run, then failure mode
   std::vector<CampaignSighting> list_sightings();  // by run, failure mode, then search
+  // The features a search reached, sorted; none for a version-2 database.
+  std::vector<std::string> list_coverage(std::int64_t search_id);
 
   // --- Reading without the run lock (the report) ---
   // Opens an existing DIR/campaign.db read-only, without taking the campaign's lock, so that a

@@ -34,7 +34,7 @@ std::string picture_of(const fs::path& dir, const std::string& scenario_file) {
   return picture.generic_string();
 }
 
-// modes/<hash>.min.avu beside modes/<hash>.<ext> ([search] tmin), when it exists.
+// modes/<hash>.min.<ext> beside modes/<hash>.<ext> ([search] tmin), when it exists.
 std::string minimised_of(const fs::path& dir, const std::string& scenario_file) {
   if (scenario_file.empty()) return {};
   const std::string minimised = minimised_mode_file(scenario_file);
@@ -42,12 +42,29 @@ std::string minimised_of(const fs::path& dir, const std::string& scenario_file) 
   return fs::is_regular_file(dir / minimised, error) ? minimised : std::string();
 }
 
+// The features each seed's searches reached together, and the whole corpus's.
+void add_coverage(CampaignDb& db, const std::vector<CampaignSearch>& searches,
+                  std::map<std::int64_t, ReportSeed*>& seeds, ReportData& data) {
+  std::map<std::int64_t, std::set<std::string>> by_seed;
+  std::set<std::string> corpus;
+  for (const CampaignSearch& search : searches) {
+    const std::vector<std::string> features = db.list_coverage(search.id);
+    by_seed[search.record.seed_id].insert(features.begin(), features.end());
+    corpus.insert(features.begin(), features.end());
+  }
+  for (const auto& [seed_id, features] : by_seed)
+    if (const auto seed = seeds.find(seed_id); seed != seeds.end())
+      seed->second->features = features.size();
+  data.corpus_features = corpus.size();
+}
+
 // Each seed's searches in order, their robustness values concatenated: the seed's chart, its
 // counts and where each run began; and each run's searches and simulations.
-void add_searches(CampaignDb& db, std::map<std::int64_t, ReportSeed*>& seeds,
+void add_searches(CampaignDb& db, const std::vector<CampaignSearch>& searches,
+                  std::map<std::int64_t, ReportSeed*>& seeds,
                   std::map<std::int64_t, ReportRun*>& runs) {
   std::map<std::int64_t, std::vector<std::optional<double>>> robustness;
-  for (const CampaignSearch& search : db.list_searches()) {
+  for (const CampaignSearch& search : searches) {
     const std::vector<CampaignEvaluation> evaluations = db.list_evaluations(search.id);
     if (const auto run = runs.find(search.record.run_id); run != runs.end()) {
       ++run->second->searches;
@@ -166,7 +183,9 @@ ReportData load_report_data(CampaignDb& db, const fs::path& dir, const std::stri
   for (ReportSeed& seed : data.seeds) seeds[seed.seed.id] = &seed;
   std::map<std::int64_t, ReportRun*> runs;
   for (ReportRun& run : data.runs) runs[run.run.id] = &run;
-  add_searches(db, seeds, runs);
+  const std::vector<CampaignSearch> searches = db.list_searches();
+  add_searches(db, searches, seeds, runs);
+  add_coverage(db, searches, seeds, data);
   const RunEvents events = run_events(db);
   for (CampaignFailureMode& mode : db.list_failure_modes()) {
     ReportFailureMode shown;

@@ -57,6 +57,8 @@ struct ReportSeed {
   std::vector<BestSoFar> best;
   std::vector<RunStart> run_starts;
   std::size_t failure_modes = 0;
+  // Behaviour-coverage features (docs/coverage.md) its searches reached together.
+  std::size_t features = 0;
 };
 
 struct ReportFailureMode {
@@ -76,6 +78,7 @@ struct ReportData {
   std::vector<ReportRun> runs;
   std::vector<ReportSeed> seeds;
   std::vector<ReportFailureMode> failure_modes;
+  std::size_t corpus_features = 0;  // the union over every seed's searches
 };
 
 // Everything the report shows, from `db`; `dir` is the campaign folder, where the pictures are

@@ -284,7 +284,8 @@ std::string seed_row(const ReportSeed& seed) {
          cell(std::to_string(seed.searches), "number") +
          cell(std::to_string(seed.simulations), "number") +
          cell(std::to_string(seed.judged), "number") + cell(best, "number") +
-         cell(std::to_string(seed.failure_modes), "number") + "</tr>\n";
+         cell(std::to_string(seed.failure_modes), "number") +
+         cell(std::to_string(seed.features), "number") + "</tr>\n";
 }
 
 std::string seeds_section(const ReportData& data) {
@@ -293,15 +294,20 @@ std::string seeds_section(const ReportData& data) {
       std::to_string(data.seeds.size()) +
       "</span></h2>\n<p class=\"muted\">Per seed scenario, over all its searches in all runs: the "
       "lowest robustness reached so far against the simulations spent (below zero a spec is "
-      "violated), and the failure modes found.</p>\n";
+      "violated), the failure modes found, and the behaviour-coverage features its searches "
+      "reached (docs/coverage.md; the corpus's total counts each feature once).</p>\n";
   if (data.seeds.empty()) return html + "<p class=\"none-found\">None yet.</p>\n</section>\n";
   html +=
       "<table class=\"seeds\">\n<thead><tr><th>Seed</th><th>Content hash</th>"
       "<th class=\"number\">Searches</th><th class=\"number\">Simulations</th>"
       "<th class=\"number\">Judged</th><th class=\"number\">Best robustness</th>"
-      "<th class=\"number\">Failure modes</th></tr></thead>\n<tbody>\n";
+      "<th class=\"number\">Failure modes</th><th class=\"number\">Features covered</th>"
+      "</tr></thead>\n<tbody>\n";
   for (const ReportSeed& seed : data.seeds) html += seed_row(seed);
-  html += "</tbody>\n</table>\n<div class=\"charts\">\n";
+  // The corpus's features are a union, not the column's sum: a foot row of its own.
+  html += "</tbody>\n<tfoot><tr><th colspan=\"7\">Corpus</th>" +
+          cell(std::to_string(data.corpus_features), "number corpus-features") +
+          "</tr></tfoot>\n</table>\n<div class=\"charts\">\n";
   for (const ReportSeed& seed : data.seeds)
     html += "<figure>\n<h3>" + text(seed.seed.path) + "</h3>\n<figcaption>" +
             counted(seed.simulations, "simulation", "simulations") + " in " +

@@ -131,7 +131,7 @@ RoundEnd record(RoundContext& context, std::int64_t round, const CampaignSearchT
   if (context.tmin && !minimise_new_modes(context, modes)) return RoundEnd::interrupted;
   const SearchRecord search = search_record(context, round, task, result);
   const RecordedSearch recorded =
-      context.db.record_search_result(search, result.evaluations, modes);
+      context.db.record_search_result(search, result.evaluations, modes, result.coverage);
   context.out << "round " << round << ": " << seed.path << " " << arm.spec_name << ": "
               << search.simulations << " simulations";
   if (result.best) context.out << ", best " << format_number(*result.best);

@@ -94,6 +94,7 @@ CampaignSearchResult run_campaign_search(const CampaignSeeds& seeds,
   result.error = problem_text(end, task.folder);
   result.interrupted = end.summary.stop == StopReason::interrupted;
   if (arm.spec < search.outputs().best().size()) result.best = search.outputs().best()[arm.spec];
+  result.coverage.assign(search.outputs().coverage().begin(), search.outputs().coverage().end());
   for (const Finding& finding : search.log().findings()) {
     const auto file = search.finding_files().find(finding.number);
     if (search.outputs().lost(finding) || file == search.finding_files().end()) continue;

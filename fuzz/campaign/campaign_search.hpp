@@ -43,6 +43,8 @@ struct CampaignSearchResult {
   std::vector<CampaignEvaluation> evaluations;
   std::vector<FoundMode> modes;  // in finding order
   std::optional<double> best;    // lowest robustness of the arm's spec
+  // The behaviour-coverage features the search reached, sorted (its summary.json's "coverage").
+  std::vector<std::string> coverage;
 };
 
 // The search's --seed: derived from [search] seed, the run, the round and the arm, so that each

@@ -100,6 +100,7 @@ std::string encode_result(const CampaignSearchResult& result, const std::vector<
               {"evaluations", std::move(evaluations)},
               {"modes", std::move(modes)},
               {"best", optional_number(result.best)},
+              {"coverage", result.coverage},
               {"files", std::move(sent)}}
       .dump();
 }
@@ -119,6 +120,7 @@ CampaignSearchResult decode_result(const std::string& bytes, std::vector<WireFil
          mode.at("responsibility").get<std::string>(), mode.at("finding_file").get<std::string>(),
          mode.at("seed").get<std::uint64_t>()});
   result.best = read_optional_number(value.at("best"));
+  result.coverage = value.at("coverage").get<std::vector<std::string>>();
   files.clear();
   for (const json& file : value.at("files"))
     files.push_back({file.at(0).get<std::string>(), file.at(1).get<std::string>()});

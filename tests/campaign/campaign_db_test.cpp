@@ -261,8 +261,11 @@ TEST_F(CampaignDbTest, RecordsASearchResultWithItsModesInOneTransaction) {
   search.best_robustness = -0.5;
   const std::vector<CampaignEvaluation> evaluations = {{0, 0.5, false}, {1, -0.5, true}};
   const std::vector<FailureModeRecord> modes = {mode(seed, "known"), mode(seed, "fresh")};
-  const RecordedSearch recorded = db->record_search_result(search, evaluations, modes);
+  const std::vector<std::string> coverage = {"light.day", "ego.following", "weather.clear"};
+  const RecordedSearch recorded = db->record_search_result(search, evaluations, modes, coverage);
   EXPECT_EQ(recorded.new_modes, 1);
+  EXPECT_EQ(db->list_coverage(recorded.search_id),
+            (std::vector<std::string>{"ego.following", "light.day", "weather.clear"}));
   ASSERT_EQ(db->list_searches().size(), 1u);
   const SearchRecord stored = db->list_searches()[0].record;
   EXPECT_EQ(stored.new_modes, 1);
@@ -275,8 +278,10 @@ TEST_F(CampaignDbTest, RecordsASearchResultWithItsModesInOneTransaction) {
   ASSERT_EQ(db->list_failure_modes().size(), 2u);
 
   const std::vector<FailureModeRecord> more = {mode(seed, "another")};
-  EXPECT_THROW(db->record_search_result(search, evaluations, more), CampaignDbError);
+  const std::vector<std::string> other = {"road.merge"};
+  EXPECT_THROW(db->record_search_result(search, evaluations, more, other), CampaignDbError);
   EXPECT_EQ(db->list_failure_modes().size(), 2u);
+  EXPECT_EQ(db->list_coverage(recorded.search_id).size(), 3u);
   EXPECT_EQ(db->list_searches().size(), 1u);
 }
 
@@ -374,10 +379,46 @@ TEST_F(CampaignDbTest, RefusesAnOlderSchemaSayingWhatToDo) {
   sqlite_set_version(dir_ / "campaign.db", 1);
   const CampaignDbOpening opening = CampaignDb::open(dir_);
   EXPECT_FALSE(opening.db);
-  EXPECT_NE(opening.error.find("its schema version is 1, this scenfuzz reads version 2"),
+  EXPECT_NE(opening.error.find("its schema version is 1, this scenfuzz reads version 3"),
             std::string::npos)
       << opening.error;
   EXPECT_NE(opening.error.find("move campaign.db away"), std::string::npos) << opening.error;
+}
+
+// A database of schema 2 (before coverage) is migrated when a run opens it: its searches keep
+// everything and have no coverage; later searches record theirs. A report reads it unmigrated.
+TEST_F(CampaignDbTest, MigratesSchemaTwoByAddingTheCoverageTable) {
+  std::int64_t old_search = 0;
+  {
+    auto db = open();
+    ASSERT_TRUE(db);
+    const std::int64_t run = db->begin_run("v1");
+    const std::int64_t seed = db->upsert_seed("a.avu", content_hash("a"));
+    old_search = db->record_search(search_record(run, seed, 1, "s"),
+                                   std::vector<CampaignEvaluation>{{0, 1.0, false}});
+  }
+  sqlite3* connection = nullptr;
+  ASSERT_EQ(sqlite3_open((dir_ / "campaign.db").c_str(), &connection), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(connection, "DROP TABLE coverage", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(connection);
+  sqlite_set_version(dir_ / "campaign.db", 2);
+  {
+    const CampaignDbOpening reading = CampaignDb::open_for_reading(dir_);
+    ASSERT_TRUE(reading.db) << reading.error;
+    EXPECT_EQ(reading.db->schema_version(), 2);
+    EXPECT_TRUE(reading.db->list_coverage(old_search).empty());
+  }
+  auto db = open();
+  ASSERT_TRUE(db);
+  EXPECT_EQ(db->schema_version(), 3);
+  ASSERT_EQ(db->list_searches().size(), 1u);
+  EXPECT_EQ(db->list_evaluations(old_search).size(), 1u);
+  EXPECT_TRUE(db->list_coverage(old_search).empty());
+  SearchRecord search = search_record(1, 1, 1, "t", 1);
+  const std::vector<std::string> coverage = {"ego.following"};
+  const RecordedSearch recorded = db->record_search_result(
+      search, std::vector<CampaignEvaluation>{{0, 2.0, false}}, {}, coverage);
+  EXPECT_EQ(db->list_coverage(recorded.search_id), coverage);
 }
 
 TEST_F(CampaignDbTest, ASecondOpenerIsRefusedNamingTheFirst) {

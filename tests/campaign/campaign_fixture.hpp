@@ -59,6 +59,8 @@ inline std::string canonical_dump(const std::filesystem::path& dir) {
          << " best " << text_of(r.best_robustness) << "\n";
     for (const CampaignEvaluation& e : db.list_evaluations(search.id))
       dump << "  " << e.index << " " << text_of(e.robustness) << " " << e.finding << "\n";
+    for (const std::string& feature : db.list_coverage(search.id))
+      dump << "  covers " << feature << "\n";
   }
   for (const CampaignFailureMode& mode : db.list_failure_modes())
     dump << "mode " << mode.id << " seed " << mode.record.seed_id << " " << mode.record.signature

@@ -146,6 +146,7 @@ TEST_F(CampaignKillTest, KilledAtRandomMomentsItEndsAsAnUninterruptedRun) {
   double seconds = 0;
   const std::string expected = uninterrupted(seconds);
   ASSERT_NE(expected.find("\nmode "), std::string::npos) << expected;
+  ASSERT_NE(expected.find("  covers "), std::string::npos) << expected;
   std::mt19937 random(20261126);
   // Until eight kills or more hit one run: the machine's speed changes under other loads, so a
   // sequence that lets the run end sooner is followed by one with moments half as far apart.

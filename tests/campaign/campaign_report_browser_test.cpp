@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -195,6 +196,11 @@ TEST_F(CampaignReportBrowserTest, TheReportRendersItsTablesAndChartsWithoutAnErr
   ASSERT_TRUE(reading.db) << reading.error;
   std::map<FailureModeStatus, std::size_t> by_status;
   for (const CampaignFailureMode& mode : reading.db->list_failure_modes()) ++by_status[mode.status];
+  std::set<std::string> corpus_features;
+  for (const CampaignSearch& search : reading.db->list_searches())
+    for (const std::string& feature : reading.db->list_coverage(search.id))
+      corpus_features.insert(feature);
+  EXPECT_GE(corpus_features.size(), 3u);
   for (FailureModeStatus status :
        {FailureModeStatus::new_mode, FailureModeStatus::regressed, FailureModeStatus::still_failing,
         FailureModeStatus::flaky, FailureModeStatus::fixed})
@@ -217,6 +223,10 @@ TEST_F(CampaignReportBrowserTest, TheReportRendersItsTablesAndChartsWithoutAnErr
   EXPECT_EQ(body_rows(run.dom, "flaky"), by_status[FailureModeStatus::flaky]);
   EXPECT_EQ(body_rows(run.dom, "fixed"), by_status[FailureModeStatus::fixed]);
   EXPECT_EQ(body_rows(run.dom, "seeds"), 2u);
+  // The corpus's coverage in the seeds table's foot.
+  EXPECT_NE(run.dom.find("<td class=\"number corpus-features\">" +
+                         std::to_string(corpus_features.size()) + "</td>"),
+            std::string::npos);
   EXPECT_EQ(body_rows(run.dom, "summary"), 3u);
   // The seed's name is text, not markup.
   EXPECT_EQ(run.dom.find("<in>"), std::string::npos);

@@ -49,7 +49,8 @@ class CampaignReportDataTest : public ::testing::Test {
 
   std::int64_t search(std::int64_t run, std::int64_t seed,
                       const std::vector<std::optional<double>>& robustness,
-                      const std::vector<std::string>& found_modes = {}) {
+                      const std::vector<std::string>& found_modes = {},
+                      const std::vector<std::string>& coverage = {}) {
     std::vector<CampaignEvaluation> evaluations;
     for (std::size_t i = 0; i < robustness.size(); ++i)
       evaluations.push_back(
@@ -62,7 +63,7 @@ class CampaignReportDataTest : public ::testing::Test {
     search.output_folder = "s";
     std::vector<FailureModeRecord> modes;
     for (const std::string& signature : found_modes) modes.push_back(record(seed, signature));
-    return db_->record_search_result(search, evaluations, modes).search_id;
+    return db_->record_search_result(search, evaluations, modes, coverage).search_id;
   }
 
   static FailureModeRecord record(std::int64_t seed, const std::string& signature) {
@@ -81,7 +82,8 @@ TEST_F(CampaignReportDataTest, SeedsRunsAndFailureModes) {
   const std::int64_t run1 = db_->begin_run("v1");
   const std::int64_t a = db_->upsert_seed("a.avu", content_hash("a"));
   const std::int64_t b = db_->upsert_seed("b.avu", content_hash("b"));
-  search(run1, a, {3.0, std::nullopt, 2.0, 5.0, -1.0}, {"m1", "m2", "m3"});
+  search(run1, a, {3.0, std::nullopt, 2.0, 5.0, -1.0}, {"m1", "m2", "m3"},
+         {"ego.following", "light.day"});
   const std::vector<CampaignFailureMode> first = db_->list_failure_modes();
   ASSERT_EQ(first.size(), 3u);
   const std::int64_t m1 = first[0].id, m2 = first[1].id, m3 = first[2].id;
@@ -93,7 +95,7 @@ TEST_F(CampaignReportDataTest, SeedsRunsAndFailureModes) {
   db_->record_replay(run2, m1, {3, 0, ""});
   db_->record_replay(run2, m2, {0, 0, "modes/m2.avu: cannot read"});
   db_->record_replay(run2, m3, {3, 0, ""});
-  search(run2, a, {0.5, -2.0});
+  search(run2, a, {0.5, -2.0}, {}, {"light.day", "road.merge"});
   const std::int64_t m5 = found(run2, b, "m5").id;
   db_->end_run(run2);
 
@@ -128,6 +130,10 @@ TEST_F(CampaignReportDataTest, SeedsRunsAndFailureModes) {
   EXPECT_EQ(seed_a.run_starts[1].run_id, run2);
   EXPECT_EQ(seed_a.run_starts[1].simulations, 5u);
   EXPECT_EQ(seed_a.failure_modes, 3u);
+  // Its searches' features counted once: ego.following, light.day, road.merge.
+  EXPECT_EQ(seed_a.features, 3u);
+  EXPECT_EQ(data.seeds[1].features, 0u);
+  EXPECT_EQ(data.corpus_features, 3u);
   EXPECT_EQ(data.seeds[1].searches, 0u);
   EXPECT_TRUE(data.seeds[1].best.empty());
   EXPECT_EQ(data.seeds[1].failure_modes, 2u);

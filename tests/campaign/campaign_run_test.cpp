@@ -8,15 +8,16 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "fuzz/campaign/budget_schedule.hpp"
-#include "fuzz/content_hash.hpp"
 #include "fuzz/campaign/scenario_replay.hpp"
 #include "fuzz/cli.hpp"
+#include "fuzz/content_hash.hpp"
 #include "tests/campaign/campaign_fixture.hpp"
 
 namespace scenfuzz::test {
@@ -74,6 +75,12 @@ TEST_F(CampaignRunTest, RunsASmallCampaignEndToEnd) {
     ASSERT_GE(evaluations.size(), search.record.simulations);
     for (std::size_t i = 0; i < evaluations.size(); ++i)
       EXPECT_EQ(evaluations[i].index, static_cast<std::int64_t>(i));
+    // The coverage its summary.json reports, stored with it.
+    const nlohmann::json summary = nlohmann::json::parse(
+        slurp(folder / search.record.output_folder / "summary.json"))["coverage"];
+    const std::vector<std::string> coverage = db->list_coverage(search.id);
+    EXPECT_FALSE(coverage.empty());
+    EXPECT_EQ(coverage, summary["names"].get<std::vector<std::string>>());
   }
   EXPECT_LE(spent, 320u);
   EXPECT_GE(spent, 320u - kMinSearchBudget);  // what is left is less than a minimal search
@@ -179,6 +186,9 @@ TEST_F(CampaignRunTest, TheDatabaseIsTheSameForAnyNumberOfJobs) {
   ASSERT_EQ(run(two, 2), kExitViolated) << err_.str();
   const std::string dump = canonical_dump(one);
   EXPECT_NE(dump.find("\nmode "), std::string::npos) << dump;
+  // Each seed's searches cover its interactions: the cut-in's car, the step-out's pedestrian.
+  EXPECT_NE(dump.find("  covers interaction.car."), std::string::npos) << dump;
+  EXPECT_NE(dump.find("  covers interaction.pedestrian."), std::string::npos) << dump;
   const std::string other = canonical_dump(two);
   EXPECT_TRUE(dump == other) << first_difference(dump, other);
 }

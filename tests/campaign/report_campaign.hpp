@@ -118,7 +118,12 @@ class ReportCampaignTest : public CommandTest {
     record.budget = static_cast<std::uint64_t>(budget);
     record.output_folder = folder_name;
     record.spec = spec;
-    db.record_search(record, result.evaluations);
+    // With the coverage its summary.json reports, as the campaign records it.
+    const std::vector<std::string> coverage = nlohmann::json::parse(slurp(folder / "summary.json"))
+                                                  .at("coverage")
+                                                  .at("names")
+                                                  .get<std::vector<std::string>>();
+    db.record_search_result(record, result.evaluations, {}, coverage);
     for (const FailureModeRecord& mode : result.modes) db.upsert_failure_mode(run_id, mode);
     return result;
   }

@@ -45,9 +45,12 @@ std::string search_result(const fs::path& out) {
       if (i != wall || &row == &rows.front()) result += row[i] + "\x1f";
     result += "\n";
   }
-  nlohmann::json findings = nlohmann::json::parse(slurp(out / "summary.json"))["findings"];
+  const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  nlohmann::json findings = summary["findings"];
   for (auto& finding : findings) finding.erase("file");
   result += findings.dump() + "\n";
+  // The behaviour coverage reached: replayed evaluations bring theirs from the journal.
+  result += summary["coverage"].dump() + "\n";
   for (const auto& entry : fs::directory_iterator(out / "findings")) {
     std::string text = slurp(entry.path());
     for (std::size_t at = text.find(out.string()); at != std::string::npos;
@@ -141,6 +144,7 @@ TEST_F(OutputJournalTest, KillNineAndResumeGiveTheUninterruptedSearch) {
   ASSERT_EQ(resumed.exit_code, 1) << resumed.err;
   EXPECT_FALSE(has_temporary_files(out));
   EXPECT_EQ(nlohmann::json::parse(slurp(out / "summary.json"))["complete"], true);
+  EXPECT_GT(nlohmann::json::parse(slurp(out / "summary.json"))["coverage"]["features"], 0);
   EXPECT_EQ(search_result(out), expected);
 }
 
