@@ -23,7 +23,7 @@ enum class TermKind {
   object,       // a trace projection: `source` of actor `name` (empty for the ego)
   column,       // a numeric column `name` (x, y, speed, ...) of operands[0], an object term
   position,     // a point on the map, in `position`
-  vector,       // a 2-D vector (velocity, acceleration): operands are two number terms
+  vector,       // a vector (velocity, acceleration): two or three number terms (x, y[, z up])
   add,
   subtract,
   multiply,

@@ -77,8 +77,14 @@ struct Argument {
   const PerceivedActor* perceived = nullptr;  // body: seen through the ego's perception
   MapPoint point;                             // point
   std::vector<double> first, second;          // vector: x and y per sample; speed: first
+  std::vector<double> up;                     // vector: z per sample, if written (x, y, z)
   PerceivedAcceleration acceleration;         // perceived bodies, for acc(...)
 };
+
+// The vertical component: a written vector's z, else 0 (simulated actors move in the plane).
+double up_at(const Argument& argument, std::size_t i) {
+  return argument.up.empty() ? 0.0 : argument.up[i];
+}
 
 bool perceived_at(const Argument& argument, std::size_t i) {
   return argument.perceived == nullptr || argument.perceived->detected[i];
@@ -214,10 +220,13 @@ Argument resolve_argument(const Context& context, const std::string& function,
       argument.point = placed_point(context, term);
       return argument;
     case TermKind::vector:
-      if ((function != "vel" && function != "acc") || term.operands.size() != 2) break;
+      if ((function != "vel" && function != "acc") || term.operands.size() < 2 ||
+          term.operands.size() > 3)
+        break;
       argument.kind = Argument::Kind::vector;
       argument.first = number_values(context, term.operands[0]);
       argument.second = number_values(context, term.operands[1]);
+      if (term.operands.size() == 3) argument.up = number_values(context, term.operands[2]);
       return argument;
     default:
       if (function != "spd") break;
@@ -225,10 +234,11 @@ Argument resolve_argument(const Context& context, const std::string& function,
       argument.first = number_values(context, term);
       return argument;
   }
-  const std::string expected = function == "dis"    ? "a trace projection or a position"
-                               : function == "spd"  ? "a trace projection or a speed"
-                               : function == "diff" ? "a trace projection"
-                                                    : "a trace projection or a vector (x, y)";
+  const std::string expected = function == "dis"   ? "a trace projection or a position"
+                               : function == "spd" ? "a trace projection or a speed"
+                               : function == "diff"
+                                   ? "a trace projection"
+                                   : "a trace projection or a vector (x, y) or (x, y, z)";
   throw OracleError(term.location, function + "(...) takes " + expected + " here");
 }
 
@@ -250,9 +260,11 @@ SignalValues distance_signal(const Context& context, const Argument& a, const Ar
 SignalValues velocity_signal(const Context& context, const Argument& a, const Argument& b) {
   std::vector<double> values(context.trace.sample_count());
   for (std::size_t i = 0; i < values.size(); ++i)
-    values[i] = perceived_at(a, i) && perceived_at(b, i)
-                    ? norm(velocity(context.trace, a, i) - velocity(context.trace, b, i))
-                    : kUnperceived;
+    values[i] =
+        perceived_at(a, i) && perceived_at(b, i)
+            ? std::hypot(norm(velocity(context.trace, a, i) - velocity(context.trace, b, i)),
+                         up_at(a, i) - up_at(b, i))
+            : kUnperceived;
   return {std::move(values), false};
 }
 
@@ -273,7 +285,9 @@ SignalValues acceleration_signal(const Context& context, const Argument& a, cons
   std::vector<double> values(context.trace.sample_count());
   for (std::size_t i = 0; i < values.size(); ++i)
     values[i] = acceleration_known(a, i) && acceleration_known(b, i)
-                    ? norm(acceleration(context.trace, a, i) - acceleration(context.trace, b, i))
+                    ? std::hypot(norm(acceleration(context.trace, a, i) -
+                                      acceleration(context.trace, b, i)),
+                                 up_at(a, i) - up_at(b, i))
                     : kUnperceived;
   return {std::move(values), false};
 }

@@ -102,7 +102,10 @@ bool is_weather_kind(std::string_view word) { return contains(kWeatherKinds, wor
 bool is_weather_level(std::string_view word) { return contains(kWeatherLevels, word); }
 bool is_enumeration_word(std::string_view word) { return contains(kEnumerationWords, word); }
 bool is_waypoint_function(std::string_view name) { return contains(kWaypointFunctions, name); }
-bool is_uniform_function(std::string_view name) { return name == "uniform" || name == "Uniform"; }
+// `U` and `u` are the older scenest grammar's short forms (../shared/grammars/scenest.txt).
+bool is_uniform_function(std::string_view name) {
+  return name == "uniform" || name == "Uniform" || name == "U" || name == "u";
+}
 bool is_motion_function(std::string_view name) {
   return is_waypoint_function(name) || is_uniform_function(name) || name == "Random";
 }

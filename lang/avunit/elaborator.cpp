@@ -620,14 +620,15 @@ class Elaborator {
   Item temporal(const Syntax& syntax) {
     Item operand = evaluate(syntax.children[0]);
     std::optional<Formula> inner = need_formula(operand);
-    if (syntax.text == "X" && syntax.interval)
-      return fail(syntax.interval->location, "'X' takes no interval: it is the next sample");
     std::optional<TimeInterval> window = interval(syntax.interval);
     if (!inner) return make_item(ItemKind::error, syntax.location);
     Formula formula;
-    formula.kind = syntax.text == "G"   ? FormulaKind::always
-                   : syntax.text == "F" ? FormulaKind::eventually
-                                        : FormulaKind::next;
+    // `X[a, b] p` is read as `F[a, b] p` (docs/avunit.md): "p at some time between a and b
+    // seconds from now". The literal MTL reading (the next sample, if it is a to b seconds away)
+    // is false at every sample of a fixed-step trace, which is not what a file means by it.
+    formula.kind = syntax.text == "G"                      ? FormulaKind::always
+                   : syntax.text == "F" || syntax.interval ? FormulaKind::eventually
+                                                           : FormulaKind::next;
     formula.interval = window;
     formula.operands.push_back(std::move(*inner));
     formula.location = syntax.location;
@@ -993,6 +994,12 @@ class Elaborator {
       if (!check_arity(syntax, arguments, 1, 1, "one state: " + name + "(state)"))
         return make_item(ItemKind::error, syntax.location);
       motion.kind = name == "Random" ? MotionKind::random_walk : MotionKind::uniform;
+      // `t |= U (p)`: until needs a left side, so U here is uniform motion. Say both readings.
+      if (name == "U" &&
+          (arguments[0].kind == ItemKind::formula || arguments[0].kind == ItemKind::term))
+        return fail(arguments[0].location,
+                    "'U(...)' with nothing before it is uniform motion and takes a state; until "
+                    "is written 'a U b'");
       std::optional<State> state = need_state(arguments[0]);
       if (!state) return make_item(ItemKind::error, syntax.location);
       motion.states.push_back(std::move(*state));
@@ -1010,6 +1017,14 @@ class Elaborator {
     const Item& source = arguments.size() == 1 ? arguments[0] : coordinates;
     std::optional<Position> position = need_position(source);
     if (!position) return make_item(ItemKind::error, syntax.location);
+    if (position->kind == PositionKind::lane) {
+      // scenest's grammar allows `IMU "lane"->s`; a lane position is a point of the map whatever
+      // the frame, so the frame changes nothing. Said once, so the user knows it is ignored.
+      diagnostics_.warning(syntax.location, "the frame " + syntax.text +
+                                                " has no effect on a lane position: it is the "
+                                                "point s metres along the lane in any frame");
+      return make_item(ItemKind::position, syntax.location, std::move(*position));
+    }
     if (position->kind != PositionKind::coordinate)
       return fail(syntax.location, syntax.text + " applies to coordinates, not to a lane position");
     if (position->frame != Frame::enu && position->frame != frame)
@@ -1182,21 +1197,53 @@ class Elaborator {
       term.location = argument.location;
       return term;
     }
-    if ((function == "vel" || function == "acc") && all_numbers(argument) &&
-        argument.elements.size() == 2) {
-      SpecTerm term;
-      term.kind = TermKind::vector;
-      term.location = argument.location;
+    if (function == "vel" || function == "acc") {
+      if (std::optional<SpecTerm> vector = vector_argument(argument)) return vector;
+    }
+    if (function == "spd" && argument.kind == ItemKind::number) return need_term(argument);
+    std::string expected = function == "dis"   ? "a trace projection or a position"
+                           : function == "spd" ? "a trace projection or a speed"
+                           : function == "diff"
+                               ? "a trace projection"
+                               : "a trace projection or a vector (x, y) or (x, y, z)";
+    mismatch(argument, expected + " as argument of " + function + "(...)");
+    return std::nullopt;
+  }
+
+  // A vel/acc vector: `(x, y)`, `(x, y, z)` or coordinates summed to one, such as `(1, 2, -3) + v`.
+  // The grammar's <velocity> is a <coordinate>, whose third component is the frame's up axis
+  // (ENU/IMU are east-north-up / right-forward-up), so z is the vertical component. Only ENU:
+  // a vector in another frame would have to be rotated, which the oracle does not do.
+  std::optional<SpecTerm> vector_argument(const Item& argument) {
+    bool numbers =
+        all_numbers(argument) && (argument.elements.size() == 2 || argument.elements.size() == 3);
+    bool summed = argument.kind == ItemKind::position &&
+                  payload_of<Position>(argument).kind == PositionKind::coordinate &&
+                  payload_of<Position>(argument).frame == Frame::enu;
+    if (!numbers && !summed) return std::nullopt;
+    SpecTerm term;
+    term.kind = TermKind::vector;
+    term.location = argument.location;
+    if (numbers) {
       for (const Item& element : argument.elements) term.operands.push_back(*need_term(element));
       return term;
     }
-    if (function == "spd" && argument.kind == ItemKind::number) return need_term(argument);
-    std::string expected = function == "dis"    ? "a trace projection or a position"
-                           : function == "spd"  ? "a trace projection or a speed"
-                           : function == "diff" ? "a trace projection"
-                                                : "a trace projection or a vector (x, y)";
-    mismatch(argument, expected + " as argument of " + function + "(...)");
-    return std::nullopt;
+    const Position& position = payload_of<Position>(argument);
+    for (const Value* component : {&position.x, &position.y}) {
+      SpecTerm number;
+      number.kind = TermKind::number;
+      number.value = *component;
+      number.location = argument.location;
+      term.operands.push_back(std::move(number));
+    }
+    if (position.z) {
+      SpecTerm number;
+      number.kind = TermKind::number;
+      number.value = *position.z;
+      number.location = argument.location;
+      term.operands.push_back(std::move(number));
+    }
+    return term;
   }
 
   // stoplineAhead(2): true while the stop line is within 2 m. The distance is a constant.

@@ -515,12 +515,15 @@ class Parser {
         take();
         return node;
       case TokenKind::identifier:
-        if (token.text == "U")
+        // Where an operand is expected, `U(` is scenest's uniform motion `U(state)`; after an
+        // operand `U` is until (see binary_level). A bare `U` here can be neither.
+        if (token.text == "U" && peek(1).kind != TokenKind::left_paren)
           fail(token.location,
                "'U' is the until operator ('a U b'); uniform motion is written "
-               "'uniform(state)'");
+               "'uniform(state)' or 'U(state)'");
         if (token.text == "CreateScenario" && peek(1).kind == TokenKind::left_brace)
           return scenario();
+        if (is_frame_word(token.text) && frame_operand_at(1)) return framed();
         node.kind = SyntaxKind::identifier;
         node.text = token.text;
         take();
@@ -545,6 +548,41 @@ class Parser {
         return deepen(node);
       default: fail(token.location, "expected a value, found " + describe(token));
     }
+  }
+
+  static bool is_frame_word(const std::string& word) {
+    return word == "IMU" || word == "ENU" || word == "WGS84";
+  }
+
+  // `IMU yyyy`, `IMU "lane"->5`: a frame before a name, a string or a number. `IMU (x, y)` stays
+  // a call, as it always parsed.
+  bool frame_operand_at(std::size_t ahead) {
+    TokenKind kind = peek(ahead).kind;
+    return kind == TokenKind::identifier || kind == TokenKind::string || kind == TokenKind::number;
+  }
+
+  // A frame word and its operand, as the call `IMU(operand)` the elaborator already reads. The
+  // operand may be a lane position `a -> s`: scenest's <position> puts the frame before its
+  // <coordinate>, which includes `<lane ID> -> <real value>`.
+  Syntax framed() {
+    Syntax node;
+    node.kind = SyntaxKind::call;
+    node.text = peek().text;
+    node.location = take().location;
+    Syntax operand = postfix();
+    if (at(TokenKind::arrow)) {
+      Syntax lane;
+      lane.kind = SyntaxKind::binary;
+      lane.op = take().kind;
+      Syntax offset = expression(kAdd);
+      lane.location = span(operand.location, offset.location);
+      lane.children.push_back(std::move(operand));
+      lane.children.push_back(std::move(offset));
+      operand = std::move(deepen(lane));
+    }
+    node.location = span(node.location, operand.location);
+    node.children.push_back(std::move(operand));
+    return deepen(node);
   }
 
   // CreateScenario{load(map); ego; npcs; pedestrians; obstacles; [environment;] [traffic;]}

@@ -379,8 +379,12 @@ class Printer {
                term.name + "]";
       case TermKind::column: return term_text(term.operands[0]) + "." + term.name;
       case TermKind::position: return position_text(*term.position);
-      case TermKind::vector:
-        return "(" + term_text(term.operands[0]) + ", " + term_text(term.operands[1]) + ")";
+      case TermKind::vector: {
+        std::string text = "(";
+        for (std::size_t i = 0; i < term.operands.size(); ++i)
+          text += (i ? ", " : "") + term_text(term.operands[i]);
+        return text + ")";
+      }
       case TermKind::negate: return "-" + term_operand(term.operands[0], 5);
       default: break;
     }

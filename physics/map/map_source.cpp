@@ -81,6 +81,21 @@ BuiltinMapRequest parse_builtin_map_request(std::string_view text) {
   return request;
 }
 
+std::string normalised_map_name(std::string_view name) {
+  while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
+  while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
+  std::string folder;
+  for (char c : name) {
+    if (c == ' ' || c == '-')
+      folder += '_';
+    else if (c >= 'A' && c <= 'Z')
+      folder += static_cast<char>(c - 'A' + 'a');
+    else
+      folder += c;
+  }
+  return folder;
+}
+
 fs::path resolve_map_file(std::string_view name, const MapSearchPath& search_path) {
   std::error_code error;
   if (name.empty()) throw MapError("map name is empty");
@@ -95,13 +110,20 @@ fs::path resolve_map_file(std::string_view name, const MapSearchPath& search_pat
   if (looks_like_path(name)) return as_path(fs::path(name));
   for (const fs::path& directory : search_path.directories)
     if (auto file = map_file_in(directory / std::string(name))) return *file;
+  // "San Francisco" names the san_francisco folder; the exact name came first.
+  const std::string folder = normalised_map_name(name);
+  if (folder != name)
+    for (const fs::path& directory : search_path.directories)
+      if (auto file = map_file_in(directory / folder)) return *file;
   // A bare name that is no map on the search path may still be a file here.
   if (fs::exists(fs::path(name), error)) return as_path(fs::path(name));
   std::string message = "map '" + std::string(name) + "' not found: it is not a built-in map (";
   for (std::size_t i = 0; i < builtin_maps().size(); ++i)
     message += (i ? ", " : "") + builtin_maps()[i].name;
   message += ") and no folder of the map search path has " + std::string(name) +
-             "/base_map.bin or base_map.txt; searched:";
+             "/base_map.bin or base_map.txt" +
+             (folder != name ? " (nor " + folder + "/, its folder name)" : std::string()) +
+             "; searched:";
   for (const fs::path& directory : search_path.directories)
     message += " '" + directory.string() + "'";
   message += " (add folders with --map-path DIR or SCENFUZZ_MAP_PATH)";

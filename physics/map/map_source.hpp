@@ -34,7 +34,13 @@ struct BuiltinMapRequest {
 // Throws MapError for a malformed parameter list (missing '=', a value that is not a number).
 BuiltinMapRequest parse_builtin_map_request(std::string_view text);
 
-// The file an Apollo map name or path stands for; throws MapError listing where it looked.
+// Apollo's display name of a map as its folder name: "San Francisco" -> "san_francisco" (Dreamview
+// shows folder names in title case with spaces; LawBreaker files write those). Lower case, and
+// spaces and '-' to '_', leading and trailing spaces dropped.
+std::string normalised_map_name(std::string_view name);
+
+// The file an Apollo map name or path stands for; throws MapError listing where it looked. A bare
+// name that is no folder is tried again normalised, so the folder used is in the returned path.
 std::filesystem::path resolve_map_file(std::string_view name, const MapSearchPath& search_path);
 
 // The map description a name stands for. `extra_parameters` (a scenario's map parameters)

@@ -1,8 +1,10 @@
 // place_position: from the IR's positions to map poses.
 #include "physics/map/scenario_position.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "lang/number_format.hpp"
 #include "physics/map/utm.hpp"
@@ -11,13 +13,34 @@ namespace scenfuzz {
 
 namespace {
 
+// "lane_2" < "lane_10": ids compared by their text before the trailing digits, then by number.
+bool natural_less(const std::string& a, const std::string& b) {
+  auto split = [](const std::string& id) {
+    std::size_t digits = id.find_last_not_of("0123456789") + 1;
+    std::string number = id.substr(digits);
+    return std::tuple(id.substr(0, digits), number.size(), number);
+  };
+  return split(a) < split(b);
+}
+
+// "its lanes are lane_0 .. lane_1523": where a missing lane's id would have to fall. A lane id
+// from a newer release of a map is the usual cause, and the range shows it.
+std::string lane_range(const RoadMap& map) {
+  if (map.lanes().empty()) return "it has no lanes";
+  auto [first, last] =
+      std::minmax_element(map.lanes().begin(), map.lanes().end(),
+                          [](const Lane& a, const Lane& b) { return natural_less(a.id, b.id); });
+  return "its lanes are " + first->id + " .. " + last->id + ", " +
+         std::to_string(map.lanes().size()) + " lanes";
+}
+
 std::optional<PlacedPosition> place_on_lane(const RoadMap& map, const Position& position,
                                             std::span<const double> values,
                                             Diagnostics& diagnostics) {
   auto lane = map.find_lane(position.lane);
   if (!lane) {
-    diagnostics.error(position.location,
-                      "lane '" + position.lane + "' is not in map '" + map.name() + "'");
+    diagnostics.error(position.location, "lane '" + position.lane + "' is not in map '" +
+                                             map.name() + "' (" + lane_range(map) + ")");
     return std::nullopt;
   }
   double s = evaluate(position.s, values);

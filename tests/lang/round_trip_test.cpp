@@ -20,6 +20,20 @@ void expect_round_trip(const std::string& text) {
   EXPECT_EQ(parsed.scenario, reparsed.scenario) << printed;
 }
 
+// Issue 21's parser gaps, as real LawBreaker files write them.
+TEST(RoundTrip, ScenestShortFormsFramesAndThreeComponentVectors) {
+  expect_round_trip(
+      "a = \"l\"; b2 = 5; yyyy = (1, 2); v = (1, 1, 1);\n"
+      "ego = AV((IMU a -> b2), (\"l\"->100));\n"
+      "npc2 = Vehicle((IMU yyyy), U((\"l\"->30, , 5)));\n"
+      "npc3 = Vehicle((\"l\"->10, , 5), u((\"l\"->30, , 5)));\n"
+      "ped = Pedestrian(((1, 2), , 1));\n"
+      "s = CreateScenario{load(\"San Francisco\"); ego; {npc2, npc3}; {ped}; {};};\n"
+      "Trace t = EXE(s);\n"
+      "t |= G (vel(t[truth][ped], (1, 2, +5)) > 0) & G (acc(t[truth][npc2], (1, 2, -3) + v) > 0)"
+      " & X[1, 1.5] (spd(t[ego], 0) > 1);\n");
+}
+
 TEST(RoundTrip, HeadingRelatedToAnActorPrintedLater) {
   expect_round_trip(
       "npc2 = Vehicle((\"l\"->50));\n"

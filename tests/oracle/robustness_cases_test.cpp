@@ -191,6 +191,20 @@ TEST(RobustnessCases, BoundedAlwaysAndEventually) {
   expect_robustness("G[0.25:0.75](x > 0)", signals, {kInf, kInf, kInf, kInf});
 }
 
+// `X[a, b] p` (scenest, real LawBreaker files) is read as `F[a, b] p`: p between a and b seconds
+// ahead. Not the literal next sample, which on a 1 s trace would never lie in [1, 1.5] only by
+// luck of the sampling.
+TEST(RobustnessCases, NextWithAnIntervalIsTheShiftedEventually) {
+  const Signals signals = one_signal({3, 1, 2, 5});
+  expect_robustness("X[1, 1.5](x > 0)", signals, {1, 2, 5, -kInf});
+  expect_robustness("X[1:2](x > 0)", signals, {2, 5, 5, -kInf});
+  expect_robustness("X[0.25, 0.75](x > 0)", signals, {-kInf, -kInf, -kInf, -kInf});
+  expect_robustness("~X[1, 1.5](x > 2)", signals, {1, 0, -3, kInf});
+  // On uneven sampling, too: the window, not the next sample.
+  Signals uneven{{0, 0.5, 2, 2.2, 5}, {{"x", {4, 2, 3, 1, 6}}}, {}};
+  expect_robustness("X[1:2](x > 0)", uneven, {3, 3, -kInf, -kInf, -kInf});
+}
+
 TEST(RobustnessCases, NegativeLowerBoundsLookIntoThePast) {
   const Signals signals = one_signal({3, 1, 2, 5});
   expect_robustness("F[-1:0](x > 0)", signals, {3, 3, 2, 5});

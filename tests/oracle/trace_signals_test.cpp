@@ -155,6 +155,17 @@ TEST_F(TraceSignalsTest, VelIsTheNormOfTheVelocityDifference) {
   EXPECT_DOUBLE_EQ(perceived[4], 1000);
 }
 
+// `vel(a, (x, y, z))`: z is the up component (the grammar's <coordinate>), and simulated agents
+// move in the plane, so it adds to the difference as a vertical one.
+TEST_F(TraceSignalsTest, ThreeComponentVectorsHaveAVerticalComponent) {
+  for (std::size_t i = 0; i < 5; ++i) actor("ego").speed[i] = 3;
+  EXPECT_NEAR(values_of("vel(trace[ego], (3, 0, 4))")[0], 4, 1e-12);
+  EXPECT_NEAR(values_of("vel(trace[ego], (0, 0, +4))")[0], 5, 1e-12);
+  EXPECT_NEAR(values_of("vel((3, 0, 12), (0, 4))")[0], 13, 1e-12);
+  EXPECT_NEAR(values_of("vel((1, 2, -3) + (2, 2, 3), (0, 0, 12))")[0], 13, 1e-12);
+  EXPECT_NEAR(values_of("acc(trace[ego], (0, 0, -2))")[0], 2, 1e-12);
+}
+
 TEST_F(TraceSignalsTest, AReversingAgentsVelocityAndAccelerationPointBackwards) {
   // The npc backs up towards the ego at 4 m/s, facing east, and speeds up at 1 m/s^2; the ego
   // drives east at 10 m/s.

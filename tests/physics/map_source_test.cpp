@@ -318,6 +318,27 @@ TEST(MapSourceResolve, NameInASearchPathFolder) {
   EXPECT_EQ(resolve_map_file("village", search_path), village);
 }
 
+// LawBreaker files write Dreamview's display names: "San Francisco" is the san_francisco folder.
+TEST(MapSourceResolve, DisplayNamesAreNormalisedToFolderNames) {
+  EXPECT_EQ(normalised_map_name("San Francisco"), "san_francisco");
+  EXPECT_EQ(normalised_map_name(" Borregas Ave "), "borregas_ave");
+  EXPECT_EQ(normalised_map_name("Sunnyvale-Big-Loop"), "sunnyvale_big_loop");
+  EXPECT_EQ(normalised_map_name("san_francisco"), "san_francisco");
+
+  const TempDir temp;
+  const fs::path folder = temp.write("maps/san_francisco/base_map.txt", "not read");
+  const MapSearchPath search_path{{temp.path() / "maps"}};
+  EXPECT_EQ(resolve_map_file("San Francisco", search_path), folder);
+  EXPECT_EQ(resolve_map_file("san_francisco", search_path), folder);
+  // A folder of the exact name wins over the normalised one.
+  const fs::path exact = temp.write("maps/San Francisco/base_map.txt", "not read");
+  EXPECT_EQ(resolve_map_file("San Francisco", search_path), exact);
+  // Nothing under either name: the message names both.
+  EXPECT_THAT(map_error([&] { resolve_map_file("Borregas Ave", search_path); }),
+              HasSubstr("no folder of the map search path has Borregas Ave/base_map.bin or "
+                        "base_map.txt (nor borregas_ave/, its folder name)"));
+}
+
 TEST(MapSourceResolve, FirstFolderWins) {
   const TempDir temp;
   const fs::path first = temp.path() / "first", second = temp.path() / "second";

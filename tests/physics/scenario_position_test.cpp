@@ -69,6 +69,25 @@ TEST(PlacePosition, UnknownLaneIsAnErrorAtThePosition) {
   EXPECT_THAT(diagnostics.all()[0].message, HasSubstr("lane 'lane_9' is not in map"));
 }
 
+// A lane id from a newer release of a map (CausAVFuzzer's lane_1560 on a san_francisco whose
+// lanes end at lane_1523): the message shows the map's range, in numeric order.
+TEST(PlacePosition, UnknownLaneNamesTheMapsLaneRange) {
+  MapDescription description = test::two_lane_road();
+  description.lanes.clear();
+  double y = 0;
+  for (const char* id : {"lane_10", "lane_2", "lane_1523", "lane_0", "lane_99"}) {
+    description.lanes.push_back(test::straight_lane(id, {0, y}, {100, y}));
+    y += 10;
+  }
+  RoadMap map = build_road_map(description);
+  Diagnostics diagnostics;
+  EXPECT_FALSE(place_position(map, on_lane("lane_1560", constant_value(1)), {}, {}, diagnostics));
+  ASSERT_EQ(diagnostics.error_count(), 1u);
+  EXPECT_EQ(diagnostics.all()[0].message,
+            "lane 'lane_1560' is not in map 'two_lane_road' (its lanes are lane_0 .. lane_1523, "
+            "5 lanes)");
+}
+
 TEST(PlacePosition, Wgs84IsProjectedWithTheMapHeader) {
   RoadMap map = geo_referenced_map();
   Diagnostics diagnostics;
