@@ -72,7 +72,8 @@ enum class DriverReason {
   lane_change,  // waiting for a gap in the next lane
   creeping,     // past pedestrians that stood in its way longer than its patience
   sight,        // no faster than it can stop within what it can see
-  give_way,     // turning left: waiting for a gap in the oncoming traffic
+  give_way,     // turning left: waiting for a gap in the oncoming traffic; or held at a
+                // junction's entry by the junction priority rule (hold_at_junction)
 };
 
 class ReferenceDriver {

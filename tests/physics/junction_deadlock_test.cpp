@@ -54,9 +54,8 @@ bool cleared(const Trace& trace, ActorId k) {
 }
 
 // One car on each arm's inbound lane, all as far from the box and as fast, so that they reach it
-// together: north and south turn left across the others, east and west go straight on. Without a
-// rule for who goes first inside the box, they all drive in and stand there, each in another's
-// way, until the run ends.
+// together, and every one turns left across the others (a pinwheel). Without a rule for who goes
+// first, they all drive in and stand in the box, each in another's way, until the run ends.
 const std::string kFourArms =
     "north = Vehicle((\"north_in_0\"->100, , 8), , (\"east_out_0\"->60));\n"
     "east = Vehicle((\"east_in_0\"->100, , 8), , (\"south_out_0\"->60));\n"
@@ -81,9 +80,10 @@ TEST(JunctionDeadlockTest, FourCarsArrivingTogetherOnEveryArmAllClearTheBox) {
         << trace->actors[k].x.back() << ", " << trace->actors[k].y.back() << ")";
 }
 
-// The reference ego as the car from the south going straight on, arriving a little before the
-// others: the car from the north turns left across it, the one from the east turns left into the
-// south arm, the one from the west goes straight on. Without the rule all four stand in the box.
+// The reference ego as the car from the south going straight on, arriving a little after two of
+// the others: the car from the north turns left across it, the one from the east turns left into
+// the south arm, the one from the west goes straight on. Without the rule all four stand in the
+// box.
 TEST(JunctionDeadlockTest, TheEgoArrivingWithThreeCarsGetsThroughTheBox) {
   const RoadMap map = unsignalled_crossroads();
   const std::string ego = "ego = AV((\"south_in_0\"->60, , 8), (\"north_out_0\"->60));\n";
