@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "physics/ego/sight_distance.hpp"
+#include "physics/map/lane_conflicts.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/map/polygon.hpp"
 
@@ -386,6 +387,82 @@ void ReferenceDriver::add_road_end(double speed) {
   if (gap <= near) constraints_.push_back({gap, kRoadEndClearance, 0, false, DriverReason::target});
 }
 
+// The junction priority rule (docs/simulation.md, "Junctions"), as the reactive NPCs keep it:
+// before a junction it can still stop for, the ego waits at the entry while (a) a lead it would
+// stop behind stands or crawls so near that the ego would stand inside the junction (do not block
+// the box), or (b) a vehicle inside the junction is on a lane crossing or merging with the ego's
+// (it entered first and clears it). Held longer than its patience it goes on, still stopping for
+// whatever is in its path (a standstill breaker, as for a car parked in the junction).
+void ReferenceDriver::hold_at_junction(const DriverInput& input, double front_s) {
+  auto stretch = route_.junction_ahead(front_s);
+  const double speed = input.ego.speed;
+  if (!stretch || stretch->entry <= front_s || stretch->entry == released_entry_) {
+    held_since_junction_ = -1;
+    return;
+  }
+  // m before the entry from which the ego looks at the junction: beyond it, whoever is inside
+  // now has long left when the ego arrives.
+  constexpr double kJunctionNotice = 40;
+  const double to_entry = stretch->entry - front_s;
+  if (to_entry > kJunctionNotice || to_entry < speed * speed / (2 * vehicle_.max_deceleration))
+    return;
+  // Who is inside is looked at twice a second, as a driver glances round a junction.
+  constexpr double kGlanceInterval = 0.5;  // s
+  if (input.time >= next_glance_) {
+    next_glance_ = input.time + kGlanceInterval;
+    crossing_inside_ = crossing_inside(input, *stretch);
+  }
+  if (!box_blocked(*stretch, front_s) && !crossing_inside_) {
+    held_since_junction_ = -1;
+    return;
+  }
+  if (speed < kStoppedSpeed && held_since_junction_ < 0) held_since_junction_ = input.time;
+  if (held_since_junction_ >= 0 &&
+      input.time - held_since_junction_ >= settings_.junction_patience) {
+    released_entry_ = stretch->entry;
+    held_since_junction_ = -1;
+    return;
+  }
+  constraints_.push_back({to_entry, settings_.stop_line_gap, 0, false, DriverReason::give_way});
+}
+
+bool ReferenceDriver::box_blocked(const JunctionStretch& stretch, double front_s) const {
+  constexpr double kCrawling = 1.0;  // m/s: slower than this, a lead holds the ego where it is
+  for (const Constraint& constraint : constraints_) {
+    if (!constraint.is_object || constraint.reason != DriverReason::lead) continue;
+    const double standing_front = front_s + constraint.gap - constraint.clearance;
+    if (constraint.lead_speed < kCrawling && standing_front < stretch.exit + vehicle_.length)
+      return true;
+  }
+  return false;
+}
+
+bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionStretch& stretch) {
+  constexpr double kJunctionWatch = 60;  // m from the ego within which the junction lies
+  if (conflicts_entry_ != stretch.entry) {
+    conflicts_entry_ = stretch.entry;
+    conflicts_.clear();
+    for (std::size_t k = stretch.first; k <= stretch.last; ++k) {
+      std::vector<LaneIndex> more = conflicting_lanes(map_, route_.segments()[k].lane);
+      conflicts_.insert(conflicts_.end(), more.begin(), more.end());
+    }
+    std::sort(conflicts_.begin(), conflicts_.end());
+  }
+  for (const WorldObject& object : input.objects) {
+    if (object.kind != TraceActorKind::vehicle) continue;
+    const double dx = object.x - input.ego.x, dy = object.y - input.ego.y;
+    if (dx * dx + dy * dy > kJunctionWatch * kJunctionWatch) continue;
+    // Most are outside the junction's outline: no lane search for them.
+    const auto& outline = map_.junctions()[stretch.junction].outline;
+    if (!outline.empty() && !near_polygon({object.x, object.y}, outline, object.length / 2))
+      continue;
+    auto on = project_to_lane(map_, {object.x, object.y}, object.heading);
+    if (on && on->inside && std::binary_search(conflicts_.begin(), conflicts_.end(), on->lane))
+      return true;
+  }
+  return false;
+}
+
 void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, double front_s) {
   const KinematicState& ego = input.ego;
   double lookahead = std::max(30.0, ego.speed * 4);
@@ -444,6 +521,7 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   collect_object_constraints(input, front_s);
   collect_feature_constraints(input, front_s);
   collect_lane_change_constraints(input, front_s);
+  hold_at_junction(input, front_s);
   watch_patience(input);
 
   double desired = desired_speed(route_.progress());

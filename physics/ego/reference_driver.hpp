@@ -43,6 +43,7 @@ struct DriverSettings {
                                              // whoever would be behind (or of the ego, ahead)
   double standing_speed = 0.4;     // m/s: a pedestrian slower than this (smoothed) is standing
   double pedestrian_patience = 5;  // s held by standing pedestrians before creeping on
+  double junction_patience = 5;    // s held at a junction's entry before going on carefully
   double creeping_speed = 1.5;     // m/s past standing pedestrians after that
   SightSettings sight;             // the speed limit of what it can see
   LeftTurnGapSettings left_turn;   // gap acceptance turning left across oncoming traffic
@@ -71,7 +72,8 @@ enum class DriverReason {
   lane_change,  // waiting for a gap in the next lane
   creeping,     // past pedestrians that stood in its way longer than its patience
   sight,        // no faster than it can stop within what it can see
-  give_way,     // turning left: waiting for a gap in the oncoming traffic
+  give_way,     // turning left: waiting for a gap in the oncoming traffic; or held at a
+                // junction's entry by the junction priority rule (hold_at_junction)
 };
 
 class ReferenceDriver {
@@ -105,6 +107,9 @@ class ReferenceDriver {
   void collect_feature_constraints(const DriverInput& input, double front_s);
   void collect_lane_change_constraints(const DriverInput& input, double front_s);
   void add_road_end(double speed);
+  void hold_at_junction(const DriverInput& input, double front_s);
+  bool box_blocked(const JunctionStretch& stretch, double front_s) const;
+  bool crossing_inside(const DriverInput& input, const JunctionStretch& stretch);
   void add_crossing_pedestrian(const WorldObject& object, double ego_speed, double gap,
                                double clearance, double lateral_speed, double along_speed);
   double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
@@ -130,6 +135,14 @@ class ReferenceDriver {
   bool creeping_ = false;  // this step: creeping past standing pedestrians
   LeftTurnGap left_turn_;
   bool turn_committed_ = false;  // this step: inside a left turn's conflict area, clearing it
+  // The junction priority rule (hold_at_junction): the lanes crossing or merging with the route's
+  // junction stretch it last looked at, and since when the ego stands held at its entry.
+  double conflicts_entry_ = -1;
+  std::vector<LaneIndex> conflicts_;
+  double held_since_junction_ = -1;
+  double released_entry_ = -1;
+  double next_glance_ = 0;        // s: when crossing_inside is looked at again
+  bool crossing_inside_ = false;  // its answer at the last glance
 };
 
 }  // namespace scenfuzz

@@ -51,6 +51,12 @@ RouteTracker::RouteTracker(const RoadMap& map, const LaneRoute& route,
   }
   std::sort(features_.begin(), features_.end(),
             [](const RouteFeature& a, const RouteFeature& b) { return a.s < b.s; });
+  for (double from = 0;;) {
+    auto stretch = junction_stretch_ahead(map, segments_, limit_s_, from);
+    if (!stretch) break;
+    junctions_.push_back(*stretch);
+    from = stretch->exit;
+  }
 
   headings_ = segment_headings(path_);
   frames_ = SegmentFrames(path_);
@@ -187,6 +193,12 @@ std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, PathWindow wi
   // The nearest point is an end point when it lies off the normal through it.
   bool beyond_end = projection.distance > std::abs(projection.lateral) + 1e-6;
   return PathCoordinate{projection.s, projection.lateral, beyond_end, best};
+}
+
+std::optional<JunctionStretch> RouteTracker::junction_ahead(double s) const {
+  for (const JunctionStretch& stretch : junctions_)
+    if (stretch.exit > s) return stretch;
+  return std::nullopt;
 }
 
 }  // namespace scenfuzz

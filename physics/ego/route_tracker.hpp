@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "physics/actors/trajectory.hpp"
+#include "physics/map/junction_stretch.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/polyline_boxes.hpp"
@@ -75,6 +76,9 @@ class RouteTracker {
   double heading_at(double s, std::size_t hint) const;
   // The path's curvature (1/m, unsigned) around arc length s.
   double curvature_at(double s) const;
+  // The route's stretch through the junction it is in at path arc length s, or the next ahead.
+  std::optional<JunctionStretch> junction_ahead(double s) const;
+  const std::vector<RouteSegment>& segments() const { return segments_; }
 
   // Where `point` lies on the path between progress - behind and progress + ahead, or nullopt
   // when it is nearer to no point of that stretch than `max_lateral`.
@@ -94,6 +98,7 @@ class RouteTracker {
   std::vector<LaneChangeStretch> lane_changes_;
   std::vector<double> limit_s_, limit_speed_;  // speed limit from each s on (one per segment)
   std::vector<RouteSegment> segments_;         // the route's, in the order of limit_s_
+  std::vector<JunctionStretch> junctions_;     // the route's stretches through junctions
   std::vector<double> curvature_;              // per path vertex
   std::vector<double> headings_;               // per path segment
   SegmentFrames frames_;                       // of path segments, for locate's projections

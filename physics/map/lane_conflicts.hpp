@@ -3,6 +3,8 @@
 // responsibility oracle decides junction priority by it.
 #pragma once
 
+#include <vector>
+
 #include "physics/map/polyline.hpp"
 #include "physics/map/road_map.hpp"
 
@@ -13,5 +15,8 @@ bool lines_cross(const Polyline& first, const Polyline& second);
 
 // Whether the two lanes have a successor in common.
 bool shares_successor(const Lane& first, const Lane& second);
+
+// The other lanes of junction lane `lane`'s junction that cross or merge with it (ascending).
+std::vector<LaneIndex> conflicting_lanes(const RoadMap& map, LaneIndex lane);
 
 }  // namespace scenfuzz

@@ -136,6 +136,7 @@ double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32
   stops.clear();
   find_leader(world, self, stops);
   find_stop_lines(world, self, dt, stops);
+  hold_at_junction(world, self, stops);
   if (!leaves_at_end_) stops.push_back({path_.length() - s_, 0, 0, FollowerReason::path_end});
   for (const Stop& stop : stops) {
     double wanted = idm(stop);
@@ -542,14 +543,7 @@ std::optional<LaneIndex> LaneFollower::junction_lane_after(const FeatureAhead& f
 const std::vector<LaneIndex>& LaneFollower::conflicts_of(LaneIndex junction_lane) {
   for (const auto& [lane, conflicts] : conflicts_)
     if (lane == junction_lane) return conflicts;
-  const Lane& mine = map_->lane(junction_lane);
-  std::vector<LaneIndex> conflicts;
-  for (LaneIndex other = 0; other < map_->lanes().size(); ++other) {
-    const Lane& lane = map_->lane(other);
-    if (other == junction_lane || lane.junction != mine.junction) continue;
-    if (lines_cross(mine.centre_line, lane.centre_line) || shares_successor(mine, lane))
-      conflicts.push_back(other);
-  }
+  std::vector<LaneIndex> conflicts = conflicting_lanes(*map_, junction_lane);
   conflicts_.emplace_back(junction_lane, std::move(conflicts));
   return conflicts_.back().second;
 }
@@ -584,6 +578,111 @@ bool LaneFollower::pedestrians_at(const WorldSnapshot& world, const Crosswalk& c
     if (walker.speed >= settings_.walking_speed &&
         near_polygon({walker.x, walker.y}, crosswalk.outline, settings_.crosswalk_clearance))
       return true;
+  }
+  return false;
+}
+
+namespace {
+
+// Whether a light or sign orders the traffic entering a junction by `lane` (the junction lane):
+// on it or on a lane leading into it.
+bool controlled_entry(const RoadMap& map, LaneIndex lane) {
+  auto controls = [&](LaneIndex l) {
+    for (const LaneFeature& feature : map.lane(l).features)
+      if (feature.kind != FeatureKind::crosswalk) return true;
+    return false;
+  };
+  if (controls(lane)) return true;
+  for (LaneIndex before : map.lane(lane).predecessors)
+    if (controls(before)) return true;
+  return false;
+}
+
+// Whether lane `lane` ends into one of `conflicts`, and carries no light or sign of its own.
+bool uncontrolled_approach_to(const RoadMap& map, LaneIndex lane,
+                              const std::vector<LaneIndex>& conflicts) {
+  const Lane& approach = map.lane(lane);
+  for (const LaneFeature& feature : approach.features)
+    if (feature.kind != FeatureKind::crosswalk) return false;
+  for (LaneIndex next : approach.successors)
+    if (std::find(conflicts.begin(), conflicts.end(), next) != conflicts.end()) return true;
+  return false;
+}
+
+}  // namespace
+
+// Before a junction it has not entered, the follower stops at the entry while (a) what it
+// follows stands or crawls where it would hold the follower inside the junction (do not block the
+// box), or (b) it must give way there (gives_way_in_junction). Once inside it has priority over
+// everyone still outside, and clears the junction behind whatever is in its path. Standing held
+// longer than its patience it goes on (the standstill breaker), still stopping for what is in
+// its path. Too near the entry to stop before it, it is committed and drives on.
+void LaneFollower::hold_at_junction(const WorldSnapshot& world, std::uint32_t self,
+                                    std::vector<Stop>& stops) {
+  const double front = s_ + body_.length / 2;
+  auto stretch = junction_stretch_ahead(*map_, route_.segments, route_starts_, front);
+  if (!stretch || stretch->entry <= front || stretch->entry == released_entry_) {
+    held_since_ = -1;
+    return;
+  }
+  const double v = state_.speed;
+  const double to_entry = stretch->entry - front;
+  if (to_entry > lookahead() || to_entry < v * v / (2 * body_.max_deceleration)) return;
+  // Who is in or at the junction is looked at once a scan, as the actors are (find_leader).
+  if (scanning_) gives_way_ = gives_way_in_junction(world, self, *stretch);
+  if (!box_blocked(stops, *stretch, front) && !gives_way_) {
+    held_since_ = -1;
+    return;
+  }
+  if (v < kStandingSpeed && held_since_ < 0) held_since_ = world.time;
+  if (held_since_ >= 0 && world.time - held_since_ >= settings_.junction_patience) {
+    released_entry_ = stretch->entry;
+    held_since_ = -1;
+    return;
+  }
+  stops.push_back({to_entry, settings_.stop_line_gap, 0, FollowerReason::give_way});
+}
+
+// Whatever the follower stops behind (a leader, a crossing actor where it will be) is slow and so
+// near that the follower, standing behind it, would not have cleared the junction's exit.
+bool LaneFollower::box_blocked(const std::vector<Stop>& stops, const JunctionStretch& stretch,
+                               double front) const {
+  for (const Stop& stop : stops) {
+    if (stop.reason != FollowerReason::leader) continue;
+    const double standing_front = front + stop.gap - stop.clearance;
+    if (stop.speed < kMovingSpeed && standing_front < stretch.exit + body_.length) return true;
+  }
+  return false;
+}
+
+// A vehicle (or the ego) on a junction lane crossing or merging with the follower's is inside
+// and has priority. At a junction no light or sign orders, one that arrived at it first
+// (JunctionArrivals; of equal arrivals the lower actor id) and is about to enter a crossing or
+// merging lane from an approach without light or sign goes first too; the ego, arrived there,
+// always does.
+bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32_t self,
+                                         const JunctionStretch& stretch) {
+  const bool arrivals = world.junction_arrivals.size() == world.states.size() &&
+                        !std::isnan(world.junction_arrivals[self]);
+  for (std::size_t segment = stretch.first; segment <= stretch.last; ++segment) {
+    const LaneIndex mine = route_.segments[segment].lane;
+    const std::vector<LaneIndex>& conflicts = conflicts_of(mine);
+    const bool first_come = arrivals && !controlled_entry(*map_, mine);
+    for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+      if (k == self || world.lanes[k].lane < 0 || !present_in(world, k)) continue;
+      if (world.kinds[k] != TraceActorKind::vehicle && world.kinds[k] != TraceActorKind::ego)
+        continue;
+      const auto lane = static_cast<LaneIndex>(world.lanes[k].lane);
+      if (std::find(conflicts.begin(), conflicts.end(), lane) != conflicts.end()) return true;
+      if (!first_come || map_->lane(lane).junction || std::isnan(world.junction_arrivals[k]))
+        continue;
+      const double theirs = world.junction_arrivals[k], ours = world.junction_arrivals[self];
+      // The ego under test sees no arrival times: it goes when nobody crossing is inside, and
+      // the NPCs let it, whenever it arrived.
+      const bool before =
+          world.kinds[k] == TraceActorKind::ego || theirs < ours || (theirs == ours && k < self);
+      if (before && uncontrolled_approach_to(*map_, lane, conflicts)) return true;
+    }
   }
   return false;
 }

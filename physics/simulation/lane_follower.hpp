@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "physics/actors/actor_class.hpp"
+#include "physics/map/junction_stretch.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/polyline_boxes.hpp"
@@ -35,6 +36,10 @@ struct FollowerSettings {
   double path_margin = 0.3;          // m beside the body that must stay clear
   double min_lookahead = 40;         // m ahead that is watched, at least
   double lookahead_time = 6;         // s of travel ahead that is watched
+  // s standing held at a junction's entry by the junction priority rule before it goes on
+  // carefully (still stopping for whatever is in its path): breaks a standstill where everyone
+  // waits on someone, such as a car parked in the junction.
+  double junction_patience = 5;
 };
 
 // Why the follower chose its acceleration: tests and the trace's reading.
@@ -125,6 +130,13 @@ class LaneFollower {
   bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
   const std::vector<LaneIndex>& conflicts_of(LaneIndex junction_lane);
   bool pedestrians_at(const WorldSnapshot& world, const Crosswalk& crosswalk) const;
+  // The junction priority rule (docs/simulation.md, "Junctions"): a stop at the entry of the
+  // junction ahead while it may not enter it.
+  void hold_at_junction(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
+  bool box_blocked(const std::vector<Stop>& stops, const JunctionStretch& stretch,
+                   double front) const;
+  bool gives_way_in_junction(const WorldSnapshot& world, std::uint32_t self,
+                             const JunctionStretch& stretch);
   // The junction lane a stop line at `feature` leads into (the feature's own lane if it is one).
   std::optional<LaneIndex> junction_lane_after(const FeatureAhead& feature) const;
   double idm(const Stop& stop) const;
@@ -173,7 +185,10 @@ class LaneFollower {
   double applied_ = 0;  // m/s^2 asked of the vehicle at the last step, for the jerk limit
   bool finished_ = false;
   FollowerReason reason_ = FollowerReason::cruise;
-  double stopped_since_ = -1;  // s: when it came to stand at the stop sign it waits at
+  double stopped_since_ = -1;   // s: when it came to stand at the stop sign it waits at
+  double held_since_ = -1;      // s: when it came to stand held at a junction's entry
+  double released_entry_ = -1;  // route distance of the entry its patience let it through
+  bool gives_way_ = false;      // gives_way_in_junction at the last scan
   // Junction lanes of its route and the lanes that cross or merge with each, found when needed.
   std::vector<std::pair<LaneIndex, std::vector<LaneIndex>>> conflicts_;
 };

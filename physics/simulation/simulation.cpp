@@ -17,6 +17,7 @@
 #include "physics/ego/observation_json.hpp"
 #include "physics/ego/plugin_driver.hpp"
 #include "physics/simulation/background_traffic.hpp"
+#include "physics/simulation/junction_arrivals.hpp"
 #include "physics/simulation/lane_follower.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/manoeuvre_driver.hpp"
@@ -292,6 +293,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   const double prediction_time = FollowerSettings{}.prediction_time;
   std::vector<MapPoint> predicted;
   PointPredictor predictor;
+  JunctionArrivals arrivals;  // the junction priority's "first come" (junction_arrivals.hpp)
   // With many actors most are far from any one follower: a grid lets each scan skip them. With
   // few, building it costs more than looking at them all (benchmarks: 30 actors on one road);
   // there followers look by lane (lane_occupancy.hpp), which cost more than the grid saves with
@@ -385,6 +387,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
         for (std::size_t k = 0; k < first_obstacle; ++k)
           manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
       predictor.predict(states, prediction_time, predicted);
+      arrivals.update(map, t, fixes, kinds,
+                      traffic.empty() ? std::span<const std::uint8_t>{}
+                                      : std::span<const std::uint8_t>(present));
       const std::span<const std::uint8_t> present_now =
           traffic.empty() ? std::span<const std::uint8_t>{}
                           : std::span<const std::uint8_t>(present);
@@ -414,7 +419,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                   prediction_time,
                   uses_grid ? &grid : nullptr,
                   occupancy ? &*occupancy : nullptr,
-                  predictor.facings()};
+                  predictor.facings(),
+                  arrivals.arrivals()};
     }
 
     route.update({states[kEgo].x, states[kEgo].y});

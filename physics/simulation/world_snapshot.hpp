@@ -46,6 +46,9 @@ struct WorldSnapshot {
   // By actor id, the cosine and sine of each actor's heading (PointPredictor::facings), for the
   // lane followers' leaders between scans; empty when not computed (followers then compute them).
   std::span<const MapPoint> facings;
+  // By actor id, when each vehicle arrived at the junction it is at (JunctionArrivals), NaN at
+  // none; empty when not computed (followers then order nobody by arrival).
+  std::span<const double> junction_arrivals;
 };
 
 inline bool present_in(const WorldSnapshot& world, std::uint32_t actor) {
