@@ -509,6 +509,7 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
         });
     return discrete(priority_vehicle_ahead(trace, manoeuvre(), ahead));
   }
+  if (name == "isOverTaking") return discrete(overtaking(trace, manoeuvre()));
   if (name == "PriorityPedsAhead") return discrete(priority_pedestrian_ahead(trace, manoeuvre()));
   if (name == "isTrafficJam")
     return discrete(along_the_lanes(trace, map, [&](const AheadView& view, std::size_t i) {
@@ -539,6 +540,13 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
       return std::clamp(-ego.acceleration[i] / full_braking * 100, 0.0, 100.0);
     }));
   }
+  // No map we read marks a no-honking zone, street lighting or a special location (a school, a
+  // tunnel, a bridge): docs/oracle.md says how these differ from LawBreaker's placeholders.
+  if (name == "honkingAllowed") return discrete(std::vector<double>(count, 1));
+  if (name == "streetLightOn") return discrete(std::vector<double>(count, 0));
+  if (name == "specialLocationAhead")
+    return numeric(std::vector<double>(count, kNoRoadObjectAhead));
+  if (name == "specialLocationAhead.type") return discrete(std::vector<double>(count, 0));
   throw OracleError(term.location,
                     "the oracle does not compute '" + name + "' on simulated traces yet");
 }
