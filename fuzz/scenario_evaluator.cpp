@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "oracle/failure_mode.hpp"
+#include "oracle/robustness.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/simulation/initial_overlap.hpp"
 #include "physics/simulation/scenario_setup.hpp"
@@ -177,6 +178,10 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
     return run;
   }
   run.verdicts = judge_trace(scenario_, run.values, *run.trace, *run.map, file_, judge_options_);
+  // A spec the trace cannot answer cannot be searched on (run_fuzz leaves out beforehand those
+  // known not to be judgeable): the search stops with the reason, as before.
+  for (const SpecVerdict& verdict : run.verdicts)
+    if (!verdict.judged()) throw OracleError(verdict.not_judged_at, verdict.not_judged);
   run.responsibilities = ego_collision_responsibilities(*run.trace, *run.map, judge_options_.rss);
   return run;
 }
