@@ -1,6 +1,7 @@
 #include "fuzz/scenario_evaluator.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "oracle/failure_mode.hpp"
@@ -203,8 +204,12 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
   }
   if (!evaluation.judged()) return evaluation;
   for (const SpecVerdict& verdict : run.verdicts) {
-    evaluation.robustness.push_back(verdict.robustness);
-    evaluation.guide.push_back(verdict.guide);
+    // --violation-at-zero: a violated 0 enters the search as the largest number below 0, which
+    // the search's "robustness < 0" counts as the violation it is.
+    const bool zero_violated = verdict.violated() && verdict.robustness == 0;
+    const double below_zero = -std::numeric_limits<double>::denorm_min();
+    evaluation.robustness.push_back(zero_violated ? below_zero : verdict.robustness);
+    evaluation.guide.push_back(zero_violated && verdict.guide >= 0 ? below_zero : verdict.guide);
   }
   for (std::size_t k = 0; k < run.verdicts.size(); ++k) {
     if (run.verdicts[k].ending == VerdictEnding::decided) continue;

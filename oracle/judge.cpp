@@ -93,7 +93,7 @@ void judge_the_end(const Spec& spec, const SignalSource& source, LazyProgress& p
                    SpecVerdict& verdict) {
   const double continued =
       robustness_if_continued(spec.formula, source, formula_horizon(spec.formula));
-  if (continued < 0) return;
+  if (continued < 0 || (verdict.zero_violates && continued == 0)) return;
   verdict.progress = progress.get().description;
   if (progress.get().stuck) {
     verdict.ending = VerdictEnding::stuck;
@@ -180,10 +180,12 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
 
 // One spec's verdict. Throws OracleError when the trace cannot answer it.
 SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace& trace,
-                       const SourceFile& file, LazyProgress& progress) {
+                       const SourceFile& file, LazyProgress& progress,
+                       const JudgeOptions& options) {
   const RobustnessWitness witness = explain_robustness(spec.formula, source);
   SpecVerdict verdict;
   verdict.name = spec.name;
+  verdict.zero_violates = options.violation_at_zero;
   verdict.robustness = witness.robustness;
   verdict.guide = guide_of(spec.formula, source, witness.robustness, false);
   if (verdict.violated() && trace.end == EndReason::duration)
@@ -213,14 +215,18 @@ std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
                                      std::span<const double> parameters, const Trace& trace,
                                      const RoadMap& map, const SourceFile& file,
                                      const JudgeOptions& options) {
-  if (scenario.specs.empty()) return {no_collision_verdict(trace, map, options)};
+  if (scenario.specs.empty()) {
+    SpecVerdict verdict = no_collision_verdict(trace, map, options);
+    verdict.zero_violates = options.violation_at_zero;
+    return {verdict};
+  }
   const TraceSignals signals(trace, scenario, parameters, map);
   const SignalSource source = signals.source();
   LazyProgress progress(trace, scenario, parameters, map);
   std::vector<SpecVerdict> verdicts;
   for (const Spec& spec : scenario.specs) {
     try {
-      verdicts.push_back(judge_spec(spec, source, trace, file, progress));
+      verdicts.push_back(judge_spec(spec, source, trace, file, progress, options));
     } catch (const OracleError& error) {
       SpecVerdict verdict;
       verdict.name = spec.name;

@@ -71,14 +71,23 @@ struct SpecVerdict {
   std::string not_judged;
   SourceLocation not_judged_at;
 
+  // LawBreaker's convention (JudgeOptions::violation_at_zero): robustness 0 is violated too.
+  bool zero_violates = false;
+
   bool judged() const { return not_judged.empty(); }
-  bool violated() const { return judged() && robustness < 0; }
+  bool violated() const {
+    return judged() && (robustness < 0 || (zero_violates && robustness == 0));
+  }
 };
 
-// How the collision oracle treats collisions that are not the ego's fault (oracle/responsibility).
+// How the collision oracle treats collisions that are not the ego's fault (oracle/responsibility),
+// and which robustness is a violation.
 struct JudgeOptions {
   RssParameters rss;
   bool all_collisions = false;  // --all-collisions: count them too
+  // --violation-at-zero: robustness exactly 0 is a violation (LawBreaker: the negated formula's
+  // robustness >= 0), not satisfied (RTAMT's convention, the default).
+  bool violation_at_zero = false;
 };
 
 // One verdict per spec of `scenario`, in file order, or one from the collision oracle when it has

@@ -771,6 +771,75 @@ TEST_F(LawSignalsTest, SignalsTheOracleDoesNotComputeAreErrorsAtTheTerm) {
   }
 }
 
+// law_signal_computed, which check and the search read before any run, says exactly what
+// law_signal computes, for every signal of LawBreaker's list.
+TEST_F(LawSignalsTest, TheComputedNamesAreTheOnesLawSignalAnswers) {
+  const Trace trace = law_trace(straight, 2);
+  const test::ParsedScenario parsed = parse_scenario(scenario_with("", ""));
+  std::size_t computed = 0;
+  for (const char* name : {"speed",
+                           "acc",
+                           "brake",
+                           "gear",
+                           "direction",
+                           "turnSignal",
+                           "currentLane.number",
+                           "currentLane.direction",
+                           "speedLimit.upperLimit",
+                           "speedLimit.lowerLimit",
+                           "highBeamOn",
+                           "lowBeamOn",
+                           "hornOn",
+                           "fogLightOn",
+                           "warningFlashOn",
+                           "engineOn",
+                           "manualIntervention",
+                           "isLaneChanging",
+                           "isOverTaking",
+                           "isTurningAround",
+                           "honkingAllowed",
+                           "streetLightOn",
+                           "crosswalkAhead",
+                           "junctionAhead",
+                           "stopSignAhead",
+                           "stoplineAhead",
+                           "specialLocationAhead",
+                           "trafficLightAhead.isBlinking",
+                           "trafficLightAhead.direction.isBlinking",
+                           "trafficLightAhead.color",
+                           "trafficLightAhead.direction.color",
+                           "signalAhead",
+                           "specialLocationAhead.type",
+                           "PriorityNPCAhead",
+                           "PriorityPedsAhead",
+                           "isTrafficJam",
+                           "NPCAhead",
+                           "NPCAhead.speed",
+                           "NearestNPC",
+                           "NearestNPC.speed",
+                           "NPCOpposite",
+                           "NPCOpposite.speed",
+                           "Time",
+                           "rain",
+                           "fog",
+                           "snow",
+                           "wetness",
+                           "visibility"}) {
+    SpecTerm term;
+    term.kind = TermKind::signal;
+    term.name = name;
+    bool answered = true;
+    try {
+      law_signal(term, trace, parsed.scenario, parsed.parameters, straight);
+    } catch (const OracleError&) {
+      answered = false;
+    }
+    EXPECT_EQ(law_signal_computed(name), answered) << name;
+    if (answered) ++computed;
+  }
+  EXPECT_EQ(computed, 37u);
+}
+
 TEST_F(LawSignalsTest, AnEgoWaitingAtARedLightSeesItsStopLineAhead) {
   // On `crossroads` east-west traffic has red for the first 30 s; the ego stops before the line.
   SimulationOptions options;
