@@ -5,6 +5,7 @@
 
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
+#include "fuzz/not_judged_specs.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "lang/diagnostic.hpp"
 
@@ -47,6 +48,10 @@ int run_check(const std::vector<std::string>& paths, std::ostream& err) {
     const ScenarioParse result = parse_scenario_file(*file);
     err << format_diagnostics(*file, result.diagnostics);
     if (!result.ok()) failed = true;
+    // Every place a spec reads a signal the oracle does not compute, at once: the file is
+    // good, but `run` and the search will not judge those specs.
+    else
+      err << format_diagnostics(*file, uncomputed_signal_warnings(result.scenario));
   }
   return failed ? kExitBadInput : kExitSuccess;
 }

@@ -18,6 +18,7 @@
 #include "fuzz/findings_tmin.hpp"
 #include "fuzz/folder_search.hpp"
 #include "fuzz/journal_replay.hpp"
+#include "fuzz/not_judged_specs.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/output_folder.hpp"
 #include "fuzz/progress_report.hpp"
@@ -189,6 +190,21 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
   out << "wrote " << (fs::path(options.out_dir) / "summary.json").string() << "\n";
 }
 
+// The specs set aside before the search, after its report (and in --json an event of them).
+void print_not_judged(const FuzzCommandOptions& options, const std::vector<NotJudgedSpec>& specs,
+                      std::ostream& out) {
+  if (specs.empty() || (options.quiet && !options.json)) return;
+  if (options.json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const NotJudgedSpec& spec : specs)
+      list.push_back({{"name", spec.name}, {"reason", spec.reason}});
+    out << nlohmann::json{{"event", "not_judged"}, {"specs", list}}.dump() << "\n";
+    return;
+  }
+  for (const NotJudgedSpec& spec : specs)
+    out << "not judged: spec " << spec.name << ": " << spec.reason << "\n";
+}
+
 // The exit status once the search has ended, with the reason on `err` when it is an error.
 int exit_status(const FolderSearch& search, const FolderSearchEnd& end, std::ostream& err) {
   if (end.problem == FolderSearchProblem::write_failed) {
@@ -292,6 +308,16 @@ Minimised minimise_search_findings(const FuzzCommandOptions& options, FolderSear
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
   std::optional<ScenarioFile> input = read_scenario(options.path, "search", err);
   if (!input) return kExitBadInput;
+  // The search targets the specs the oracle can judge; the others are named, with the reason.
+  const std::vector<NotJudgedSpec> not_judged =
+      set_aside_unjudgeable_specs(input->scenario, options.path);
+  for (const NotJudgedSpec& spec : not_judged)
+    err << "scenfuzz: note: spec " << spec.name << " is not judged: " << spec.reason << "\n";
+  if (!not_judged.empty() && input->scenario.specs.empty()) {
+    err << "scenfuzz: error: no spec of '" << options.path
+        << "' can be judged on simulated traces: nothing to search for\n";
+    return kExitBadInput;
+  }
   if (!derive_space_if_concrete(options, *input, err)) return kExitUsage;
   apply_scenario_overrides(options.simulation, input->scenario);
   std::optional<ScenarioEvaluator> evaluator = make_evaluator(options, *input, err);
@@ -331,6 +357,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
     return kExitBadInput;
   }
   print_report(options, end.summary, folder.outputs(), folder.log(), objectives, minimised, out);
+  print_not_judged(options, not_judged, out);
   return exit_status(folder, end, err);
 }
 

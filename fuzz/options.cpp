@@ -280,6 +280,7 @@ void apply_scenario_overrides(const SimulationCommandOptions& options, ScenarioT
 JudgeOptions judge_options(const SimulationCommandOptions& options) {
   JudgeOptions judge;
   judge.all_collisions = options.all_collisions;
+  judge.violation_at_zero = options.violation_at_zero;
   if (const RssParametersOrError rss = parse_rss_parameters(options.rss); rss.parameters)
     judge.rss = *rss.parameters;
   return judge;

@@ -106,6 +106,10 @@ std::string robustness_text(double robustness) {
 }
 
 std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict) {
+  if (!verdict.judged())
+    return "spec " + verdict.name + ": not judged: " +
+           (verdict.not_judged_at.known() ? place_of(file, verdict.not_judged_at) + ": " : "") +
+           verdict.not_judged;
   const std::string at = " at " + format_number(std::round(verdict.time * 1000) / 1000) + " s";
   if (verdict.ending == VerdictEnding::time_out)
     return "spec " + verdict.name +
@@ -123,6 +127,7 @@ std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict)
 
 // "satisfied", "violated", "time-out": a spec's verdict in words.
 std::string verdict_word(const SpecVerdict& verdict) {
+  if (!verdict.judged()) return "not judged";
   if (verdict.ending == VerdictEnding::time_out) return "time-out";
   return verdict.violated() ? "violated" : "satisfied";
 }
@@ -135,6 +140,12 @@ nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdi
         {"violated", verdict.violated()}, {"verdict", verdict_word(verdict)},
         {"time", verdict.time},           {"atom", verdict.atom_text}};
     if (verdict.atom.known()) spec["atom_location"] = place_of(file, verdict.atom);
+    if (!verdict.judged()) {
+      spec["robustness"] = nullptr;
+      spec["not_judged"] = verdict.not_judged;
+      if (verdict.not_judged_at.known())
+        spec["not_judged_location"] = place_of(file, verdict.not_judged_at);
+    }
     if (verdict.ending == VerdictEnding::time_out)
       spec["robustness_at_end"] = robustness_json(verdict.robustness_at_end);
     if (verdict.ending != VerdictEnding::decided) {
@@ -322,7 +333,15 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   // A failure of the ego under test (a crash, a hang, an error) is a finding like a violated spec.
   bool violated = ego_failure.has_value();
   for (const SpecVerdict& verdict : verdicts) violated = violated || verdict.violated();
-  const int exit_code = violated ? kExitViolated : kExitSuccess;
+  // Specs the oracle could not judge are reported with the others; with none judged there is no
+  // verdict to give (DESIGN.md, "Exit statuses").
+  const bool none_judged =
+      !verdicts.empty() && std::none_of(verdicts.begin(), verdicts.end(),
+                                        [](const SpecVerdict& v) { return v.judged(); });
+  const int exit_code = violated ? kExitViolated : none_judged ? kExitBadInput : kExitSuccess;
+  if (none_judged && !violated)
+    err << "scenfuzz: error: no spec of '" << options.path
+        << "' could be judged on the simulated trace: each is reported as not judged\n";
   // What the simulated world did that no real road user does: not a finding, but a reason to
   // doubt one (docs/oracle.md, "Trace audit").
   const TraceAudit audit = audit_trace(trace, *map);
@@ -345,9 +364,10 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     // The picture's title names the worst spec (responsibility is not decided here yet).
     TraceSvgOptions picture;
     const auto worst = std::min_element(
-        verdicts.begin(), verdicts.end(),
-        [](const SpecVerdict& a, const SpecVerdict& b) { return a.robustness < b.robustness; });
-    if (worst != verdicts.end())
+        verdicts.begin(), verdicts.end(), [](const SpecVerdict& a, const SpecVerdict& b) {
+          return a.judged() && (!b.judged() || a.robustness < b.robustness);
+        });
+    if (worst != verdicts.end() && worst->judged())
       picture.caption = {worst->name, worst->robustness, worst->time, worst->atom_text, "", ""};
     // An ego that failed before the first sample leaves no trace to write.
     if (trace.sample_count() > 0)

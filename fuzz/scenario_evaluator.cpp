@@ -1,10 +1,12 @@
 #include "fuzz/scenario_evaluator.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "fuzz/run_coverage.hpp"
 #include "oracle/failure_mode.hpp"
+#include "oracle/robustness.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/simulation/initial_overlap.hpp"
 #include "physics/simulation/scenario_setup.hpp"
@@ -178,6 +180,10 @@ ScenarioRun ScenarioEvaluator::run(std::span<const double> unit_point, std::uint
     return run;
   }
   run.verdicts = judge_trace(scenario_, run.values, *run.trace, *run.map, file_, judge_options_);
+  // A spec the trace cannot answer cannot be searched on (run_fuzz leaves out beforehand those
+  // known not to be judgeable): the search stops with the reason, as before.
+  for (const SpecVerdict& verdict : run.verdicts)
+    if (!verdict.judged()) throw OracleError(verdict.not_judged_at, verdict.not_judged);
   run.responsibilities = ego_collision_responsibilities(*run.trace, *run.map, judge_options_.rss);
   return run;
 }
@@ -200,8 +206,12 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
   }
   if (!evaluation.judged()) return evaluation;
   for (const SpecVerdict& verdict : run.verdicts) {
-    evaluation.robustness.push_back(verdict.robustness);
-    evaluation.guide.push_back(verdict.guide);
+    // --violation-at-zero: a violated 0 enters the search as the largest number below 0, which
+    // the search's "robustness < 0" counts as the violation it is.
+    const bool zero_violated = verdict.violated() && verdict.robustness == 0;
+    const double below_zero = -std::numeric_limits<double>::denorm_min();
+    evaluation.robustness.push_back(zero_violated ? below_zero : verdict.robustness);
+    evaluation.guide.push_back(zero_violated && verdict.guide >= 0 ? below_zero : verdict.guide);
   }
   for (std::size_t k = 0; k < run.verdicts.size(); ++k) {
     if (run.verdicts[k].ending == VerdictEnding::decided) continue;

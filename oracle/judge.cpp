@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "lang/spec_horizon.hpp"
@@ -92,7 +93,7 @@ void judge_the_end(const Spec& spec, const SignalSource& source, LazyProgress& p
                    SpecVerdict& verdict) {
   const double continued =
       robustness_if_continued(spec.formula, source, formula_horizon(spec.formula));
-  if (continued < 0) return;
+  if (continued < 0 || (verdict.zero_violates && continued == 0)) return;
   verdict.progress = progress.get().description;
   if (progress.get().stuck) {
     verdict.ending = VerdictEnding::stuck;
@@ -177,6 +178,28 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
   verdict.mode_text = verdict.conjuncts.front().mode_text;
 }
 
+// One spec's verdict. Throws OracleError when the trace cannot answer it.
+SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace& trace,
+                       const SourceFile& file, LazyProgress& progress,
+                       const JudgeOptions& options) {
+  const RobustnessWitness witness = explain_robustness(spec.formula, source);
+  SpecVerdict verdict;
+  verdict.name = spec.name;
+  verdict.zero_violates = options.violation_at_zero;
+  verdict.robustness = witness.robustness;
+  verdict.guide = guide_of(spec.formula, source, witness.robustness, false);
+  if (verdict.violated() && trace.end == EndReason::duration)
+    judge_the_end(spec, source, progress, verdict);
+  verdict.time = time_of_sample(trace, witness.sample);
+  if (witness.atom) {
+    verdict.atom = witness.atom->location;
+    verdict.atom_text = atom_text(file, verdict.atom);
+    verdict.mode_text = mode_text(file, spec.formula, *witness.atom, verdict.atom_text);
+  }
+  if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, verdict);
+  return verdict;
+}
+
 }  // namespace
 
 std::string_view verdict_ending_name(VerdictEnding ending) {
@@ -192,27 +215,27 @@ std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
                                      std::span<const double> parameters, const Trace& trace,
                                      const RoadMap& map, const SourceFile& file,
                                      const JudgeOptions& options) {
-  if (scenario.specs.empty()) return {no_collision_verdict(trace, map, options)};
+  if (scenario.specs.empty()) {
+    SpecVerdict verdict = no_collision_verdict(trace, map, options);
+    verdict.zero_violates = options.violation_at_zero;
+    return {verdict};
+  }
   const TraceSignals signals(trace, scenario, parameters, map);
   const SignalSource source = signals.source();
   LazyProgress progress(trace, scenario, parameters, map);
   std::vector<SpecVerdict> verdicts;
   for (const Spec& spec : scenario.specs) {
-    const RobustnessWitness witness = explain_robustness(spec.formula, source);
-    SpecVerdict verdict;
-    verdict.name = spec.name;
-    verdict.robustness = witness.robustness;
-    verdict.guide = guide_of(spec.formula, source, witness.robustness, false);
-    if (verdict.violated() && trace.end == EndReason::duration)
-      judge_the_end(spec, source, progress, verdict);
-    verdict.time = time_of_sample(trace, witness.sample);
-    if (witness.atom) {
-      verdict.atom = witness.atom->location;
-      verdict.atom_text = atom_text(file, verdict.atom);
-      verdict.mode_text = mode_text(file, spec.formula, *witness.atom, verdict.atom_text);
+    try {
+      verdicts.push_back(judge_spec(spec, source, trace, file, progress, options));
+    } catch (const OracleError& error) {
+      SpecVerdict verdict;
+      verdict.name = spec.name;
+      verdict.robustness = std::numeric_limits<double>::quiet_NaN();
+      verdict.guide = verdict.robustness;
+      verdict.not_judged = error.what();
+      verdict.not_judged_at = error.location();
+      verdicts.push_back(std::move(verdict));
     }
-    if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, verdict);
-    verdicts.push_back(std::move(verdict));
   }
   return verdicts;
 }

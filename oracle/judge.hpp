@@ -66,20 +66,35 @@ struct SpecVerdict {
   // cut short), the earliest first; `time`, `atom` and `atom_text` above are the first's, so a
   // crash is never reported as the target a later conjunct missed. Empty otherwise.
   std::vector<ViolatedConjunct> conjuncts;
+  // Why the trace cannot answer the spec (a signal the oracle does not compute, an actor the
+  // trace lacks), at not_judged_at; empty when judged. `robustness` is then NaN.
+  std::string not_judged;
+  SourceLocation not_judged_at;
 
-  bool violated() const { return robustness < 0; }
+  // LawBreaker's convention (JudgeOptions::violation_at_zero): robustness 0 is violated too.
+  bool zero_violates = false;
+
+  bool judged() const { return not_judged.empty(); }
+  bool violated() const {
+    return judged() && (robustness < 0 || (zero_violates && robustness == 0));
+  }
 };
 
-// How the collision oracle treats collisions that are not the ego's fault (oracle/responsibility).
+// How the collision oracle treats collisions that are not the ego's fault (oracle/responsibility),
+// and which robustness is a violation.
 struct JudgeOptions {
   RssParameters rss;
   bool all_collisions = false;  // --all-collisions: count them too
+  // --violation-at-zero: robustness exactly 0 is a violation (LawBreaker: the negated formula's
+  // robustness >= 0), not satisfied (RTAMT's convention, the default).
+  bool violation_at_zero = false;
 };
 
 // One verdict per spec of `scenario`, in file order, or one from the collision oracle when it has
 // none. A spec violated only because a run that ended at its duration cut an `F` short is a
-// time-out or stuck (VerdictEnding). `file` is the scenario's source, for the atoms' text. Throws
-// OracleError for a spec the trace cannot answer (e.g. a law signal the oracle does not compute).
+// time-out or stuck (VerdictEnding). `file` is the scenario's source, for the atoms' text. A spec
+// the trace cannot answer (e.g. a law signal the oracle does not compute) is not judged
+// (SpecVerdict::not_judged) and does not keep the others from being judged.
 std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
                                      std::span<const double> parameters, const Trace& trace,
                                      const RoadMap& map, const SourceFile& file,

@@ -25,6 +25,8 @@ constexpr double kLaneChangeOffset = 0.3;  // m
 constexpr double kTurnAroundAngle = 3 * std::numbers::pi / 4;
 // Past the end of a run the way ahead is followed this many lanes at most (short lanes).
 constexpr std::size_t kMaxLanesBeyondRun = 64;
+// A vehicle drives the ego's way when its heading is within this of the ego's.
+constexpr double kSameWay = std::numbers::pi / 4;
 
 bool contains(const std::vector<LaneIndex>& lanes, LaneIndex lane) {
   return std::find(lanes.begin(), lanes.end(), lane) != lanes.end();
@@ -243,6 +245,92 @@ void mark_lane_changes(const Trace& trace, const RoadMap& map, const LaneVisits&
   }
 }
 
+// Where another vehicle is along the ego's heading: its footprint wholly ahead of the ego's,
+// wholly behind, or beside (overlapping along); `near`: it drives the ego's way within
+// kOvertakeBeside across.
+enum class Along { behind, beside, ahead };
+struct Relative {
+  Along along = Along::ahead;
+  bool near = false;
+};
+
+Relative relative_to_ego(const TraceActor& ego, const TraceActor& other, std::size_t i) {
+  const double cos_h = std::cos(ego.heading[i]), sin_h = std::sin(ego.heading[i]);
+  const double dx = other.x[i] - ego.x[i], dy = other.y[i] - ego.y[i];
+  const double forward = dx * cos_h + dy * sin_h;
+  const double across = -dx * sin_h + dy * cos_h;
+  const double reach = (ego.length + other.length) / 2;
+  Relative relative;
+  relative.along = forward >= reach    ? Along::ahead
+                   : forward <= -reach ? Along::behind
+                                       : Along::beside;
+  relative.near = std::abs(across) <= kOvertakeBeside &&
+                  std::abs(angle_difference(other.heading[i], ego.heading[i])) < kSameWay;
+  return relative;
+}
+
+// Samples [first, last] of one pass of a vehicle.
+struct Pass {
+  std::size_t first = 0, last = 0;
+};
+
+// The lane change that leads into a pass: walking back from `first` while the vehicle stays
+// near and ahead (the ego following it), the first sample of the first lane change met.
+std::size_t start_of_pass(const Trace& trace, const TraceActor& other,
+                          const EgoManoeuvre& manoeuvre, std::size_t first) {
+  const TraceActor& ego = trace.actors[kEgo];
+  for (std::size_t k = first; k-- > 0;) {
+    if (manoeuvre.lane_changing[k]) {
+      while (k > 0 && manoeuvre.lane_changing[k - 1]) --k;
+      return k;
+    }
+    const Relative relative = relative_to_ego(ego, other, k);
+    if (!present_at(other, k) || relative.along != Along::ahead || !relative.near) break;
+  }
+  return first;
+}
+
+// The lane change back after a pass, found the same way forward while the vehicle is behind.
+std::size_t end_of_pass(const Trace& trace, const TraceActor& other, const EgoManoeuvre& manoeuvre,
+                        std::size_t last) {
+  const TraceActor& ego = trace.actors[kEgo];
+  for (std::size_t k = last + 1; k < trace.sample_count(); ++k) {
+    if (manoeuvre.lane_changing[k]) {
+      while (k + 1 < trace.sample_count() && manoeuvre.lane_changing[k + 1]) ++k;
+      return k;
+    }
+    const Relative relative = relative_to_ego(ego, other, k);
+    if (!present_at(other, k) || relative.along != Along::behind || !relative.near) break;
+  }
+  return last;
+}
+
+// The passes of `other`: runs of samples where it is near and beside the ego, entered with it
+// ahead and left with it behind (or at the end of the run).
+std::vector<Pass> passes_of(const Trace& trace, const TraceActor& other) {
+  const TraceActor& ego = trace.actors[kEgo];
+  const std::size_t count = trace.sample_count();
+  auto beside = [&](std::size_t i) {
+    const Relative relative = relative_to_ego(ego, other, i);
+    return present_at(other, i) && relative.near && relative.along == Along::beside;
+  };
+  auto is = [&](std::size_t i, Along along) {
+    return present_at(other, i) && relative_to_ego(ego, other, i).along == along &&
+           std::abs(angle_difference(other.heading[i], ego.heading[i])) < kSameWay;
+  };
+  std::vector<Pass> passes;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!beside(i)) continue;
+    std::size_t last = i;
+    while (last + 1 < count && beside(last + 1)) ++last;
+    const bool from_behind = i > 0 && is(i - 1, Along::ahead);
+    const bool left_in_front = last + 1 == count || is(last + 1, Along::behind);
+    if (from_behind && left_in_front) passes.push_back({i, last});
+    i = last;
+  }
+  return passes;
+}
+
 }  // namespace
 
 LaneVisits lane_visits(const TraceActor& actor) {
@@ -309,6 +397,20 @@ std::vector<double> turning_around(const Trace& trace, const EgoManoeuvre& manoe
         values[i] = 1;
         break;
       }
+  }
+  return values;
+}
+
+std::vector<double> overtaking(const Trace& trace, const EgoManoeuvre& manoeuvre) {
+  std::vector<double> values(trace.sample_count());
+  for (std::size_t k = 1; k < trace.actors.size(); ++k) {
+    const TraceActor& other = trace.actors[k];
+    if (other.kind != TraceActorKind::vehicle) continue;
+    for (const Pass& pass : passes_of(trace, other)) {
+      const std::size_t first = start_of_pass(trace, other, manoeuvre, pass.first);
+      const std::size_t last = end_of_pass(trace, other, manoeuvre, pass.last);
+      for (std::size_t i = first; i <= last; ++i) values[i] = 1;
+    }
   }
   return values;
 }

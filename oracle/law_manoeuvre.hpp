@@ -1,6 +1,7 @@
 // The ego's manoeuvres as the law signals read them from a simulated run: the lanes it drives on
 // (the trace's lane column), when it changes lane, which way it turns at the next junction
-// (scenest's `direction`, `isLaneChanging`, `isTurningAround`, `currentLane.direction`).
+// (scenest's `direction`, `isLaneChanging`, `isTurningAround`, `currentLane.direction`), and
+// when it overtakes (`isOverTaking`).
 // LawBreaker takes them from Apollo's planner; our drivers record no intent, so the lanes the
 // ego actually takes stand for it. Private to the oracle.
 #pragma once
@@ -51,6 +52,12 @@ EgoManoeuvre ego_manoeuvre(const Trace& trace, const RoadMap& map,
 // degrees within the next kTurnAroundWindow seconds, else 0.
 inline constexpr double kTurnAroundWindow = 8;  // s
 std::vector<double> turning_around(const Trace& trace, const EgoManoeuvre& manoeuvre);
+
+// `isOverTaking`: 1 while the ego passes a vehicle that drives its way, beside it within
+// kOvertakeBeside of its centre line: from where that vehicle was ahead until it is behind, with
+// the ego's lane changes out before and back after (docs/oracle.md), else 0.
+inline constexpr double kOvertakeBeside = 5;  // m: centre to centre, across the ego's heading
+std::vector<double> overtaking(const Trace& trace, const EgoManoeuvre& manoeuvre);
 
 // `currentLane.direction` at every sample: the manoeuvres the ego's lane allows, in LawBreaker's
 // 0-7 coding; 0 off the lanes.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -425,7 +426,54 @@ const TraceLight& light_colours(const Trace& trace, const RoadMap& map, std::uin
   throw OracleError(location, "the trace has no colours for traffic light '" + id + "'");
 }
 
+// Every name law_signal answers; a test checks this list against it.
+constexpr std::string_view kComputed[] = {"speed",
+                                          "acc",
+                                          "Time",
+                                          "rain",
+                                          "fog",
+                                          "snow",
+                                          "wetness",
+                                          "NPCAhead",
+                                          "NPCAhead.speed",
+                                          "NearestNPC",
+                                          "NearestNPC.speed",
+                                          "trafficLightAhead.color",
+                                          "signalAhead",
+                                          "stoplineAhead",
+                                          "stopSignAhead",
+                                          "crosswalkAhead",
+                                          "junctionAhead",
+                                          "currentLane.number",
+                                          "currentLane.direction",
+                                          "direction",
+                                          "isLaneChanging",
+                                          "isTurningAround",
+                                          "PriorityNPCAhead",
+                                          "isOverTaking",
+                                          "PriorityPedsAhead",
+                                          "isTrafficJam",
+                                          "NPCOpposite",
+                                          "NPCOpposite.speed",
+                                          "speedLimit.upperLimit",
+                                          "speedLimit.lowerLimit",
+                                          "visibility",
+                                          "gear",
+                                          "brake",
+                                          "honkingAllowed",
+                                          "streetLightOn",
+                                          "specialLocationAhead",
+                                          "specialLocationAhead.type"};
+
 }  // namespace
+
+bool law_signal_computed(std::string_view name) {
+  return std::find(std::begin(kComputed), std::end(kComputed), name) != std::end(kComputed);
+}
+
+std::string uncomputed_law_signal_message(std::string_view name) {
+  return "the oracle does not compute '" + std::string(name) + "' on simulated traces yet";
+}
 
 SignalValues law_signal(const SpecTerm& term, const Trace& trace, const ScenarioTemplate& scenario,
                         std::span<const double> parameters, const RoadMap& map) {
@@ -509,6 +557,7 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
         });
     return discrete(priority_vehicle_ahead(trace, manoeuvre(), ahead));
   }
+  if (name == "isOverTaking") return discrete(overtaking(trace, manoeuvre()));
   if (name == "PriorityPedsAhead") return discrete(priority_pedestrian_ahead(trace, manoeuvre()));
   if (name == "isTrafficJam")
     return discrete(along_the_lanes(trace, map, [&](const AheadView& view, std::size_t i) {
@@ -539,8 +588,14 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
       return std::clamp(-ego.acceleration[i] / full_braking * 100, 0.0, 100.0);
     }));
   }
-  throw OracleError(term.location,
-                    "the oracle does not compute '" + name + "' on simulated traces yet");
+  // No map we read marks a no-honking zone, street lighting or a special location (a school, a
+  // tunnel, a bridge): docs/oracle.md says how these differ from LawBreaker's placeholders.
+  if (name == "honkingAllowed") return discrete(std::vector<double>(count, 1));
+  if (name == "streetLightOn") return discrete(std::vector<double>(count, 0));
+  if (name == "specialLocationAhead")
+    return numeric(std::vector<double>(count, kNoRoadObjectAhead));
+  if (name == "specialLocationAhead.type") return discrete(std::vector<double>(count, 0));
+  throw OracleError(term.location, uncomputed_law_signal_message(name));
 }
 
 }  // namespace scenfuzz

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <span>
+#include <string>
+#include <string_view>
 
 #include "lang/scenario.hpp"
 #include "oracle/robustness.hpp"
@@ -21,6 +23,12 @@ inline constexpr double kNoVehicle = 1000;         // m: NPCAhead, NearestNPC
 // predicate or value) at every sample of `trace`. A distance predicate `P(d)` gives its distance:
 // the caller compares it with d. Throws OracleError at the term's location for a signal it does
 // not compute.
+// Whether law_signal computes the law signal `name` (it throws for every other).
+bool law_signal_computed(std::string_view name);
+
+// What law_signal says of a law signal it does not compute.
+std::string uncomputed_law_signal_message(std::string_view name);
+
 SignalValues law_signal(const SpecTerm& term, const Trace& trace, const ScenarioTemplate& scenario,
                         std::span<const double> parameters, const RoadMap& map);
 

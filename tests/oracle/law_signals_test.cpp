@@ -417,6 +417,99 @@ TEST_F(LawSignalsTest, ALaneChangeLastsWhileTheEgoIsOffItsLanesCentreTowardsTheO
             (std::vector<double>{0, 0, 2, 2, 2, 2, 0, 0, 0}));
 }
 
+// The ego (4 m) on `straight` at arc length s[i] of lane[i], offset[i] to the left; npc1 (4.6 m)
+// parked at east_0 -> 70.
+Trace overtaking_trace(const RoadMap& map, const std::vector<std::string>& lanes,
+                       const std::vector<double>& s, const std::vector<double>& offsets) {
+  Trace trace = law_trace(map, s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    put_on_lane(map, trace.actors[0], i, lanes[i], s[i], offsets[i]);
+    put_on_lane(map, trace.actors[1], i, "east_0", 70);
+  }
+  return trace;
+}
+
+TEST_F(LawSignalsTest, OverTakingIsPassingAVehicleByChangingLaneAndBack) {
+  // Behind npc1 on east_0, out to east_1 (samples 3-6), past npc1 (beside at 8-12), back to
+  // east_0 (15-18): overtaking from the lane change out to the end of the change back.
+  const std::vector<std::string> lanes = {"east_0", "east_0", "east_0", "east_0", "east_0",
+                                          "east_1", "east_1", "east_1", "east_1", "east_1",
+                                          "east_1", "east_1", "east_1", "east_1", "east_1",
+                                          "east_1", "east_1", "east_0", "east_0", "east_0"};
+  const std::vector<double> s = {50, 52, 54, 56, 58, 60, 62, 64, 66, 68,
+                                 70, 72, 74, 76, 78, 80, 82, 84, 86, 88};
+  const std::vector<double> offsets = {0, 0, 0, 0.8, 1.6, -1.4, -0.6, 0,   0,   0,
+                                       0, 0, 0, 0,   0,   -0.8, -1.6, 1.4, 0.6, 0};
+  const Trace trace = overtaking_trace(straight, lanes, s, offsets);
+  const SignalValues flag = law_values(trace, straight, "trace |= isOverTaking;\n");
+  std::vector<double> expected(20, 0);
+  std::fill(expected.begin() + 3, expected.begin() + 19, 1);
+  EXPECT_EQ(flag.values, expected);
+  EXPECT_TRUE(flag.discrete);
+  // A flag is 0 when true: `G ~isOverTaking` is violated.
+  EXPECT_LT(robustness_at_start(trace, straight, "trace |= G (~isOverTaking);\n"), 0);
+}
+
+TEST_F(LawSignalsTest, OverTakingIsAlsoPassingAVehicleInTheNextLane) {
+  // On east_1 all along, past npc1 on east_0: overtaking while beside it (s 66 to 74), no
+  // lane change to add.
+  const std::vector<double> s = {60, 62, 64, 66, 68, 70, 72, 74, 76, 78};
+  const Trace trace = overtaking_trace(straight, std::vector<std::string>(10, "east_1"), s,
+                                       std::vector<double>(10, 0));
+  EXPECT_EQ(law_values(trace, straight, "trace |= isOverTaking;\n").values,
+            (std::vector<double>{0, 0, 0, 1, 1, 1, 1, 1, 0, 0}));
+}
+
+TEST_F(LawSignalsTest, FollowingBeingPassedOrMeetingAVehicleIsNotOverTaking) {
+  const std::vector<double> zeros(10, 0);
+  // Following npc1 in its lane, never beside it.
+  const Trace following = overtaking_trace(straight, std::vector<std::string>(10, "east_0"),
+                                           {40, 41, 42, 43, 44, 45, 46, 47, 48, 49}, zeros);
+  EXPECT_EQ(law_values(following, straight, "trace |= isOverTaking;\n").values, zeros);
+  // Being passed: npc1 goes by on east_1 while the ego stands on east_0.
+  Trace passed = law_trace(straight, 10);
+  for (std::size_t i = 0; i < 10; ++i) {
+    put_on_lane(straight, passed.actors[0], i, "east_0", 70);
+    put_on_lane(straight, passed.actors[1], i, "east_1", 60 + 2.0 * static_cast<double>(i));
+  }
+  EXPECT_EQ(law_values(passed, straight, "trace |= isOverTaking;\n").values, zeros);
+  // Meeting a vehicle that comes the other way in the next lane.
+  Trace meeting = overtaking_trace(straight, std::vector<std::string>(10, "east_1"),
+                                   {60, 62, 64, 66, 68, 70, 72, 74, 76, 78}, zeros);
+  for (std::size_t i = 0; i < 10; ++i) meeting.actors[1].heading[i] = std::numbers::pi;
+  EXPECT_EQ(law_values(meeting, straight, "trace |= isOverTaking;\n").values, zeros);
+  // The run ending before npc1 is behind: still overtaking while beside it.
+  const Trace cut = overtaking_trace(straight, std::vector<std::string>(5, "east_1"),
+                                     {60, 62, 64, 66, 68}, std::vector<double>(5, 0));
+  EXPECT_EQ(law_values(cut, straight, "trace |= isOverTaking;\n").values,
+            (std::vector<double>{0, 0, 0, 1, 1}));
+}
+
+TEST_F(LawSignalsTest, NoMapMarksNoHonkingZonesStreetLightsOrSpecialLocations) {
+  // The built-in maps, like Apollo's HD maps, have none of them: honking is allowed, no street
+  // is lit (as the perception model assumes at night), no special location is ever ahead.
+  for (const RoadMap* map : {&straight, &crossroads}) {
+    Trace trace = law_trace(*map, 3);
+    for (std::size_t i = 0; i < 3; ++i) {
+      trace.actors[0].x[i] = map->lane(0).centre_line.points().front().x;
+      trace.actors[0].y[i] = map->lane(0).centre_line.points().front().y;
+    }
+    const SignalValues honking = law_values(trace, *map, "trace |= honkingAllowed;\n");
+    EXPECT_EQ(honking.values, std::vector<double>(3, 1));
+    EXPECT_TRUE(honking.discrete);
+    const SignalValues lit = law_values(trace, *map, "trace |= streetLightOn;\n");
+    EXPECT_EQ(lit.values, std::vector<double>(3, 0));
+    EXPECT_TRUE(lit.discrete);
+    const SignalValues special = law_values(trace, *map, "trace |= specialLocationAhead(5);\n");
+    EXPECT_EQ(special.values, std::vector<double>(3, kNoRoadObjectAhead));
+    EXPECT_FALSE(special.discrete);
+    EXPECT_EQ(law_values(trace, *map, "trace |= specialLocationAhead.type == 0;\n").values,
+              std::vector<double>(3, 0));
+    // law62 holds; a special location 5 m ahead is 195 m short of being true.
+    EXPECT_DOUBLE_EQ(robustness_at_start(trace, *map, "trace |= specialLocationAhead(5);\n"), -195);
+  }
+}
+
 TEST_F(LawSignalsTest, TurningAroundIsAHeadingReversalWithinEightSecondsOfATurn) {
   // Samples 2 s apart on the left-turn connector; the heading is set by hand.
   Trace trace = law_trace(crossroads, 6, 2);
@@ -662,8 +755,7 @@ TEST_F(LawSignalsTest, SignalsTheOracleDoesNotComputeAreErrorsAtTheTerm) {
   // They need the ego's vehicle signals (lamps, horn, indicator), which no run records, or
   // map facts no map has.
   for (const std::string name :
-       {"hornOn", "highBeamOn", "turnSignal == left", "isOverTaking", "honkingAllowed",
-        "streetLightOn", "specialLocationAhead(5)", "trafficLightAhead.isBlinking"}) {
+       {"hornOn", "highBeamOn", "turnSignal == left", "trafficLightAhead.isBlinking"}) {
     const test::ParsedScenario parsed =
         parse_scenario(scenario_with("", "trace |= " + name + ";\n"));
     const TraceSignals signals(trace, parsed.scenario, parsed.parameters, straight);
@@ -677,6 +769,75 @@ TEST_F(LawSignalsTest, SignalsTheOracleDoesNotComputeAreErrorsAtTheTerm) {
       EXPECT_EQ(error.location().line, 9u);
     }
   }
+}
+
+// law_signal_computed, which check and the search read before any run, says exactly what
+// law_signal computes, for every signal of LawBreaker's list.
+TEST_F(LawSignalsTest, TheComputedNamesAreTheOnesLawSignalAnswers) {
+  const Trace trace = law_trace(straight, 2);
+  const test::ParsedScenario parsed = parse_scenario(scenario_with("", ""));
+  std::size_t computed = 0;
+  for (const char* name : {"speed",
+                           "acc",
+                           "brake",
+                           "gear",
+                           "direction",
+                           "turnSignal",
+                           "currentLane.number",
+                           "currentLane.direction",
+                           "speedLimit.upperLimit",
+                           "speedLimit.lowerLimit",
+                           "highBeamOn",
+                           "lowBeamOn",
+                           "hornOn",
+                           "fogLightOn",
+                           "warningFlashOn",
+                           "engineOn",
+                           "manualIntervention",
+                           "isLaneChanging",
+                           "isOverTaking",
+                           "isTurningAround",
+                           "honkingAllowed",
+                           "streetLightOn",
+                           "crosswalkAhead",
+                           "junctionAhead",
+                           "stopSignAhead",
+                           "stoplineAhead",
+                           "specialLocationAhead",
+                           "trafficLightAhead.isBlinking",
+                           "trafficLightAhead.direction.isBlinking",
+                           "trafficLightAhead.color",
+                           "trafficLightAhead.direction.color",
+                           "signalAhead",
+                           "specialLocationAhead.type",
+                           "PriorityNPCAhead",
+                           "PriorityPedsAhead",
+                           "isTrafficJam",
+                           "NPCAhead",
+                           "NPCAhead.speed",
+                           "NearestNPC",
+                           "NearestNPC.speed",
+                           "NPCOpposite",
+                           "NPCOpposite.speed",
+                           "Time",
+                           "rain",
+                           "fog",
+                           "snow",
+                           "wetness",
+                           "visibility"}) {
+    SpecTerm term;
+    term.kind = TermKind::signal;
+    term.name = name;
+    bool answered = true;
+    try {
+      law_signal(term, trace, parsed.scenario, parsed.parameters, straight);
+    } catch (const OracleError&) {
+      answered = false;
+    }
+    EXPECT_EQ(law_signal_computed(name), answered) << name;
+    if (answered) ++computed;
+  }
+  EXPECT_EQ(computed, 37u);
 }
 
 TEST_F(LawSignalsTest, AnEgoWaitingAtARedLightSeesItsStopLineAhead) {
