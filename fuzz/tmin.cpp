@@ -18,21 +18,7 @@ namespace scenfuzz {
 
 namespace {
 
-struct Reducer {
-  TminReduction& reduction;
-  const TminPredicate& still_fails;
-  TminCheck check;  // the last replay of reduction.result
-
-  // Replays `candidate` and adopts it when it still fails the same way.
-  bool adopt_if_failing(TminCandidate candidate) {
-    ++reduction.checks;
-    const TminCheck replay = still_fails(candidate);
-    if (!replay.same_failure) return false;
-    reduction.result = std::move(candidate);
-    check = replay;
-    return true;
-  }
-};
+using Reducer = TminReducer<TminReduction, TminCandidate>;
 
 std::string actor_kind_word(ActorKind kind) {
   switch (kind) {

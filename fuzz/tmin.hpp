@@ -12,6 +12,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lang/scenario.hpp"
@@ -44,6 +45,26 @@ struct TminReduction {
   std::size_t numbers_rounded = 0;
   std::size_t digits_before = 0, digits_after = 0;  // significant digits of the scenario's numbers
   std::size_t checks = 0;                           // predicate calls
+};
+
+// The state of a reduction in progress, for any language's candidates: the reduction so far, the
+// predicate, and the last replay of the current result. `Reduction` has `result` (a `Candidate`)
+// and `checks`.
+template <typename Reduction, typename Candidate>
+struct TminReducer {
+  Reduction& reduction;
+  const std::function<TminCheck(const Candidate&)>& still_fails;
+  TminCheck check;  // the last replay of reduction.result
+
+  // Replays `candidate` and adopts it when it still fails the same way.
+  bool adopt_if_failing(Candidate candidate) {
+    ++reduction.checks;
+    const TminCheck replay = still_fails(candidate);
+    if (!replay.same_failure) return false;
+    reduction.result = std::move(candidate);
+    check = replay;
+    return true;
+  }
 };
 
 // Reduces `start`, which fails as `start_check` says (same_failure must be true).

@@ -15,20 +15,7 @@ namespace scenfuzz {
 
 namespace {
 
-struct Reducer {
-  WmgTminReduction& reduction;
-  const WmgTminPredicate& still_fails;
-  TminCheck check;  // the last replay of reduction.result
-
-  bool adopt_if_failing(WmgTminCandidate candidate) {
-    ++reduction.checks;
-    const TminCheck replay = still_fails(candidate);
-    if (!replay.same_failure) return false;
-    reduction.result = std::move(candidate);
-    check = replay;
-    return true;
-  }
-};
+using Reducer = TminReducer<WmgTminReduction, WmgTminCandidate>;
 
 // "vehicle", "pedestrian" or "cyclist": how the file initialises `actor`.
 std::string actor_type_word(const wmg::Level2File& file, const std::string& actor) {
