@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "physics/actors/actor_class.hpp"
+#include "physics/actors/vehicle_signals.hpp"
 #include "physics/collision/body_side.hpp"
 #include "physics/map/map_description.hpp"
 #include "physics/map/map_point.hpp"
@@ -41,6 +42,7 @@ struct TraceActor {
   std::vector<std::int32_t> lane;       // LaneIndex of the lane the centre is on, -1 on none
   std::vector<double> s;                // arc length on `lane`; 0 when lane is -1
   std::vector<std::uint8_t> reversing;  // one per sample, or empty: it never reverses
+  std::vector<VehicleSignals> signals;  // one per sample, or empty: it never shows any
 
   // The samples [present_from, present_until) in which the actor is on the map. Scenario actors
   // are present throughout (the defaults); a background-traffic vehicle (a Flow's) enters the map
