@@ -18,6 +18,8 @@
 
 #include "oracle/law_manoeuvre.hpp"
 #include "oracle/law_priority.hpp"
+#include "oracle/law_street_lights.hpp"
+#include "oracle/law_vehicle_signals.hpp"
 #include "physics/actors/actor_class.hpp"
 #include "physics/ego/perception.hpp"
 #include "physics/map/lane_route.hpp"
@@ -426,7 +428,8 @@ const TraceLight& light_colours(const Trace& trace, const RoadMap& map, std::uin
   throw OracleError(location, "the trace has no colours for traffic light '" + id + "'");
 }
 
-// Every name law_signal answers; a test checks this list against it.
+// Every name law_signal answers besides the ego's lamps and horn (law_vehicle_signals.hpp); a
+// test checks this list against it.
 constexpr std::string_view kComputed[] = {"speed",
                                           "acc",
                                           "Time",
@@ -468,7 +471,8 @@ constexpr std::string_view kComputed[] = {"speed",
 }  // namespace
 
 bool law_signal_computed(std::string_view name) {
-  return std::find(std::begin(kComputed), std::end(kComputed), name) != std::end(kComputed);
+  return is_vehicle_law_signal(name) ||
+         std::find(std::begin(kComputed), std::end(kComputed), name) != std::end(kComputed);
 }
 
 std::string uncomputed_law_signal_message(std::string_view name) {
@@ -483,6 +487,7 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
   auto numeric = [](std::vector<double> values) { return SignalValues{std::move(values), false}; };
   auto discrete = [](std::vector<double> values) { return SignalValues{std::move(values), true}; };
 
+  if (std::optional<SignalValues> vehicle = vehicle_law_signal(name, trace)) return *vehicle;
   if (name == "speed")
     return numeric(each_sample(
         count, [&](std::size_t i) { return ego.speed[i] * kKilometresPerHourPerMetrePerSecond; }));
@@ -588,10 +593,12 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
       return std::clamp(-ego.acceleration[i] / full_braking * 100, 0.0, 100.0);
     }));
   }
-  // No map we read marks a no-honking zone, street lighting or a special location (a school, a
-  // tunnel, a bridge): docs/oracle.md says how these differ from LawBreaker's placeholders.
+  if (name == "streetLightOn")
+    return discrete(street_lights_on(trace, map, time_of_day(scenario, parameters, term.location)));
+  // Honking is allowed everywhere and no special location is ever ahead, by what the maps hold:
+  // Apollo's HD map format has no no-honking sign, and neither it nor the built-in maps have
+  // school zones, tunnels or bridges (docs/oracle.md).
   if (name == "honkingAllowed") return discrete(std::vector<double>(count, 1));
-  if (name == "streetLightOn") return discrete(std::vector<double>(count, 0));
   if (name == "specialLocationAhead")
     return numeric(std::vector<double>(count, kNoRoadObjectAhead));
   if (name == "specialLocationAhead.type") return discrete(std::vector<double>(count, 0));

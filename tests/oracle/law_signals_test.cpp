@@ -485,9 +485,9 @@ TEST_F(LawSignalsTest, FollowingBeingPassedOrMeetingAVehicleIsNotOverTaking) {
             (std::vector<double>{0, 0, 0, 1, 1}));
 }
 
-TEST_F(LawSignalsTest, NoMapMarksNoHonkingZonesStreetLightsOrSpecialLocations) {
-  // The built-in maps, like Apollo's HD maps, have none of them: honking is allowed, no street
-  // is lit (as the perception model assumes at night), no special location is ever ahead.
+TEST_F(LawSignalsTest, NoMapMarksNoHonkingZonesOrSpecialLocations) {
+  // The built-in maps, like Apollo's HD maps, have neither: honking is allowed, no special
+  // location is ever ahead.
   for (const RoadMap* map : {&straight, &crossroads}) {
     Trace trace = law_trace(*map, 3);
     for (std::size_t i = 0; i < 3; ++i) {
@@ -497,9 +497,6 @@ TEST_F(LawSignalsTest, NoMapMarksNoHonkingZonesStreetLightsOrSpecialLocations) {
     const SignalValues honking = law_values(trace, *map, "trace |= honkingAllowed;\n");
     EXPECT_EQ(honking.values, std::vector<double>(3, 1));
     EXPECT_TRUE(honking.discrete);
-    const SignalValues lit = law_values(trace, *map, "trace |= streetLightOn;\n");
-    EXPECT_EQ(lit.values, std::vector<double>(3, 0));
-    EXPECT_TRUE(lit.discrete);
     const SignalValues special = law_values(trace, *map, "trace |= specialLocationAhead(5);\n");
     EXPECT_EQ(special.values, std::vector<double>(3, kNoRoadObjectAhead));
     EXPECT_FALSE(special.discrete);
@@ -508,6 +505,42 @@ TEST_F(LawSignalsTest, NoMapMarksNoHonkingZonesStreetLightsOrSpecialLocations) {
     // law62 holds; a special location 5 m ahead is 195 m short of being true.
     EXPECT_DOUBLE_EQ(robustness_at_start(trace, *map, "trace |= specialLocationAhead(5);\n"), -195);
   }
+}
+
+TEST_F(LawSignalsTest, StreetLightsAreOnBetweenDuskAndDawnOnTownStreets) {
+  // crossroads' lanes are limited to 50 km/h (a town street), straight's to 80 (a rural road).
+  auto lights = [&](const RoadMap& map, const std::string& lane, const std::string& environment,
+                    double dt = 0.1) {
+    Trace trace = law_trace(map, 3, dt);
+    for (std::size_t i = 0; i < 3; ++i) put_on_lane(map, trace.actors[0], i, lane, 10);
+    const SignalValues values = law_values(trace, map, "trace |= streetLightOn;\n", environment);
+    EXPECT_TRUE(values.discrete);
+    return values.values;
+  };
+  EXPECT_EQ(lights(crossroads, "west_in_0", "Environment(23:00)"), std::vector<double>(3, 1));
+  EXPECT_EQ(lights(crossroads, "west_in_0", "Environment(6:30)"), std::vector<double>(3, 1))
+      << "before dawn";
+  EXPECT_EQ(lights(crossroads, "west_in_0", ""), std::vector<double>(3, 0)) << "noon";
+  EXPECT_EQ(lights(straight, "east_0", "Environment(23:00)"), std::vector<double>(3, 0));
+  // Samples a minute apart from 17:59: the lamps come on after 18:00, at dusk.
+  EXPECT_EQ(lights(crossroads, "west_in_0", "Environment(17:59)", 60),
+            (std::vector<double>{0, 0, 1}));
+  // Off the lanes there is no street to light.
+  Trace off = law_trace(crossroads, 2);
+  EXPECT_EQ(law_values(off, crossroads, "trace |= streetLightOn;\n", "Environment(23:00)").values,
+            std::vector<double>(2, 0));
+  // law58's first clause asks for high beams at night only where the street is not lit.
+  const std::string law58 =
+      "trace |= G ((~streetLightOn & (Time >= 20:00 | Time <= 7:00) & ~NPCAhead(10)) -> "
+      "highBeamOn);\n";
+  Trace dark = law_trace(straight, 2);
+  Trace town = law_trace(crossroads, 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    put_on_lane(straight, dark.actors[0], i, "east_0", 10);
+    put_on_lane(crossroads, town.actors[0], i, "west_in_0", 10);
+  }
+  EXPECT_LT(robustness_at_start(dark, straight, law58, "Environment(23:00)"), 0);
+  EXPECT_GT(robustness_at_start(town, crossroads, law58, "Environment(23:00)"), 0);
 }
 
 TEST_F(LawSignalsTest, TurningAroundIsAHeadingReversalWithinEightSecondsOfATurn) {
@@ -752,10 +785,10 @@ TEST_F(LawSignalsTest, GearIsDriveAndBrakeIsTheShareOfFullBraking) {
 
 TEST_F(LawSignalsTest, SignalsTheOracleDoesNotComputeAreErrorsAtTheTerm) {
   const Trace trace = law_trace(straight, 2);
-  // They need the ego's vehicle signals (lamps, horn, indicator), which no run records, or
-  // map facts no map has.
+  // They need blinking and arrow lights, which no map or run has.
   for (const std::string name :
-       {"hornOn", "highBeamOn", "turnSignal == left", "trafficLightAhead.isBlinking"}) {
+       {"trafficLightAhead.isBlinking", "trafficLightAhead.direction.color == green",
+        "trafficLightAhead.direction.isBlinking"}) {
     const test::ParsedScenario parsed =
         parse_scenario(scenario_with("", "trace |= " + name + ";\n"));
     const TraceSignals signals(trace, parsed.scenario, parsed.parameters, straight);
@@ -837,7 +870,7 @@ TEST_F(LawSignalsTest, TheComputedNamesAreTheOnesLawSignalAnswers) {
     EXPECT_EQ(law_signal_computed(name), answered) << name;
     if (answered) ++computed;
   }
-  EXPECT_EQ(computed, 37u);
+  EXPECT_EQ(computed, 45u);
 }
 
 TEST_F(LawSignalsTest, AnEgoWaitingAtARedLightSeesItsStopLineAhead) {

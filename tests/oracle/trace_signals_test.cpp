@@ -310,8 +310,9 @@ TEST_F(TraceSignalsTest, WhatTheTraceCannotGiveIsAnErrorAtTheTerm) {
   const std::string lane = error_of("dis(trace[ego], \"nowhere\"->10)").what();
   EXPECT_NE(lane.find("nowhere"), std::string::npos) << lane;
 
-  const std::string horn = error_of("hornOn").what();
-  EXPECT_EQ(horn, "the oracle does not compute 'hornOn' on simulated traces yet");
+  const std::string blinking = error_of("trafficLightAhead.isBlinking").what();
+  EXPECT_EQ(blinking,
+            "the oracle does not compute 'trafficLightAhead.isBlinking' on simulated traces yet");
 }
 
 TEST_F(TraceSignalsTest, RobustnessOfASpecReadsTheSignals) {
