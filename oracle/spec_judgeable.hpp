@@ -1,7 +1,7 @@
 // Which specs of a scenario the oracle can judge on simulated traces, found before any run: a
-// spec that reads a law signal the oracle does not compute (`turnSignal`, `hornOn`, ...) cannot
-// be judged. `scenfuzz check` lists every such place at once; `run` and the search judge the
-// other specs and report these as not judged.
+// spec that reads a law signal the oracle does not compute (`trafficLightAhead.isBlinking`, ...)
+// cannot be judged. `scenfuzz check` lists every such place at once; `run` and the search judge
+// the other specs and report these as not judged.
 #pragma once
 
 #include <string>
@@ -16,7 +16,7 @@ struct UncomputedSignal {
   std::string spec;  // the spec's name
   std::string name;  // the signal's
   SourceLocation location;
-  std::string message;  // "the oracle does not compute 'hornOn' on simulated traces yet"
+  std::string message;  // "the oracle does not compute 'trafficLightAhead.isBlinking' ..."
 };
 
 // Every such place in `scenario`'s specs, in spec order, each place once per spec (a named

@@ -1,14 +1,12 @@
 // Specs the oracle cannot judge (they read a signal it does not compute on simulated traces):
 // `check` lists every place at once, `run` judges the other specs and reports these as not
-// judged, the search targets the judgeable specs and says which were not judged; LawBreaker's
-// shared law files run.
+// judged, the search targets the judgeable specs and says which were not judged.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/fuzz/command_runner.hpp"
-#include "tests/support/shared_dir.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -16,42 +14,45 @@ namespace {
 using scenfuzz::test::Outcome;
 using NotJudgedSpecsTest = scenfuzz::test::CommandTest;
 
-// `honk` and `lights` read the ego's horn and lamps, which no run records yet; `fast` is judged
+// `blink` and `arrow` read blinking and arrow lights, which no map or run has; `fast` is judged
 // (the ego drives at 36 km/h).
 std::string scenario(const std::string& start_speed) {
   return "ego = AV((\"east_0\"->50, , " + start_speed +
          "), (\"east_0\"->200));\n"
          "scenario = CreateScenario{load(\"straight\"); ego; {}; {}; {};};\n"
          "Trace trace = EXE(scenario);\n"
-         "honk = G (~hornOn);\n"
-         "lights = G (lowBeamOn | highBeamOn);\n"
+         "blink = G (~trafficLightAhead.isBlinking);\n"
+         "arrow = G (trafficLightAhead.direction.color == green | "
+         "trafficLightAhead.direction.isBlinking);\n"
          "fast = G (speed < 20);\n"
-         "trace |= honk;\n"
-         "trace |= lights;\n"
+         "trace |= blink;\n"
+         "trace |= arrow;\n"
          "trace |= fast;\n";
 }
 
 TEST_F(NotJudgedSpecsTest, CheckListsEveryPlaceOfAnUncomputedSignalAtOnce) {
-  const std::string path = write("lamps.avu", scenario("10"));
+  const std::string path = write("lights.avu", scenario("10"));
   const Outcome check = scenfuzz({"check", path});
   EXPECT_EQ(check.exit_code, 0) << "the file is good; only the oracle lacks the signals";
   for (const std::string& place :
-       {path + ":4:12: warning: the oracle does not compute 'hornOn'",
-        path + ":5:13: warning: the oracle does not compute 'lowBeamOn'",
-        path + ":5:25: warning: the oracle does not compute 'highBeamOn'"})
+       {path + ":4:13: warning: the oracle does not compute 'trafficLightAhead.isBlinking'",
+        path + ":5:12: warning: the oracle does not compute 'trafficLightAhead.direction.color'",
+        path +
+            ":5:57: warning: the oracle does not compute 'trafficLightAhead.direction.isBlinking'"})
     EXPECT_NE(check.err.find(place), std::string::npos) << place << "\n" << check.err;
-  EXPECT_NE(check.err.find("spec 'lights' will not be judged"), std::string::npos) << check.err;
+  EXPECT_NE(check.err.find("spec 'arrow' will not be judged"), std::string::npos) << check.err;
 }
 
 TEST_F(NotJudgedSpecsTest, RunJudgesTheOtherSpecsAndReportsTheseAsNotJudged) {
-  const std::string path = write("lamps.avu", scenario("10"));
+  const std::string path = write("lights.avu", scenario("10"));
   const Outcome run = scenfuzz({"run", "--duration", "3", "--out", (dir_ / "run").string(), path});
   EXPECT_EQ(run.exit_code, 1) << "fast is violated\n" << run.err;
-  EXPECT_NE(run.out.find("spec honk: not judged: " + path +
-                         ":4:12: the oracle does not compute 'hornOn' on simulated traces yet"),
+  EXPECT_NE(run.out.find("spec blink: not judged: " + path +
+                         ":4:13: the oracle does not compute 'trafficLightAhead.isBlinking' on "
+                         "simulated traces yet"),
             std::string::npos)
       << run.out;
-  EXPECT_NE(run.out.find("spec lights: not judged: " + path + ":5:13:"), std::string::npos);
+  EXPECT_NE(run.out.find("spec arrow: not judged: " + path + ":5:12:"), std::string::npos);
   // 36 km/h at the start and faster after: at least 16 km/h over 20.
   EXPECT_NE(run.out.find("spec fast: robustness -"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("violated by 'speed < 20'"), std::string::npos) << run.out;
@@ -63,34 +64,35 @@ TEST_F(NotJudgedSpecsTest, RunJudgesTheOtherSpecsAndReportsTheseAsNotJudged) {
   EXPECT_EQ(specs[0]["verdict"], "not judged");
   EXPECT_TRUE(specs[0]["robustness"].is_null());
   EXPECT_EQ(specs[0]["violated"], false);
-  EXPECT_EQ(specs[0]["not_judged_location"], path + ":4:12");
+  EXPECT_EQ(specs[0]["not_judged_location"], path + ":4:13");
   EXPECT_EQ(specs[2]["verdict"], "violated");
 }
 
 TEST_F(NotJudgedSpecsTest, RunWithNoJudgeableSpecSaysSoAndExitsTwo) {
   std::string text = scenario("10");
   text.erase(text.find("trace |= fast;\n"));
-  const std::string path = write("lamps.avu", text);
+  const std::string path = write("lights.avu", text);
   const Outcome run = scenfuzz({"run", "--duration", "2", path});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("could be judged on the simulated trace"), std::string::npos) << run.err;
-  EXPECT_NE(run.out.find("spec honk: not judged"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("spec blink: not judged"), std::string::npos) << run.out;
 }
 
 TEST_F(NotJudgedSpecsTest, TheSearchTargetsTheJudgeableSpecsAndNamesTheOthers) {
-  const std::string path = write("lamps.avu", scenario("range(8.0, 12.0)"));
+  const std::string path = write("lights.avu", scenario("range(8.0, 12.0)"));
   const std::string out = (dir_ / "out").string();
   const Outcome search =
       scenfuzz({"--budget", "4", "-j", "2", "--duration", "2", "--out", out, path});
   EXPECT_EQ(search.exit_code, 1) << search.err;
-  EXPECT_NE(search.err.find("scenfuzz: note: spec honk is not judged: " + path + ":4:12:"),
+  EXPECT_NE(search.err.find("scenfuzz: note: spec blink is not judged: " + path + ":4:13:"),
             std::string::npos)
       << search.err;
   EXPECT_NE(search.out.find("best fast:"), std::string::npos) << search.out;
-  EXPECT_EQ(search.out.find("best honk"), std::string::npos) << search.out;
-  EXPECT_NE(search.out.find("not judged: spec lights: " + path +
-                            ":5:13: the oracle does not compute 'lowBeamOn'"),
-            std::string::npos)
+  EXPECT_EQ(search.out.find("best blink"), std::string::npos) << search.out;
+  EXPECT_NE(
+      search.out.find("not judged: spec arrow: " + path +
+                      ":5:12: the oracle does not compute 'trafficLightAhead.direction.color'"),
+      std::string::npos)
       << search.out;
 }
 
@@ -123,28 +125,6 @@ TEST_F(NotJudgedSpecsTest, ViolationAtZeroFlipsARobustnessZeroVerdict) {
       scenfuzz({"--budget", "2", "-j", "2", "--duration", "2", "--violation-at-zero", "--mutate",
                 "speed=0", "--out", out, path});
   EXPECT_EQ(search.exit_code, 1) << search.err << search.out;
-}
-
-// LawBreaker's 13-law files run unchanged on the Apollo san_francisco map; their one spec needs
-// the ego's indicators, horn and lamps, so it is reported not judged until the runs record them.
-TEST_F(NotJudgedSpecsTest, LawBreakersSharedLawFilesRunWithTheirSpecNotJudged) {
-  SCENFUZZ_REQUIRE_SHARED_DIR();
-  const std::filesystem::path examples = scenfuzz::test::shared_dir() / "examples" / "scenest";
-  const std::string maps = (scenfuzz::test::shared_dir() / "maps" / "apollo").string();
-  for (const char* name : {"lawbreaker__traffic_rule_tests__intersection_turn_left.scenest",
-                           "lawbreaker__input-test.scenest"}) {
-    const std::string path = (examples / name).string();
-    const Outcome run = scenfuzz({"run", "--map-path", maps, "--json", path});
-    SCOPED_TRACE(path + "\n" + run.err);
-    EXPECT_EQ(run.exit_code, 2) << "nothing could be judged";
-    const nlohmann::json report = nlohmann::json::parse(run.out);
-    EXPECT_EQ(report.at("map"), "san_francisco");
-    const nlohmann::json& specs = report.at("specs");
-    ASSERT_EQ(specs.size(), 1u);
-    EXPECT_EQ(specs[0]["verdict"], "not judged");
-    EXPECT_EQ(specs[0]["not_judged"],
-              "the oracle does not compute 'turnSignal' on simulated traces yet");
-  }
 }
 
 }  // namespace
