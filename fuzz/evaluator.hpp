@@ -64,10 +64,21 @@ struct Evaluation {
   // the search's summary reports their union. Empty when the evaluator computes none or the
   // run left no trace (fuzz/run_coverage.hpp).
   std::vector<std::string> coverage;
+  // One per Evaluator::sub_targets(): the robustness at the trace's start of that law
+  // sub-violation, >= 0 where the run reached it (the values `coverage`'s law features are read
+  // from). Empty when the run left no trace or the evaluator has no sub-targets.
+  std::vector<double> sub_robustness;
   double wall_seconds = 0;
 
   bool feasible() const { return infeasible.empty(); }
   bool judged() const { return infeasible.empty() && failure.empty(); }
+};
+
+// A law sub-violation (oracle/law_coverage.hpp) the search can target in place of its spec
+// (--target sub-violations).
+struct SubTarget {
+  std::size_t objective = 0;  // its spec's index in objectives()
+  std::string name;           // its coverage feature, "law.<spec>.<k>"
 };
 
 class Evaluator {
@@ -78,6 +89,8 @@ class Evaluator {
   // Where the search starts (a point of the unit cube): a concrete seed's values as written.
   // Nullopt: the strategies choose every point.
   virtual std::optional<std::vector<double>> start_point() const { return std::nullopt; }
+  // The law sub-violations every evaluation measures (Evaluation::sub_robustness); none by default.
+  virtual std::vector<SubTarget> sub_targets() const { return {}; }
   // The evaluation of `unit_point` with every random draw seeded from `seed`. Called from
   // several threads at once: implementations keep no mutable shared state.
   virtual Evaluation evaluate(std::span<const double> unit_point, std::uint64_t seed) const = 0;

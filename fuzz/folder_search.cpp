@@ -132,6 +132,7 @@ SearchOptions search_plan(const FuzzCommandOptions& options) {
   plan.time_limit = options.time_limit;
   plan.seed = options.seed;
   plan.jobs = options.jobs;
+  plan.sub_violation_targets = options.target == "sub-violations";
   return plan;
 }
 

@@ -187,6 +187,7 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
           << " time-outs (the run ended while the ego still made progress; not findings)\n";
   if (outputs.audited_with_issues() > 0) out << audit_line(outputs, summary) << "\n";
   if (const std::string line = collisions_line(outputs); !line.empty()) out << line << "\n";
+  out << outputs.law_coverage_lines();
   out << "wrote " << (fs::path(options.out_dir) / "summary.json").string() << "\n";
 }
 

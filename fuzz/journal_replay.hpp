@@ -30,6 +30,7 @@ class JournalReplay : public Evaluator {
   std::vector<SearchDimension> dimensions() const override { return inner_.dimensions(); }
   std::vector<std::string> objectives() const override { return inner_.objectives(); }
   std::optional<std::vector<double>> start_point() const override { return inner_.start_point(); }
+  std::vector<SubTarget> sub_targets() const override { return inner_.sub_targets(); }
   // The journalled evaluation for `seed`, or a new one. Throws JournalMismatch when the journal
   // has `seed` at another point.
   Evaluation evaluate(std::span<const double> unit_point, std::uint64_t seed) const override;

@@ -1,10 +1,10 @@
-// run_coverage: one pass of behaviour_coverage over the trace, plus law_coverage for law specs.
+// run_coverage: one pass of behaviour_coverage over the trace, plus the law sub-violations'
+// robustness for law specs, from which their features are read.
 #include "fuzz/run_coverage.hpp"
 
 #include <algorithm>
 
 #include "oracle/behaviour_coverage.hpp"
-#include "oracle/law_coverage.hpp"
 
 namespace scenfuzz {
 
@@ -14,14 +14,22 @@ bool has_coverage(const ScenarioRun& run) {
 }
 
 std::vector<std::string> run_coverage(const ScenarioRun& run, const ScenarioTemplate& scenario) {
-  if (!has_coverage(run)) return {};
-  std::vector<std::string> features = behaviour_coverage(*run.trace, *run.map, run.conditions);
-  const std::vector<std::string> laws = law_coverage(scenario, run.values, *run.trace, *run.map);
-  if (laws.empty()) return features;
-  features.insert(features.end(), laws.begin(), laws.end());
-  std::sort(features.begin(), features.end());
-  features.erase(std::unique(features.begin(), features.end()), features.end());
-  return features;
+  return run_coverage(run, scenario, law_sub_violations(scenario)).features;
+}
+
+RunCoverage run_coverage(const ScenarioRun& run, const ScenarioTemplate& scenario,
+                         const std::vector<LawSubViolation>& subs) {
+  RunCoverage coverage;
+  if (!has_coverage(run)) return coverage;
+  coverage.features = behaviour_coverage(*run.trace, *run.map, run.conditions);
+  if (subs.empty()) return coverage;
+  coverage.law_robustness = law_robustness(subs, scenario, run.values, *run.trace, *run.map);
+  const std::vector<std::string> laws = reached_law_features(subs, coverage.law_robustness);
+  coverage.features.insert(coverage.features.end(), laws.begin(), laws.end());
+  std::sort(coverage.features.begin(), coverage.features.end());
+  coverage.features.erase(std::unique(coverage.features.begin(), coverage.features.end()),
+                          coverage.features.end());
+  return coverage;
 }
 
 }  // namespace scenfuzz

@@ -87,7 +87,8 @@ ScenarioEvaluator::ScenarioEvaluator(const SourceFile& file, const ScenarioTempl
       scenario_(scenario),
       space_(parameter_space(scenario)),
       search_path_(std::move(search_path)),
-      simulation_(std::move(simulation)) {
+      simulation_(std::move(simulation)),
+      law_subs_(scenfuzz::law_sub_violations(scenario)) {
   if (!map_has_parameters(scenario.map))
     fixed_map_ = std::make_shared<const RoadMap>(load_scenario_map(
         scenario.map, search_path_, std::vector<double>(space_.dimensions.size())));
@@ -114,6 +115,12 @@ std::optional<std::vector<double>> ScenarioEvaluator::start_point() const {
     written.push_back(*dimension.origin);
   }
   return encode(space_, written);
+}
+
+std::vector<SubTarget> ScenarioEvaluator::sub_targets() const {
+  std::vector<SubTarget> targets;
+  for (const LawSubViolation& sub : law_subs_) targets.push_back({sub.spec, sub.name});
+  return targets;
 }
 
 std::vector<std::string> ScenarioEvaluator::objectives() const {
@@ -198,7 +205,9 @@ Evaluation ScenarioEvaluator::evaluate(std::span<const double> unit_point,
     const TraceAudit audit = audit_trace(*run.trace, *run.map);
     evaluation.audit.assign(audit.counts.begin(), audit.counts.end());
   }
-  evaluation.coverage = run_coverage(run, scenario_);
+  RunCoverage coverage = run_coverage(run, scenario_, law_subs_);
+  evaluation.coverage = std::move(coverage.features);
+  evaluation.sub_robustness = std::move(coverage.law_robustness);
   if (run.trace && run.trace->ego_failure && is_finding(*run.trace->ego_failure)) {
     const EgoFailure& failure = *run.trace->ego_failure;
     evaluation.failure_kind = ego_failure_kind_name(failure.kind);

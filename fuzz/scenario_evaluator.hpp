@@ -14,6 +14,7 @@
 #include "lang/scenario.hpp"
 #include "lang/source_file.hpp"
 #include "oracle/judge.hpp"
+#include "oracle/law_coverage.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/scenario_setup.hpp"
@@ -53,6 +54,9 @@ class ScenarioEvaluator : public Evaluator {
   std::vector<std::string> objectives() const override;
   // A space derived around a concrete file (every dimension has an origin): its written values.
   std::optional<std::vector<double>> start_point() const override;
+  // The sub-violations of the scenario's law specs (oracle/law_coverage.hpp), in their order.
+  std::vector<SubTarget> sub_targets() const override;
+  const std::vector<LawSubViolation>& law_sub_violations() const { return law_subs_; }
   // Throws OracleError when a spec cannot be judged on the trace (the same for every point).
   Evaluation evaluate(std::span<const double> unit_point, std::uint64_t seed) const override;
 
@@ -80,6 +84,7 @@ class ScenarioEvaluator : public Evaluator {
   SimulationOptions simulation_;
   JudgeOptions judge_options_;
   std::shared_ptr<const RoadMap> fixed_map_;
+  std::vector<LawSubViolation> law_subs_;  // worked out once: every evaluation measures them
 };
 
 // Whether an ego plugin's failure is a finding (it crashed or hung, or returned an error once

@@ -12,6 +12,7 @@
 
 #include "fuzz/search_strategy.hpp"
 #include "fuzz/start_point_strategy.hpp"
+#include "fuzz/sub_targets.hpp"
 #include "sampler/random.hpp"
 
 namespace scenfuzz {
@@ -24,13 +25,73 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// One targeted objective: its strategy and what is left of its share of the budget.
+// One target: what it aims at, its strategy and what is left of its share of the budget.
 struct Target {
-  std::size_t objective = 0;
+  TargetPlan plan;
   std::unique_ptr<SearchStrategy> strategy;
   std::size_t remaining = 0;
   bool exhausted = false;
+  bool dropped = false;  // its sub-violation was reached: its budget went to the others
 };
+
+// A target with `budget` evaluations whose strategy draws from stream `stream` of the run seed;
+// `written` (a concrete seed's own values) is its first point.
+Target make_target(const TargetPlan& plan, const SearchOptions& options,
+                   const std::vector<SearchDimension>& dimensions, std::size_t stream,
+                   std::size_t budget, const std::optional<UnitPoint>& written) {
+  Target target;
+  target.plan = plan;
+  target.remaining = budget;
+  const std::size_t strategy_budget = std::max<std::size_t>(budget - (written && budget > 1), 1);
+  target.strategy =
+      make_search_strategy(options.algorithm, dimensions,
+                           derive_seed(options.seed, ~std::uint64_t{stream}), strategy_budget);
+  if (written)
+    target.strategy = std::make_unique<StartPointStrategy>(*written, std::move(target.strategy));
+  return target;
+}
+
+// Drops the targets whose sub-violation is reached and shares out their budgets: among the
+// sub-targets still unreached, else among new targets for the law specs themselves (whose
+// strategies take the next streams of the seed).
+void drop_reached(std::vector<Target>& targets, const std::vector<bool>& reached,
+                  const SearchOptions& options, const std::vector<SearchDimension>& dimensions) {
+  std::size_t freed = 0;
+  std::vector<std::size_t> law_objectives;
+  for (Target& target : targets) {
+    if (!target.plan.sub || target.dropped || !reached[*target.plan.sub]) continue;
+    target.dropped = true;
+    freed += target.remaining;
+    target.remaining = 0;
+    if (std::find(law_objectives.begin(), law_objectives.end(), target.plan.objective) ==
+        law_objectives.end())
+      law_objectives.push_back(target.plan.objective);
+  }
+  if (freed == 0) return;
+  std::vector<std::size_t*> shares;
+  for (Target& target : targets)
+    if (target.plan.sub && !target.dropped && !target.exhausted)
+      shares.push_back(&target.remaining);
+  if (shares.empty()) {
+    // Every sub-violation is reached: the rest searches the law specs as the plain search does.
+    for (Target& target : targets)
+      if (!target.plan.sub && !target.exhausted &&
+          std::find(law_objectives.begin(), law_objectives.end(), target.plan.objective) !=
+              law_objectives.end())
+        shares.push_back(&target.remaining);
+    if (shares.empty()) {
+      for (std::size_t k = 0; k < law_objectives.size(); ++k) {
+        const std::size_t budget =
+            freed / law_objectives.size() + (k < freed % law_objectives.size());
+        const TargetPlan plan{law_objectives[k], std::nullopt, law_objectives[k]};
+        targets.push_back(
+            make_target(plan, options, dimensions, targets.size(), budget, std::nullopt));
+      }
+      return;
+    }
+  }
+  share_budget(freed, shares);
+}
 
 }  // namespace
 
@@ -55,28 +116,22 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
   std::vector<std::size_t> objectives = options.targets;
   if (objectives.empty())
     for (std::size_t i = 0; i < objective_count; ++i) objectives.push_back(i);
+  for (std::size_t objective : objectives)
+    if (objective >= objective_count)
+      throw std::invalid_argument("search target " + std::to_string(objective) + " out of range");
+  const std::vector<SubTarget> subs = evaluator.sub_targets();
+  const std::vector<TargetPlan> plans =
+      plan_targets(objectives, subs, objective_count, options.sub_violation_targets);
   std::vector<Target> targets;
-  std::vector<bool> first_batch_done(objectives.size(), false);
-  for (std::size_t k = 0; k < objectives.size(); ++k) {
-    if (objectives[k] >= objective_count)
-      throw std::invalid_argument("search target " + std::to_string(objectives[k]) +
-                                  " out of range");
-    Target target;
-    target.objective = objectives[k];
-    // Equal shares; the first targets take the remainder.
-    target.remaining =
-        options.budget / objectives.size() + (k < options.budget % objectives.size());
-    // Each target's strategy draws from its own stream of the run seed. A concrete seed's own
-    // values are the first target's first point.
-    const std::optional<UnitPoint> written = k == 0 ? evaluator.start_point() : std::nullopt;
-    const std::size_t strategy_budget = target.remaining - (written && target.remaining > 1);
-    target.strategy =
-        make_search_strategy(options.algorithm, dimensions,
-                             derive_seed(options.seed, ~std::uint64_t{k}), strategy_budget);
-    if (written)
-      target.strategy = std::make_unique<StartPointStrategy>(*written, std::move(target.strategy));
-    targets.push_back(std::move(target));
+  for (std::size_t k = 0; k < plans.size(); ++k) {
+    // Equal shares; the first targets take the remainder. A concrete seed's own values are the
+    // first target's first point.
+    const std::size_t budget = options.budget / plans.size() + (k < options.budget % plans.size());
+    targets.push_back(make_target(plans[k], options, dimensions, k, budget,
+                                  k == 0 ? evaluator.start_point() : std::nullopt));
   }
+  std::vector<bool> first_batch_done(targets.size(), false);
+  std::vector<bool> reached(subs.size(), false);
 
   const int threads =
       options.jobs == 0 ? tbb::info::default_concurrency() : static_cast<int>(options.jobs);
@@ -93,8 +148,9 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
     bool any_left = false;
     // Round robin over the targets, one batch each.
     for (std::size_t t = 0; t < targets.size(); ++t) {
+      if (t >= first_batch_done.size()) first_batch_done.resize(targets.size(), false);
       Target& target = targets[t];
-      if (target.remaining == 0 || target.exhausted) continue;
+      if (target.remaining == 0 || target.exhausted || target.dropped) continue;
       if (callbacks.interrupted && callbacks.interrupted()) {
         summary.stop = StopReason::interrupted;
         stopped = true;
@@ -121,7 +177,7 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
       for (std::size_t i = 0; i < points.size(); ++i) {
         records[i].index = next_index + i;
         records[i].seed = derive_seed(options.seed, records[i].index);
-        records[i].target = target.objective;
+        records[i].target = target.plan.id;
         records[i].point = points[i];
         records[i].first_design = !first_batch_done[t];
       }
@@ -143,11 +199,10 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
       for (std::size_t i = 0; i < records.size(); ++i) {
         const Evaluation& evaluation = records[i].evaluation;
         observations[i].point = records[i].point;
-        observations[i].judged = evaluation.judged();
-        if (evaluation.judged())
-          observations[i].objective = evaluation.guide.empty()
-                                          ? evaluation.robustness[target.objective]
-                                          : evaluation.guide[target.objective];
+        const std::optional<double> objective = target_objective(target.plan, evaluation);
+        observations[i].judged = objective.has_value();
+        if (objective) observations[i].objective = *objective;
+        mark_reached(evaluation, reached);
         ++summary.evaluations;
         if (!evaluation.feasible()) {
           ++summary.infeasible;
@@ -159,11 +214,13 @@ SearchSummary run_search(const Evaluator& evaluator, const SearchOptions& option
       }
       if (callbacks.on_batch_end) callbacks.on_batch_end();
       target.strategy->observe(observations);
+      // After the batch, in index order: the same plan for any -j and on a replayed journal.
+      if (options.sub_violation_targets) drop_reached(targets, reached, options, dimensions);
     }
     if (!stopped && !any_left) {
       bool all_exhausted = true;
       for (const Target& target : targets)
-        if (target.remaining > 0 && !target.exhausted) all_exhausted = false;
+        if (target.remaining > 0 && !target.exhausted && !target.dropped) all_exhausted = false;
       summary.stop = all_exhausted && std::any_of(targets.begin(), targets.end(),
                                                   [](const Target& t) { return t.remaining > 0; })
                          ? StopReason::exhausted

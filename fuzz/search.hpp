@@ -29,6 +29,11 @@ struct SearchOptions {
   // each with its own strategy and an equal share of the budget. Every evaluation is judged on
   // every objective whatever its target.
   std::vector<std::size_t> targets;
+  // --target sub-violations: each targeted law spec is searched as one target per law
+  // sub-violation (Evaluator::sub_targets(), objective -robustness: reached at <= 0), as
+  // LawBreaker does; a target is dropped once any evaluation reaches its sub-violation and its
+  // budget goes to the unreached ones (fuzz/sub_targets.hpp). Findings are the specs' as ever.
+  bool sub_violation_targets = false;
   std::size_t batch = 16;  // points handed out at once; fixed, so that -j never changes results
   // The search gives up when this many times the budget of proposed points were infeasible.
   std::size_t infeasible_factor = 20;
@@ -37,7 +42,9 @@ struct SearchOptions {
 struct EvaluationRecord {
   std::size_t index = 0;   // in proposal order, from 0
   std::uint64_t seed = 0;  // derive_seed(options.seed, index)
-  std::size_t target = 0;  // the objective whose strategy proposed the point
+  // What the strategy that proposed the point targets: an objective, or for sub-violation j of
+  // Evaluator::sub_targets(), objectives().size() + j.
+  std::size_t target = 0;
   UnitPoint point;
   Evaluation evaluation;
   // Whether the point is of its target's first batch (the GA's first generation, a sampler's

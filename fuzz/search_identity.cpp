@@ -13,6 +13,7 @@ nlohmann::json search_identity(const FuzzCommandOptions& options, const SourceFi
           {"seed", options.seed},
           {"budget", options.budget},
           {"specs", options.specs},
+          {"target", options.target},
           {"mutate", options.mutation.mutate},
           {"map_paths", simulation.map_paths},
           {"ego_plugin", simulation.ego_plugin},

@@ -24,8 +24,8 @@ namespace {
 // The fixed columns before the parameters and after the specs.
 constexpr std::size_t kLeading = 5;  // evaluation, seed, target, status, kind
 // audit, endings, violated, responsibility, collision_reason, signature, wall_seconds, reason,
-// coverage
-constexpr std::size_t kTrailing = 9;
+// coverage, sub_robustness
+constexpr std::size_t kTrailing = 10;
 
 std::string status_name(const Evaluation& evaluation) {
   return !evaluation.feasible() ? "infeasible" : !evaluation.judged() ? "failed" : "judged";
@@ -182,10 +182,32 @@ std::vector<std::string> parse_coverage(const std::string& text) {
   return features;
 }
 
+// "-3.2;0;-inf": the law sub-violations' robustness, exactly.
+std::string numbers_text(const std::vector<double>& values) {
+  std::string text;
+  for (double value : values) text += (text.empty() ? "" : ";") + format_number(value);
+  return text;
+}
+
+bool parse_numbers(const std::string& text, std::vector<double>& values) {
+  values.clear();
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    double value = 0;
+    if (!parse_number(text.substr(start, end - start), value)) return false;
+    values.push_back(value);
+    start = end + 1;
+  }
+  return true;
+}
+
 }  // namespace
 
-SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives)
-    : space_(space), objectives_(std::move(objectives)) {
+SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives,
+                             std::vector<std::string> sub_targets)
+    : space_(space), objectives_(std::move(objectives)), target_names_(objectives_) {
+  target_names_.insert(target_names_.end(), sub_targets.begin(), sub_targets.end());
   header_ = "evaluation,seed,target,status,kind";
   for (const Dimension& dimension : space_.dimensions) header_ += "," + csv_field(dimension.name);
   for (const Dimension& dimension : space_.dimensions)
@@ -195,13 +217,13 @@ SearchJournal::SearchJournal(const ParameterSpace& space, std::vector<std::strin
   for (const std::string& objective : objectives_) header_ += "," + csv_field("guide." + objective);
   header_ +=
       ",audit,endings,violated,responsibility,collision_reason,signature,wall_seconds,reason,"
-      "coverage\n";
+      "coverage,sub_robustness\n";
 }
 
 std::string SearchJournal::row(const EvaluationRecord& record) const {
   const Evaluation& evaluation = record.evaluation;
   std::string row = std::to_string(record.index) + "," + std::to_string(record.seed) + "," +
-                    csv_field(objectives_[record.target]) + "," + status_name(evaluation) + "," +
+                    csv_field(target_names_[record.target]) + "," + status_name(evaluation) + "," +
                     csv_field(evaluation.failure_kind);
   const std::vector<double> values = decode(space_, record.point);
   for (std::size_t i = 0; i < space_.dimensions.size(); ++i) {
@@ -226,7 +248,8 @@ std::string SearchJournal::row(const EvaluationRecord& record) const {
          csv_field(evaluation.signature) + "," +
          format_number(std::round(evaluation.wall_seconds * 1e6) / 1e6) + "," +
          csv_field(evaluation.feasible() ? evaluation.failure : evaluation.infeasible) + "," +
-         csv_field(coverage_text(evaluation.coverage)) + "\n";
+         csv_field(coverage_text(evaluation.coverage)) + "," +
+         numbers_text(evaluation.sub_robustness) + "\n";
   return row;
 }
 
@@ -239,13 +262,13 @@ std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::
     return std::nullopt;
   }
   EvaluationRecord record;
-  const auto target = std::find(objectives_.begin(), objectives_.end(), fields[2]);
+  const auto target = std::find(target_names_.begin(), target_names_.end(), fields[2]);
   if (!parse_integer(fields[0], record.index) || !parse_integer(fields[1], record.seed) ||
-      target == objectives_.end()) {
+      target == target_names_.end()) {
     error = "has a bad evaluation, seed or target";
     return std::nullopt;
   }
-  record.target = static_cast<std::size_t>(target - objectives_.begin());
+  record.target = static_cast<std::size_t>(target - target_names_.begin());
   record.point.resize(d);
   for (std::size_t i = 0; i < d; ++i)
     if (!parse_number(fields[kLeading + d + i], record.point[i])) {
@@ -274,6 +297,10 @@ std::optional<EvaluationRecord> SearchJournal::parse_row(const std::vector<std::
   evaluation.signature = fields[trailing + 5];
   parse_number(fields[trailing + 6], evaluation.wall_seconds);
   evaluation.coverage = parse_coverage(fields[trailing + 8]);
+  if (!parse_numbers(fields[trailing + 9], evaluation.sub_robustness)) {
+    error = "has a bad sub_robustness '" + fields[trailing + 9] + "'";
+    return std::nullopt;
+  }
   if (status == "infeasible") {
     evaluation.infeasible = reason.empty() ? "infeasible" : reason;
   } else if (status == "failed") {

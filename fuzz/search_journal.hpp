@@ -12,7 +12,10 @@
 // the ego's first collision), signature (the failure mode, which de-duplicates findings),
 // wall_seconds, reason, coverage (the run's behaviour-coverage features, docs/coverage.md,
 // "ego.following;light.day": journalled so that a resumed search reports the coverage of the
-// evaluations it replays without simulating them again).
+// evaluations it replays without simulating them again), sub_robustness (the robustness of each
+// law sub-violation, "-3.2;0;-inf", in Evaluator::sub_targets() order: journalled so that a
+// resumed --target sub-violations search replays what its strategies were told).
+// The target column names an objective or a sub-violation's feature ("law.laws.07").
 #pragma once
 
 #include <filesystem>
@@ -27,7 +30,9 @@ namespace scenfuzz {
 
 class SearchJournal {
  public:
-  SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives);
+  // `sub_targets`: the names of the evaluator's sub-targets (Evaluator::sub_targets()).
+  SearchJournal(const ParameterSpace& space, std::vector<std::string> objectives,
+                std::vector<std::string> sub_targets = {});
 
   const std::string& header() const { return header_; }
   // One CSV row (ending in a line break) for `record`.
@@ -45,6 +50,7 @@ class SearchJournal {
 
   const ParameterSpace& space_;
   std::vector<std::string> objectives_;
+  std::vector<std::string> target_names_;  // the objectives, then the sub-targets
   std::string header_;
 };
 

@@ -9,6 +9,7 @@
 
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/coverage_summary.hpp"
+#include "fuzz/law_coverage_report.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "fuzz/search_identity.hpp"
@@ -89,6 +90,16 @@ std::string finding_number_text(std::size_t number) {
   return text.str();
 }
 
+namespace {
+
+std::vector<std::string> sub_target_names(const Evaluator& evaluator) {
+  std::vector<std::string> names;
+  for (const SubTarget& target : evaluator.sub_targets()) names.push_back(target.name);
+  return names;
+}
+
+}  // namespace
+
 SearchOutputs::SearchOutputs(const FuzzCommandOptions& options, const SourceFile& file,
                              const ScenarioTemplate& scenario, const ScenarioEvaluator& evaluator)
     : options_(options),
@@ -97,7 +108,7 @@ SearchOutputs::SearchOutputs(const FuzzCommandOptions& options, const SourceFile
       evaluator_(evaluator),
       dir_(options.out_dir),
       objectives_(evaluator.objectives()),
-      journal_(evaluator.space(), objectives_),
+      journal_(evaluator.space(), objectives_, sub_target_names(evaluator)),
       time_outs_(objectives_.size(), 0),
       stuck_(objectives_.size(), 0),
       design_violations_(objectives_.size(), 0),
@@ -164,6 +175,11 @@ void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
   record_design(record);
   record_collision(evaluation, record.index);
   coverage_.insert(evaluation.coverage.begin(), evaluation.coverage.end());
+  note_first_reached(evaluation.coverage, record.index, law_first_);
+}
+
+std::string SearchOutputs::law_coverage_lines() const {
+  return law_coverage_text(scenario_, evaluator_.law_sub_violations(), law_first_);
 }
 
 void SearchOutputs::record_collision(const Evaluation& evaluation, std::size_t index) {
@@ -424,6 +440,8 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
           static_cast<double>(design_violations_[k]) / static_cast<double>(design_points_);
   }
   document["coverage"] = coverage_summary_json(coverage_);
+  document["law_coverage"] =
+      law_coverage_json(scenario_, evaluator_.law_sub_violations(), law_first_);
   document["time_outs"] = time_outs;
   document["stuck"] = stuck;
   document["first_design"] = {

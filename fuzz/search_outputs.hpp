@@ -85,6 +85,9 @@ class SearchOutputs {
   // The behaviour-coverage features of every evaluation so far (replayed ones included), as
   // summary.json's "coverage" reports them.
   const std::set<std::string>& coverage() const { return coverage_; }
+  // The law specs' sub-violation coverage as the end-of-search text gives it (empty without law
+  // specs); summary.json's "law_coverage" says the same.
+  std::string law_coverage_lines() const;
 
   // Once the first design (EvaluationRecord::first_design) is over, or with `search_over`: a
   // warning for every spec violated at more than half of its judged points, naming the rate and
@@ -134,6 +137,7 @@ class SearchOutputs {
   std::vector<std::size_t> time_outs_, stuck_;
   CollisionCounts collisions_;
   std::set<std::string> coverage_;
+  std::map<std::string, std::size_t> law_first_;  // law feature -> first evaluation reaching it
   // The first design: judged points, violations per objective and the first violating record.
   std::size_t design_points_ = 0;
   std::vector<std::size_t> design_violations_;

@@ -3,6 +3,8 @@
 #include "oracle/law_coverage.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <optional>
 #include <utility>
 
 #include "lang/avunit/builtins.hpp"
@@ -46,21 +48,6 @@ class CachedLeaves {
   std::vector<std::pair<SpecTerm, SignalValues>> cache_;
 };
 
-// The reached sub-violations of one spec, appended to `features`; none when it cannot be judged.
-void cover_spec(const Spec& spec, const SignalSource& source, std::vector<std::string>& features) {
-  const std::optional<std::vector<Formula>> subs = sub_violations(spec.formula);
-  if (!subs) return;
-  std::vector<std::string> reached;
-  try {
-    for (std::size_t k = 0; k < subs->size(); ++k)
-      if (robustness_signal((*subs)[k], source).front() >= 0)
-        reached.push_back(law_feature_name(spec.name, k + 1, subs->size()));
-  } catch (const OracleError&) {
-    return;
-  }
-  features.insert(features.end(), reached.begin(), reached.end());
-}
-
 }  // namespace
 
 bool is_law_spec(const Spec& spec) { return formula_reads_law_signal(spec.formula); }
@@ -72,19 +59,60 @@ std::string law_feature_name(const std::string& spec, std::size_t k, std::size_t
   return "law." + spec + "." + number;
 }
 
-std::vector<std::string> law_coverage(const ScenarioTemplate& scenario,
-                                      std::span<const double> parameters, const Trace& trace,
-                                      const RoadMap& map) {
-  std::vector<std::string> features;
-  if (trace.sample_count() == 0 || trace.actors.empty()) return features;
+std::vector<LawSubViolation> law_sub_violations(const ScenarioTemplate& scenario) {
+  std::vector<LawSubViolation> all;
+  for (std::size_t s = 0; s < scenario.specs.size(); ++s) {
+    const Spec& spec = scenario.specs[s];
+    if (!is_law_spec(spec)) continue;
+    std::optional<std::vector<Formula>> subs = sub_violations(spec.formula);
+    if (!subs) continue;
+    for (std::size_t k = 0; k < subs->size(); ++k)
+      all.push_back({s, law_feature_name(spec.name, k + 1, subs->size()), std::move((*subs)[k])});
+  }
+  return all;
+}
+
+std::vector<double> law_robustness(const std::vector<LawSubViolation>& subs,
+                                   const ScenarioTemplate& scenario,
+                                   std::span<const double> parameters, const Trace& trace,
+                                   const RoadMap& map) {
+  constexpr double never = -std::numeric_limits<double>::infinity();
+  std::vector<double> robustness(subs.size(), never);
+  if (subs.empty() || trace.sample_count() == 0 || trace.actors.empty()) return robustness;
   const TraceSignals signals(trace, scenario, parameters, map);
   CachedLeaves leaves(signals);
   const SignalSource source{trace.time, [&](const SpecTerm& term) { return leaves(term); },
                             parameters};
-  for (const Spec& spec : scenario.specs)
-    if (is_law_spec(spec)) cover_spec(spec, source, features);
+  for (std::size_t first = 0; first < subs.size();) {
+    // One spec's sub-violations: a signal one of them cannot read leaves the whole spec unreached.
+    std::size_t end = first;
+    while (end < subs.size() && subs[end].spec == subs[first].spec) ++end;
+    try {
+      for (std::size_t k = first; k < end; ++k)
+        robustness[k] = robustness_signal(subs[k].formula, source).front();
+    } catch (const OracleError&) {
+      std::fill(robustness.begin() + static_cast<std::ptrdiff_t>(first),
+                robustness.begin() + static_cast<std::ptrdiff_t>(end), never);
+    }
+    first = end;
+  }
+  return robustness;
+}
+
+std::vector<std::string> reached_law_features(const std::vector<LawSubViolation>& subs,
+                                              std::span<const double> robustness) {
+  std::vector<std::string> features;
+  for (std::size_t k = 0; k < subs.size() && k < robustness.size(); ++k)
+    if (robustness[k] >= 0) features.push_back(subs[k].name);
   std::sort(features.begin(), features.end());
   return features;
+}
+
+std::vector<std::string> law_coverage(const ScenarioTemplate& scenario,
+                                      std::span<const double> parameters, const Trace& trace,
+                                      const RoadMap& map) {
+  const std::vector<LawSubViolation> subs = law_sub_violations(scenario);
+  return reached_law_features(subs, law_robustness(subs, scenario, parameters, trace, map));
 }
 
 }  // namespace scenfuzz

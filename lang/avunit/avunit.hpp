@@ -34,6 +34,11 @@ FormulaParseResult parse_formula(const SourceFile& file);
 // Canonical AVUnit for a template: parse(print(t)) gives back a template equal to t.
 std::string print(const ScenarioTemplate& scenario);
 
+// `formula` (spec's own or one derived from it, such as a law's sub-violation) in AVUnit's
+// syntax, its trace projections named after spec's trace: what reports show of a formula.
+std::string print_formula(const ScenarioTemplate& scenario, const Spec& spec,
+                          const Formula& formula);
+
 // The user's own file with every range replaced by the value chosen for its parameter
 // (`parameter_values[i]` for `scenario.parameters[i]`): a concrete, replayable scenario.
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,

@@ -35,6 +35,12 @@ class Printer {
  public:
   explicit Printer(const ScenarioTemplate& scenario) : scenario_(scenario) {}
 
+  // One formula alone, its trace projections named after `trace`.
+  std::string formula_text(const Formula& formula, const std::string& trace) {
+    trace_ = trace;
+    return formula_text(formula);
+  }
+
   std::string run() {
     if (!scenario_.has_scenario) return "// AVUnit printed by scenfuzz\n// (no scenario)\n";
     name_shared_parameters();
@@ -461,6 +467,11 @@ class Printer {
 }  // namespace
 
 std::string print(const ScenarioTemplate& scenario) { return Printer(scenario).run(); }
+
+std::string print_formula(const ScenarioTemplate& scenario, const Spec& spec,
+                          const Formula& formula) {
+  return Printer(scenario).formula_text(formula, spec.trace);
+}
 
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
                            std::span<const double> parameter_values) {
