@@ -51,46 +51,44 @@ Target make_target(const TargetPlan& plan, const SearchOptions& options,
   return target;
 }
 
+// New targets for the law specs `objectives` themselves, sharing `budget`; their strategies take
+// the next streams of the seed.
+void add_law_targets(std::vector<Target>& targets, const std::vector<std::size_t>& objectives,
+                     std::size_t budget, const SearchOptions& options,
+                     const std::vector<SearchDimension>& dimensions) {
+  for (std::size_t k = 0; k < objectives.size(); ++k) {
+    const std::size_t share = budget / objectives.size() + (k < budget % objectives.size());
+    const TargetPlan plan{objectives[k], std::nullopt, objectives[k]};
+    targets.push_back(make_target(plan, options, dimensions, targets.size(), share, std::nullopt));
+  }
+}
+
 // Drops the targets whose sub-violation is reached and shares out their budgets: among the
-// sub-targets still unreached, else among new targets for the law specs themselves (whose
-// strategies take the next streams of the seed).
+// sub-targets still unreached; once none is, the rest searches the law specs themselves.
 void drop_reached(std::vector<Target>& targets, const std::vector<bool>& reached,
                   const SearchOptions& options, const std::vector<SearchDimension>& dimensions) {
   std::size_t freed = 0;
-  std::vector<std::size_t> law_objectives;
+  std::vector<std::size_t> laws;  // the specs of the dropped targets
   for (Target& target : targets) {
     if (!target.plan.sub || target.dropped || !reached[*target.plan.sub]) continue;
     target.dropped = true;
     freed += target.remaining;
     target.remaining = 0;
-    if (std::find(law_objectives.begin(), law_objectives.end(), target.plan.objective) ==
-        law_objectives.end())
-      law_objectives.push_back(target.plan.objective);
+    if (std::find(laws.begin(), laws.end(), target.plan.objective) == laws.end())
+      laws.push_back(target.plan.objective);
   }
   if (freed == 0) return;
-  std::vector<std::size_t*> shares;
-  for (Target& target : targets)
-    if (target.plan.sub && !target.dropped && !target.exhausted)
-      shares.push_back(&target.remaining);
-  if (shares.empty()) {
-    // Every sub-violation is reached: the rest searches the law specs as the plain search does.
-    for (Target& target : targets)
-      if (!target.plan.sub && !target.exhausted &&
-          std::find(law_objectives.begin(), law_objectives.end(), target.plan.objective) !=
-              law_objectives.end())
-        shares.push_back(&target.remaining);
-    if (shares.empty()) {
-      for (std::size_t k = 0; k < law_objectives.size(); ++k) {
-        const std::size_t budget =
-            freed / law_objectives.size() + (k < freed % law_objectives.size());
-        const TargetPlan plan{law_objectives[k], std::nullopt, law_objectives[k]};
-        targets.push_back(
-            make_target(plan, options, dimensions, targets.size(), budget, std::nullopt));
-      }
-      return;
-    }
+  std::vector<std::size_t*> unreached, law_targets;
+  for (Target& target : targets) {
+    if (target.exhausted || target.dropped) continue;
+    if (target.plan.sub) unreached.push_back(&target.remaining);
+    if (!target.plan.sub &&
+        std::find(laws.begin(), laws.end(), target.plan.objective) != laws.end())
+      law_targets.push_back(&target.remaining);
   }
-  share_budget(freed, shares);
+  if (!unreached.empty()) return share_budget(freed, unreached);
+  if (!law_targets.empty()) return share_budget(freed, law_targets);
+  add_law_targets(targets, laws, freed, options, dimensions);
 }
 
 }  // namespace
