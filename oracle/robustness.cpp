@@ -9,6 +9,8 @@
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/value.hpp"
+#include "oracle/signal_pool.hpp"
+#include "oracle/window_offsets.hpp"
 
 namespace scenfuzz {
 
@@ -94,43 +96,6 @@ void sliding_extreme(const Signal& x, Window window, double empty, Prefer prefer
   }
 }
 
-// Window offsets that hold for every sample: sample i's window is [i + first, i + last] clipped
-// to the trace (empty when last < first). Uniformly sampled traces have them.
-struct Offsets {
-  std::ptrdiff_t first = 0, last = -1;
-};
-
-// The interval's windows as constant offsets, when the windows the definition gives (walked by a
-// WindowCursor) are exactly those; nullopt otherwise (uneven sampling, windows wider than the
-// trace), where the deque handles them.
-std::optional<Offsets> constant_offsets(std::span<const double> time,
-                                        const TimeInterval& interval) {
-  const auto n = static_cast<std::ptrdiff_t>(time.size());
-  if (n == 0) return std::nullopt;
-  // The middle sample's window, found by bisection, proposes the offsets; the walk below checks
-  // them against every sample's window.
-  const std::ptrdiff_t middle = n / 2;
-  const double t = time[static_cast<std::size_t>(middle)];
-  const double lower = interval.lower - kWindowTolerance, upper = interval.upper + kWindowTolerance;
-  const auto first =
-      std::partition_point(time.begin(), time.end(), [&](double tj) { return tj - t < lower; });
-  const auto last =
-      std::partition_point(first, time.end(), [&](double tj) { return tj - t <= upper; });
-  const Offsets offsets{(first - time.begin()) - middle, (last - time.begin()) - middle - 1};
-  auto clipped = [n](std::ptrdiff_t index) { return std::clamp<std::ptrdiff_t>(index, 0, n); };
-  WindowCursor check(time, interval);
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const auto [begin, end] = check(static_cast<std::size_t>(i));
-    if (offsets.last < offsets.first) {
-      if (begin != end) return std::nullopt;
-    } else if (static_cast<std::ptrdiff_t>(begin) != clipped(i + offsets.first) ||
-               static_cast<std::ptrdiff_t>(end) != clipped(i + offsets.last + 1)) {
-      return std::nullopt;
-    }
-  }
-  return offsets;
-}
-
 // Sliding extreme over constant offsets by van Herk / Gil-Werman: the samples padded with the
 // identity are cut into blocks of the window's width w; every window spans the suffix of one
 // block and the prefix of the next, so out[i] = extreme(suffix[i], prefix[i + w - 1]). Three
@@ -205,25 +170,42 @@ void unbounded_until(const Signal& p, const Signal& q, Signal& r) {
 //   max_{j in W} min(q(j), min p[i, j)) = min(min p[i, f), max_{j in W} q(j), (p U q)(f)),
 // where the untimed until may look past W only when the window's best q bounds it. Samples of
 // the window before i (a negative lower bound) contribute q(j) alone: min p[i, j) is empty.
-void bounded_until(const Signal& p, const Signal& q, const Windows& windows, Signal& r) {
+// bounded_until's working signals, each of n samples, lent by the evaluator.
+struct UntilParts {
+  Signal untimed, p_before_window, q_in_window, q_in_past;
+};
+
+// Each pass walks the windows afresh with its own cursor rather than storing them: no memory of
+// n indices twice over, for a few comparisons per sample.
+void bounded_until(const Signal& p, const Signal& q, std::span<const double> time,
+                   const TimeInterval& interval, UntilParts& parts, std::vector<std::size_t>& queue,
+                   Signal& r) {
   const std::size_t n = p.size();
-  Signal untimed(n), p_before_window(n), q_in_window(n), q_in_past(n);
-  std::vector<std::size_t> queue;
-  unbounded_until(p, q, untimed);
-  auto first = [&](std::size_t i) { return std::max(windows.begin[i], i); };
+  unbounded_until(p, q, parts.untimed);
+  WindowCursor before(time, interval), within(time, interval), past(time, interval),
+      merge(time, interval);
   sliding_extreme(
-      p, [&](std::size_t i) { return std::pair(i, first(i)); }, kInfinity, std::less<double>(),
-      p_before_window, queue);
+      p, [&](std::size_t i) { return std::pair(i, std::max(before(i).first, i)); }, kInfinity,
+      std::less<double>(), parts.p_before_window, queue);
   sliding_extreme(
-      q, [&](std::size_t i) { return std::pair(first(i), windows.end[i]); }, -kInfinity,
-      std::greater<double>(), q_in_window, queue);
+      q,
+      [&](std::size_t i) {
+        const auto [begin, end] = within(i);
+        return std::pair(std::max(begin, i), end);
+      },
+      -kInfinity, std::greater<double>(), parts.q_in_window, queue);
   sliding_extreme(
-      q, [&](std::size_t i) { return std::pair(windows.begin[i], std::min(windows.end[i], i)); },
-      -kInfinity, std::greater<double>(), q_in_past, queue);
+      q,
+      [&](std::size_t i) {
+        const auto [begin, end] = past(i);
+        return std::pair(begin, std::min(end, i));
+      },
+      -kInfinity, std::greater<double>(), parts.q_in_past, queue);
   for (std::size_t i = 0; i < n; ++i) {
-    const double from_first = first(i) < n ? untimed[first(i)] : -kInfinity;
-    const double future = std::min({p_before_window[i], q_in_window[i], from_first});
-    r[i] = std::max(q_in_past[i], future);
+    const std::size_t first = std::max(merge(i).first, i);
+    const double from_first = first < n ? parts.untimed[first] : -kInfinity;
+    const double future = std::min({parts.p_before_window[i], parts.q_in_window[i], from_first});
+    r[i] = std::max(parts.q_in_past[i], future);
   }
 }
 
@@ -248,7 +230,11 @@ struct Operand {
 // freed by one node are reused by the next, so a formula costs few allocations.
 class Evaluator {
  public:
-  Evaluator(const SignalSource& source, bool keep) : source_(source), keep_(keep) {}
+  Evaluator(const SignalSource& source, bool keep)
+      : source_(source), keep_(keep), spare_(take_spare_buffers()) {}
+  ~Evaluator() { keep_spare_buffers(std::move(spare_)); }
+  Evaluator(const Evaluator&) = delete;
+  Evaluator& operator=(const Evaluator&) = delete;
 
   // Samples from `observed` on are not the trace's but what might come after it: every atom
   // there is as favourable to the whole formula as it can be (robustness_if_continued).
@@ -271,16 +257,36 @@ class Evaluator {
  private:
   std::size_t size() const { return source_.time.size(); }
 
-  Signal acquire() {
-    if (spare_.empty()) return Signal(size());
-    Signal buffer = std::move(spare_.back());
-    spare_.pop_back();
+  // A buffer of size() samples with room for `room` (van Herk's padded signals are longer than
+  // the trace): the smallest spare with that room, so that the long ones stay for padded signals;
+  // a new one when none has it.
+  Signal acquire(std::size_t room = 0) {
+    room = std::max(room, size());
+    std::vector<Signal>& spares = spare_.signals;
+    auto best = spares.end();
+    for (auto spare = spares.begin(); spare != spares.end(); ++spare)
+      if (spare->capacity() >= room &&
+          (best == spares.end() || spare->capacity() < best->capacity()))
+        best = spare;
+    Signal buffer;
+    if (best != spares.end()) {
+      buffer = std::move(*best);
+      spares.erase(best);
+    }
+    buffer.reserve(room);
     buffer.resize(size());
     return buffer;
   }
 
+  // The room van_herk_extreme's padded and suffix signals need.
+  std::size_t padded_room(Offsets offsets) const {
+    const auto n = static_cast<std::ptrdiff_t>(size());
+    const std::ptrdiff_t width = std::min(offsets.last, n) - std::max(offsets.first, -n) + 1;
+    return size() + static_cast<std::size_t>(std::max<std::ptrdiff_t>(width, 1)) - 1;
+  }
+
   void release(Signal&& buffer) {
-    if (buffer.capacity() >= size()) spare_.push_back(std::move(buffer));
+    if (buffer.capacity() >= size()) spare_.signals.push_back(std::move(buffer));
   }
 
   static Operand scalar(double value, bool discrete) { return {{}, value, true, discrete}; }
@@ -334,7 +340,11 @@ class Evaluator {
     if (!source_.leaf) throw OracleError(t.location, "no signal source for '" + t.name + "'");
     SignalValues values = source_.leaf(t);
     SCENFUZZ_DEMAND(values.values.size() == size());
-    return {std::move(values.values), 0, false, values.discrete};
+    // Copied into a kept buffer and the leaf's own freed at once: malloc hands that still-mapped
+    // block to the next leaf, and the kept buffers do not grow by one with every leaf.
+    Signal kept = acquire();
+    std::copy(values.values.begin(), values.values.end(), kept.begin());
+    return {std::move(kept), 0, false, values.discrete};
   }
 
   [[noreturn]] void not_a_number(const Formula& comparison, std::size_t sample) {
@@ -409,7 +419,10 @@ class Evaluator {
   // window [i + lo, i + hi], p before it is [i, i + lo) and the past part [i + lo, i - 1].
   void until_over_offsets(const Signal& p, const Signal& q, Offsets window, Signal& r) {
     const std::size_t n = size();
-    Signal padded = acquire(), suffix = acquire(), extreme_p = acquire(), extreme_q = acquire();
+    const std::size_t room = std::max(
+        {padded_room({0, window.first - 1}), padded_room(window), padded_room({0, window.last})});
+    Signal padded = acquire(room), suffix = acquire(room), extreme_p = acquire(),
+           extreme_q = acquire();
     unbounded_until(p, q, r);  // read at i + lo >= i (or at i) before r[i] is written
     if (window.first >= 0) {
       const auto lo = static_cast<std::size_t>(window.first);
@@ -425,6 +438,15 @@ class Evaluator {
         r[i] = std::max(extreme_p[i], std::min(extreme_q[i], r[i]));
     }
     for (Signal* buffer : {&padded, &suffix, &extreme_p, &extreme_q}) release(std::move(*buffer));
+  }
+
+  void bounded_until_over_cursors(const Signal& p, const Signal& q, const TimeInterval& interval,
+                                  Signal& r) {
+    UntilParts parts{acquire(), acquire(), acquire(), acquire()};
+    bounded_until(p, q, source_.time, interval, parts, spare_.indices, r);
+    for (Signal* buffer :
+         {&parts.untimed, &parts.p_before_window, &parts.q_in_window, &parts.q_in_past})
+      release(std::move(*buffer));
   }
 
   // An atom's robustness past the observed samples: +inf where it is counted as it stands, -inf
@@ -472,8 +494,9 @@ class Evaluator {
         const bool always = f.kind == FormulaKind::always;
         if (!f.interval) return always ? suffix_min(std::move(x)) : suffix_max(std::move(x));
         Signal out = acquire();
-        if (const std::optional<Offsets> offsets = constant_offsets(source_.time, *f.interval)) {
-          Signal padded = acquire(), suffix = acquire();
+        if (const std::optional<Offsets> offsets =
+                constant_window_offsets(source_.time, *f.interval)) {
+          Signal padded = acquire(padded_room(*offsets)), suffix = acquire(padded_room(*offsets));
           if (always)
             van_herk_extreme(x, *offsets, kInfinity, Minimum(), out, padded, suffix);
           else
@@ -483,9 +506,9 @@ class Evaluator {
         } else {
           WindowCursor window(source_.time, *f.interval);
           if (always)
-            sliding_extreme(x, window, kInfinity, std::less<double>(), out, queue_);
+            sliding_extreme(x, window, kInfinity, std::less<double>(), out, spare_.indices);
           else
-            sliding_extreme(x, window, -kInfinity, std::greater<double>(), out, queue_);
+            sliding_extreme(x, window, -kInfinity, std::greater<double>(), out, spare_.indices);
         }
         release(std::move(x));
         return out;
@@ -503,10 +526,11 @@ class Evaluator {
         Signal r = acquire();
         if (!f.interval)
           unbounded_until(p, q, r);
-        else if (const std::optional<Offsets> offsets = constant_offsets(source_.time, *f.interval))
+        else if (const std::optional<Offsets> offsets =
+                     constant_window_offsets(source_.time, *f.interval))
           until_over_offsets(p, q, *offsets, r);
         else
-          bounded_until(p, q, windows_of(source_.time, f.interval), r);
+          bounded_until_over_cursors(p, q, *f.interval, r);
         release(std::move(p));
         release(std::move(q));
         return r;
@@ -520,8 +544,7 @@ class Evaluator {
   std::size_t observed_ = std::numeric_limits<std::size_t>::max();
   bool negated_ = false;
   std::unordered_map<const Formula*, Signal> kept_;
-  std::vector<Signal> spare_;
-  std::vector<std::size_t> queue_;  // the sliding windows' deque
+  SpareBuffers spare_;  // buffers free for the next node, and the sliding windows' deque
 };
 
 // Follows the value of `f` at `sample` down to the atom that gives it.
