@@ -75,24 +75,37 @@ class WindowCursor {
   std::size_t begin_ = 0, end_ = 0;
 };
 
-// Sliding-window minimum (Prefer = std::less) or maximum (std::greater) over monotone windows
-// (`window(i)` gives sample i's [begin, end), both non-decreasing in i), with a monotone deque of
-// candidate indices: each index enters and leaves once.
-template <class Window, class Prefer>
-void sliding_extreme(const Signal& x, Window window, double empty, Prefer prefer, Signal& out,
-                     std::vector<std::size_t>& queue) {
+struct Minimum {
+  double operator()(double a, double b) const { return std::min(a, b); }
+};
+struct Maximum {
+  double operator()(double a, double b) const { return std::max(a, b); }
+};
+
+// Sliding-window minimum (Extreme = Minimum, identity +inf) or maximum (Maximum, -inf) over
+// monotone windows (`window(i)` gives sample i's [begin, end), both non-decreasing in i), with two
+// stacks: the window is a front part [begin, split), whose suffix extremes were computed when it
+// was cut off, and a back part [split, end), kept as one running extreme. When the window's start
+// passes `split`, the front is rebuilt from the samples still in it. Each sample is rebuilt at most
+// once, and no branch depends on the values: a monotone deque's pops did, and mispredicted on
+// every other sample of a random walk.
+template <class Window, class Extreme>
+void sliding_extreme(const Signal& x, Window window, double identity, Extreme extreme, Signal& out,
+                     Signal& suffix) {
   const std::size_t n = x.size();
-  queue.resize(n);
-  std::size_t head = 0, tail = 0, next = 0;
+  suffix.resize(n);
+  std::size_t split = 0, next = 0;  // the back part is [split, next)
+  double back = identity;
   for (std::size_t i = 0; i < n; ++i) {
     const auto [begin, end] = window(i);
-    for (; next < end; ++next) {
-      // A candidate no better than the newcomer can never be the extreme again.
-      while (tail > head && !prefer(x[queue[tail - 1]], x[next])) --tail;
-      queue[tail++] = next;
+    for (; next < end; ++next) back = extreme(back, x[next]);
+    if (begin > split) {
+      double running = identity;
+      for (std::size_t k = next; k-- > begin;) suffix[k] = running = extreme(running, x[k]);
+      split = next;
+      back = identity;
     }
-    while (head < tail && queue[head] < begin) ++head;
-    out[i] = head < tail ? x[queue[head]] : empty;
+    out[i] = extreme(begin < split ? suffix[begin] : identity, back);
   }
 }
 
@@ -139,13 +152,6 @@ void van_herk_extreme(const Signal& x, Offsets offsets, double identity, Extreme
   }
 }
 
-struct Minimum {
-  double operator()(double a, double b) const { return std::min(a, b); }
-};
-struct Maximum {
-  double operator()(double a, double b) const { return std::max(a, b); }
-};
-
 Signal suffix_min(Signal x) {
   for (std::size_t i = x.size(); i-- > 1;) x[i - 1] = std::min(x[i - 1], x[i]);
   return x;
@@ -178,29 +184,28 @@ struct UntilParts {
 // Each pass walks the windows afresh with its own cursor rather than storing them: no memory of
 // n indices twice over, for a few comparisons per sample.
 void bounded_until(const Signal& p, const Signal& q, std::span<const double> time,
-                   const TimeInterval& interval, UntilParts& parts, std::vector<std::size_t>& queue,
-                   Signal& r) {
+                   const TimeInterval& interval, UntilParts& parts, Signal& suffix, Signal& r) {
   const std::size_t n = p.size();
   unbounded_until(p, q, parts.untimed);
   WindowCursor before(time, interval), within(time, interval), past(time, interval),
       merge(time, interval);
   sliding_extreme(
       p, [&](std::size_t i) { return std::pair(i, std::max(before(i).first, i)); }, kInfinity,
-      std::less<double>(), parts.p_before_window, queue);
+      Minimum(), parts.p_before_window, suffix);
   sliding_extreme(
       q,
       [&](std::size_t i) {
         const auto [begin, end] = within(i);
         return std::pair(std::max(begin, i), end);
       },
-      -kInfinity, std::greater<double>(), parts.q_in_window, queue);
+      -kInfinity, Maximum(), parts.q_in_window, suffix);
   sliding_extreme(
       q,
       [&](std::size_t i) {
         const auto [begin, end] = past(i);
         return std::pair(begin, std::min(end, i));
       },
-      -kInfinity, std::greater<double>(), parts.q_in_past, queue);
+      -kInfinity, Maximum(), parts.q_in_past, suffix);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t first = std::max(merge(i).first, i);
     const double from_first = first < n ? parts.untimed[first] : -kInfinity;
@@ -231,8 +236,8 @@ struct Operand {
 class Evaluator {
  public:
   Evaluator(const SignalSource& source, bool keep)
-      : source_(source), keep_(keep), spare_(take_spare_buffers()) {}
-  ~Evaluator() { keep_spare_buffers(std::move(spare_)); }
+      : source_(source), keep_(keep), spare_(take_spare_signals()) {}
+  ~Evaluator() { keep_spare_signals(std::move(spare_)); }
   Evaluator(const Evaluator&) = delete;
   Evaluator& operator=(const Evaluator&) = delete;
 
@@ -257,21 +262,25 @@ class Evaluator {
  private:
   std::size_t size() const { return source_.time.size(); }
 
+  // The smallest spare buffer with room for `room` samples, or spare_.end().
+  SpareSignals::iterator spare_with_room(std::size_t room) {
+    auto best = spare_.end();
+    for (auto spare = spare_.begin(); spare != spare_.end(); ++spare)
+      if (spare->capacity() >= room &&
+          (best == spare_.end() || spare->capacity() < best->capacity()))
+        best = spare;
+    return best;
+  }
+
   // A buffer of size() samples with room for `room` (van Herk's padded signals are longer than
   // the trace): the smallest spare with that room, so that the long ones stay for padded signals;
   // a new one when none has it.
   Signal acquire(std::size_t room = 0) {
     room = std::max(room, size());
-    std::vector<Signal>& spares = spare_.signals;
-    auto best = spares.end();
-    for (auto spare = spares.begin(); spare != spares.end(); ++spare)
-      if (spare->capacity() >= room &&
-          (best == spares.end() || spare->capacity() < best->capacity()))
-        best = spare;
     Signal buffer;
-    if (best != spares.end()) {
+    if (const auto best = spare_with_room(room); best != spare_.end()) {
       buffer = std::move(*best);
-      spares.erase(best);
+      spare_.erase(best);
     }
     buffer.reserve(room);
     buffer.resize(size());
@@ -286,7 +295,7 @@ class Evaluator {
   }
 
   void release(Signal&& buffer) {
-    if (buffer.capacity() >= size()) spare_.signals.push_back(std::move(buffer));
+    if (buffer.capacity() >= size()) spare_.push_back(std::move(buffer));
   }
 
   static Operand scalar(double value, bool discrete) { return {{}, value, true, discrete}; }
@@ -340,8 +349,11 @@ class Evaluator {
     if (!source_.leaf) throw OracleError(t.location, "no signal source for '" + t.name + "'");
     SignalValues values = source_.leaf(t);
     SCENFUZZ_DEMAND(values.values.size() == size());
-    // Copied into a kept buffer and the leaf's own freed at once: malloc hands that still-mapped
-    // block to the next leaf, and the kept buffers do not grow by one with every leaf.
+    // Copied into a kept buffer while one is long enough, and the leaf's own freed at once: malloc
+    // hands that still-mapped block to the next leaf. Kept, it would join the kept buffers, and
+    // every evaluation would take as many new ones as it has leaves.
+    if (spare_with_room(size()) == spare_.end())
+      return {std::move(values.values), 0, false, values.discrete};
     Signal kept = acquire();
     std::copy(values.values.begin(), values.values.end(), kept.begin());
     return {std::move(kept), 0, false, values.discrete};
@@ -443,9 +455,10 @@ class Evaluator {
   void bounded_until_over_cursors(const Signal& p, const Signal& q, const TimeInterval& interval,
                                   Signal& r) {
     UntilParts parts{acquire(), acquire(), acquire(), acquire()};
-    bounded_until(p, q, source_.time, interval, parts, spare_.indices, r);
+    Signal suffix = acquire();
+    bounded_until(p, q, source_.time, interval, parts, suffix, r);
     for (Signal* buffer :
-         {&parts.untimed, &parts.p_before_window, &parts.q_in_window, &parts.q_in_past})
+         {&parts.untimed, &parts.p_before_window, &parts.q_in_window, &parts.q_in_past, &suffix})
       release(std::move(*buffer));
   }
 
@@ -505,10 +518,12 @@ class Evaluator {
           release(std::move(suffix));
         } else {
           WindowCursor window(source_.time, *f.interval);
+          Signal suffix = acquire();
           if (always)
-            sliding_extreme(x, window, kInfinity, std::less<double>(), out, spare_.indices);
+            sliding_extreme(x, window, kInfinity, Minimum(), out, suffix);
           else
-            sliding_extreme(x, window, -kInfinity, std::greater<double>(), out, spare_.indices);
+            sliding_extreme(x, window, -kInfinity, Maximum(), out, suffix);
+          release(std::move(suffix));
         }
         release(std::move(x));
         return out;
@@ -544,7 +559,7 @@ class Evaluator {
   std::size_t observed_ = std::numeric_limits<std::size_t>::max();
   bool negated_ = false;
   std::unordered_map<const Formula*, Signal> kept_;
-  SpareBuffers spare_;  // buffers free for the next node, and the sliding windows' deque
+  SpareSignals spare_;  // buffers free for the next node
 };
 
 // Follows the value of `f` at `sample` down to the atom that gives it.

@@ -1,7 +1,7 @@
 // Constant window offsets: on a uniformly sampled trace every sample's window [a, b] is the same
 // run of samples shifted, [i + first, i + last], which lets G, F and U over it run van Herk /
-// Gil-Werman instead of the monotone deque. Found only when they are exactly the windows the
-// definition gives (a <= t_j - t_i <= b up to kWindowTolerance) at every sample.
+// Gil-Werman instead of the two-stack sliding window. Found only when they are exactly the windows
+// the definition gives (a <= t_j - t_i <= b up to kWindowTolerance) at every sample.
 #pragma once
 
 #include <cstddef>
