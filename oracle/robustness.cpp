@@ -171,16 +171,16 @@ void unbounded_until(const Signal& p, const Signal& q, Signal& r) {
   }
 }
 
-// p U[a:b] q. The samples of the window at or after i split off as (Donze, Ferrere, Maler, CAV
-// 2013): with f the first of them and W the window from f on,
-//   max_{j in W} min(q(j), min p[i, j)) = min(min p[i, f), max_{j in W} q(j), (p U q)(f)),
-// where the untimed until may look past W only when the window's best q bounds it. Samples of
-// the window before i (a negative lower bound) contribute q(j) alone: min p[i, j) is empty.
 // bounded_until's working signals, each of n samples, lent by the evaluator.
 struct UntilParts {
   Signal untimed, p_before_window, q_in_window, q_in_past;
 };
 
+// p U[a:b] q. The samples of the window at or after i split off as (Donze, Ferrere, Maler, CAV
+// 2013): with f the first of them and W the window from f on,
+//   max_{j in W} min(q(j), min p[i, j)) = min(min p[i, f), max_{j in W} q(j), (p U q)(f)),
+// where the untimed until may look past W only when the window's best q bounds it. Samples of
+// the window before i (a negative lower bound) contribute q(j) alone: min p[i, j) is empty.
 // Each pass walks the windows afresh with its own cursor rather than storing them: no memory of
 // n indices twice over, for a few comparisons per sample.
 void bounded_until(const Signal& p, const Signal& q, std::span<const double> time,
@@ -232,7 +232,8 @@ struct Operand {
 };
 
 // Evaluates formulas bottom-up; optionally keeps every node's signal for explanations. Buffers
-// freed by one node are reused by the next, so a formula costs few allocations.
+// freed by one node are reused by the next, and kept for the thread's next evaluation
+// (signal_pool.hpp), so a repeat evaluation allocates little more than its result.
 class Evaluator {
  public:
   Evaluator(const SignalSource& source, bool keep)

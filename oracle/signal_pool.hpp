@@ -23,6 +23,6 @@ inline constexpr std::size_t kKeptDoubles = std::size_t{1} << 26;
 SpareSignals take_spare_signals();
 
 // Keeps `spare` for the thread's next evaluation, the largest first, as far as kKeptDoubles allows.
-void keep_spare_signals(SpareSignals&& spare);
+void keep_spare_signals(SpareSignals&& spare) noexcept;
 
 }  // namespace scenfuzz

@@ -13,7 +13,7 @@ namespace {
 // The edges the definition gives sample i, tested at the proposed [begin, end): since times
 // increase, t_j - t_i (rounded) never decreases in j, so the window's first sample is `begin`
 // exactly when it is in reach of `lower` and the sample before it is not, and likewise its end.
-// (The walk in robustness.cpp that the deque uses finds the same edges.)
+// (The WindowCursor walk in robustness.cpp, for other windows, finds the same edges.)
 bool edges_hold(std::span<const double> time, std::size_t i, std::size_t begin, std::size_t end,
                 double lower, double upper) {
   const std::size_t n = time.size();
