@@ -2,7 +2,8 @@
 // keeps its buffers per thread (oracle/signal_pool.hpp). Before, every evaluation allocated a
 // dozen signals afresh, which glibc served with fresh zeroed pages once a trace passed 10^4
 // samples; the page faults cost more than the passes (issue 23). Counted here by replacing the
-// global operator new, so the check does not depend on malloc's trimming or on timing.
+// global operator new (for all of oracle_tests; it counts only while a test of this file sets
+// `counting` on its thread), so the check does not depend on malloc's trimming or on timing.
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -48,7 +49,7 @@ struct Trace {
 };
 
 // Every 0.05 s, or jittered by up to 0.018 s so that windows are not constant offsets and take the
-// monotone deque (and bounded until its decomposition over stored windows).
+// two-stack sliding windows (and bounded until its decomposition over window cursors).
 Trace trace_of(std::size_t samples, bool uneven) {
   Trace trace;
   for (std::size_t i = 0; i < samples; ++i) {
