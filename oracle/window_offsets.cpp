@@ -3,6 +3,7 @@
 #include "oracle/window_offsets.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "oracle/robustness.hpp"
 
@@ -23,19 +24,34 @@ bool edges_hold(std::span<const double> time, std::size_t i, std::size_t begin, 
 }
 
 // edges_hold for samples [from, to) whose proposed edges lie inside the trace with a sample on
-// either side: no clipping and no branches, so the loop vectorises.
+// either side, as the extremes of the four gaps: no clipping and no branches, and blocks of a fixed
+// count of samples, which the compiler vectorises at -O2.
 bool inner_edges_hold(std::span<const double> time, std::ptrdiff_t from, std::ptrdiff_t to,
                       Offsets offsets, double lower, double upper) {
+  constexpr std::ptrdiff_t kBlock = 4;
   const double* t = time.data();
-  bool wrong = false;
-  for (std::ptrdiff_t i = from; i < to; ++i) {
-    const double begin_gap = t[i + offsets.first] - t[i];
-    const double before_gap = t[i + offsets.first - 1] - t[i];
-    const double end_gap = t[i + offsets.last + 1] - t[i];
-    const double last_gap = t[i + offsets.last] - t[i];
-    wrong |= (begin_gap < lower) | (before_gap >= lower) | (end_gap <= upper) | (last_gap > upper);
+  const double* begin = t + offsets.first;
+  const double* end = t + offsets.last + 1;
+  double least_begin[kBlock], most_before[kBlock], most_last[kBlock], least_end[kBlock];
+  for (std::ptrdiff_t k = 0; k < kBlock; ++k) {
+    least_begin[k] = least_end[k] = std::numeric_limits<double>::infinity();
+    most_before[k] = most_last[k] = -std::numeric_limits<double>::infinity();
   }
-  return !wrong;
+  auto take = [&](std::ptrdiff_t k, std::ptrdiff_t i) {
+    least_begin[k] = std::min(least_begin[k], begin[i] - t[i]);
+    most_before[k] = std::max(most_before[k], begin[i - 1] - t[i]);
+    most_last[k] = std::max(most_last[k], end[i - 1] - t[i]);
+    least_end[k] = std::min(least_end[k], end[i] - t[i]);
+  };
+  std::ptrdiff_t i = from;
+  for (; i + kBlock <= to; i += kBlock)
+    for (std::ptrdiff_t k = 0; k < kBlock; ++k) take(k, i + k);
+  for (; i < to; ++i) take(0, i);
+  bool hold = true;
+  for (std::ptrdiff_t k = 0; k < kBlock; ++k)
+    hold = hold && least_begin[k] >= lower && most_before[k] < lower && most_last[k] <= upper &&
+           least_end[k] > upper;
+  return hold;
 }
 
 }  // namespace
