@@ -17,7 +17,7 @@ EgoIndicators::EgoIndicators(const RoadMap& map, const RouteTracker& route,
                              const IndicationNotice& notice)
     : stretches_(route_indications(map, route.segments(), route.lane_changes())), notice_(notice) {}
 
-VehicleSignals EgoIndicators::at(double progress, double speed, const OvertakePlan& plan) {
+VehicleSignals EgoIndicators::look(double progress, double speed, const OvertakePlan& plan) {
   const VehicleSignals route = indicator_at(stretches_, progress, speed, cursor_, notice_);
   const VehicleSignals overtake = overtake_indicator(plan, progress);
   return overtake != 0 ? overtake : route;

@@ -22,11 +22,17 @@ class EgoIndicators {
 
   // At the route tracker's progress now, at `speed`, with the driver's overtaking plan; the
   // progress must not go backwards between calls.
-  VehicleSignals at(double progress, double speed, const OvertakePlan& plan);
+  VehicleSignals at(double progress, double speed, const OvertakePlan& plan) {
+    // Inline for the common case, neither overtaking nor anything left to indicate.
+    if (!plan.active && cursor_.next >= stretches_.size()) return 0;
+    return look(progress, speed, plan);
+  }
 
   const std::vector<IndicationStretch>& stretches() const { return stretches_; }
 
  private:
+  VehicleSignals look(double progress, double speed, const OvertakePlan& plan);
+
   std::vector<IndicationStretch> stretches_;
   IndicationCursor cursor_;
   IndicationNotice notice_;

@@ -80,14 +80,26 @@ std::vector<IndicationStretch> route_indications(const RoadMap& map,
   return stretches;
 }
 
-VehicleSignals indicator_at(std::span<const IndicationStretch> stretches, double progress,
-                            double speed, IndicationCursor& cursor,
-                            const IndicationNotice& notice) {
-  while (cursor.next < stretches.size() && stretches[cursor.next].end <= progress) ++cursor.next;
-  if (cursor.next >= stretches.size()) return 0;
+VehicleSignals look_for_indication(std::span<const IndicationStretch> stretches, double progress,
+                                   double speed, IndicationCursor& cursor,
+                                   const IndicationNotice& notice) {
+  while (cursor.next < stretches.size() && stretches[cursor.next].end <= progress) {
+    ++cursor.next;
+    cursor.on = false;
+  }
+  if (cursor.next >= stretches.size()) {
+    cursor.quiet_until = 1e300;
+    return 0;
+  }
   const IndicationStretch& stretch = stretches[cursor.next];
+  if (cursor.on) return stretch.indicator;
   const double lead = std::max(notice.distance, notice.time * std::abs(speed));
-  return progress >= stretch.begin - lead ? stretch.indicator : 0;
+  if (progress >= stretch.begin - lead) {
+    cursor.on = true;
+    return stretch.indicator;
+  }
+  cursor.quiet_until = stretch.begin - std::max(notice.distance, notice.time * kFastestVehicle);
+  return 0;
 }
 
 }  // namespace scenfuzz

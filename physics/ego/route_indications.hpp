@@ -40,16 +40,31 @@ std::vector<IndicationStretch> route_indications(const RoadMap& map,
 VehicleSignals junction_lane_indicator(const RoadMap& map, LaneIndex lane);
 
 // Remembers the first stretch that has not ended, so that a vehicle moving on along its route
-// looks at one or two stretches a step.
+// looks at one or two stretches a step; whether its indicator is on for it (once on, it stays
+// on until the stretch ends, even if the vehicle slows and the notice shrinks); and up to where
+// nothing can be on (the next stretch is farther than its notice at any speed a vehicle has).
 struct IndicationCursor {
   std::size_t next = 0;
+  bool on = false;
+  double quiet_until = -1e300;
 };
 
+// The fastest any vehicle drives (m/s), for IndicationCursor::quiet_until.
+inline constexpr double kFastestVehicle = 70;
+
+// Looks at the stretches (indicator_at, when not quiet).
+VehicleSignals look_for_indication(std::span<const IndicationStretch> stretches, double progress,
+                                   double speed, IndicationCursor& cursor,
+                                   const IndicationNotice& notice);
+
 // The indicator on at route distance `progress` driving at `speed`: the first stretch not yet
-// ended, from its notice before it to its end; 0 when none. `progress` must not go backwards
-// between calls with the same cursor.
-VehicleSignals indicator_at(std::span<const IndicationStretch> stretches, double progress,
-                            double speed, IndicationCursor& cursor,
-                            const IndicationNotice& notice = {});
+// ended, from its notice before it (at the speed when it came on) to its end; 0 when none.
+// `progress` must not go backwards between calls with the same cursor.
+inline VehicleSignals indicator_at(std::span<const IndicationStretch> stretches, double progress,
+                                   double speed, IndicationCursor& cursor,
+                                   const IndicationNotice& notice = {}) {
+  if (progress < cursor.quiet_until) return 0;  // most steps of most vehicles
+  return look_for_indication(stretches, progress, speed, cursor, notice);
+}
 
 }  // namespace scenfuzz

@@ -50,8 +50,9 @@ bool high_beam_allowed(const KinematicState& ego, std::span<const WorldObject> o
 VehicleSignals ego_signals(const EgoSignalInput& input, const SignalWeather& weather,
                            SignalMemory& memory, const SignalSettings& settings) {
   const double speed = input.ego.speed;
-  VehicleSignals signals = weather_signals(weather, settings);
-  if (high_beam_allowed(input.ego, input.objects, weather, settings))
+  VehicleSignals signals = input.weather_lights;
+  if (weather.darkness >= settings.high_beam_darkness &&
+      high_beam_allowed(input.ego, input.objects, weather, settings))
     signals |= vehicle_signal::high_beam;
   signals |= brake_lights(input.acceleration, speed, true, settings);
 

@@ -62,6 +62,7 @@ struct EgoSignalInput {
   std::span<const WorldObject> objects;  // what it perceives
   bool emergency = false;                // it brakes fully for an object in its path
   bool collided = false;                 // it has collided (this step or before)
+  VehicleSignals weather_lights = 0;     // weather_signals(the run's weather), worked out once
 };
 
 // What the ego remembers between steps: hazard lights on until it drives on, when its current
@@ -71,10 +72,11 @@ struct SignalMemory {
   double emergency_since = -1;  // s; -1 while not braking for an emergency
 };
 
-// The ego's signals this step. Hazard lights: once it stands after an emergency brake, or after a
-// collision, until it drives on faster than hazard_release (the hazard replaces the indicator).
-// Horn: the first horn_time seconds of an emergency brake while faster than horn_speed (an
-// object about to be in its path when braking alone may not suffice).
+// The ego's signals this step: input.weather_lights, and as follows. Hazard lights: once it stands
+// after an emergency brake, or after a collision, until it drives on faster than hazard_release
+// (the hazard replaces the indicator). Horn: the first horn_time seconds of an emergency brake
+// while faster than horn_speed (an object about to be in its path when braking alone may not
+// suffice).
 VehicleSignals ego_signals(const EgoSignalInput& input, const SignalWeather& weather,
                            SignalMemory& memory, const SignalSettings& settings = {});
 

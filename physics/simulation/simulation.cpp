@@ -103,29 +103,6 @@ const std::vector<WorldObject>& present_objects(const std::vector<WorldObject>& 
   column.reversing.push_back(seen && seen->reversing ? 1 : 0);
 }
 
-// Each NPC vehicle's signals at sample time t into its trace column and into what perception
-// sees of it (`truth`, actors 1, 2, ... in order); pedestrians and obstacles have none.
-[[gnu::noinline]] void record_npc_signals(
-    NpcSignals& npc_signals, double t, std::span<const KinematicState> states,
-    const std::vector<std::optional<LaneFollower>>& followers,
-    const std::vector<std::optional<ManoeuvreDriver>>& drivers, const BackgroundTraffic& traffic,
-    std::size_t first_flow, std::vector<TraceActor>& actors, std::vector<WorldObject>& truth) {
-  for (std::size_t k = 1; k <= followers.size(); ++k) {
-    if (actors[k].kind != TraceActorKind::vehicle) continue;
-    const VehicleSignals signals = npc_signals.scenario_actor(
-        k - 1, t, states[k], followers[k - 1] ? &*followers[k - 1] : nullptr,
-        drivers[k - 1] ? &*drivers[k - 1] : nullptr);
-    actors[k].signals.push_back(signals);
-    truth[k - 1].signals = signals;
-  }
-  for (std::size_t j = 0; j < traffic.size(); ++j) {
-    const std::size_t k = first_flow + j;
-    const VehicleSignals signals = npc_signals.flow_vehicle(j, states[k], traffic.follower(j));
-    actors[k].signals.push_back(signals);
-    truth[k - 1].signals = signals;
-  }
-}
-
 // The ego's signals from a plugin's control: its word when it speaks version 2 or later (an
 // older plugin leaves the zero-filled fields: all off), and brake lights as its acceleration
 // has them, whatever it says (they follow the brake pedal, not a switch).
@@ -288,7 +265,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   }
   const std::size_t actor_count = trace.actors.size();
   const SignalWeather weather = signal_weather(setup.conditions, options.perception);
-  NpcSignals npc_signals(map, setup, traffic.vehicles(), weather);
+  NpcSignals npc_signals(map, setup, followers, traffic.vehicles(), weather);
   const bool sees_world = watches_world || !traffic.empty();
   // By actor id: on the map now. Only flow vehicles come and go.
   std::vector<std::uint8_t> present(actor_count, 1);
@@ -322,8 +299,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   // The ego's signals at the sample just written, until its driver decides at this step: what
   // the last sample keeps when the run ends before that. At the start, the brake held while it
   // stands, and for the reference driver the weather's lights (a plugin chooses its own).
+  const VehicleSignals weather_lights = weather_signals(weather);
   VehicleSignals ego_signals_now =
-      (options.ego_plugin.empty() ? weather_signals(weather) : VehicleSignals{0}) |
+      (options.ego_plugin.empty() ? weather_lights : VehicleSignals{0}) |
       brake_lights(setup.ego_initial.acceleration, setup.ego_initial.speed, true);
   std::vector<LaneTracker> lanes(actor_count, LaneTracker(widest_half_lane(map)));
   std::vector<LaneFix> fixes(actor_count);
@@ -409,8 +387,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     }
     // The ego's signals are what it decided at the last step, until its driver decides below.
     trace.actors[kEgo].signals.push_back(ego_signals_now);
-    record_npc_signals(npc_signals, t, states, followers, drivers, traffic, first_flow,
-                       trace.actors, truth);
+    npc_signals.record(t, states, followers, drivers, traffic, first_flow,
+                       plugin ? &truth : nullptr);
     const std::vector<SignalColour>& colours = signals.colours_at(t);
     colour_runs.add(colours);
 
@@ -520,15 +498,17 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       control = driver.step({t, states[kEgo], seen, colours});
       const VehicleSignals indicator =
           ego_indicators.at(route.progress(), states[kEgo].speed, driver.overtake());
-      ego_signals_now = ego_signals({t, states[kEgo], control.acceleration, indicator, seen,
-                                     driver.last_reason() == DriverReason::emergency, ego_collided},
-                                    weather, ego_memory);
+      ego_signals_now = ego_signals(
+          {t, states[kEgo], control.acceleration, indicator, seen,
+           driver.last_reason() == DriverReason::emergency, ego_collided, weather_lights},
+          weather, ego_memory);
     }
     trace.actors[kEgo].signals.back() = ego_signals_now;
     states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
   }
   colour_runs.write(trace.lights);
   traffic.finish(trace.actors, trace.sample_count());
+  npc_signals.finish(trace.actors, first_flow);
   return trace;
 }
 

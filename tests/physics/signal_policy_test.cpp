@@ -140,6 +140,16 @@ TEST(SignalPolicyTest, IndicatesFromThreeSecondsOrThirtyMetresBeforeUntilTheEnd)
   EXPECT_EQ(indicator_at(stretches, 221, 20, cursor), 0);
 }
 
+TEST(SignalPolicyTest, AnIndicatorOnStaysOnWhenTheVehicleSlows) {
+  const std::vector<IndicationStretch> stretches{{300, 330, sig::left_indicator}};
+  IndicationCursor cursor;
+  EXPECT_EQ(indicator_at(stretches, 100, 20, cursor), 0);  // far: quiet until 90 m before
+  EXPECT_EQ(indicator_at(stretches, 245, 20, cursor), sig::left_indicator);  // 60 m notice
+  EXPECT_EQ(indicator_at(stretches, 255, 2, cursor), sig::left_indicator)
+      << "slowed for the turn: a 30 m notice now, but it stays on";
+  EXPECT_EQ(indicator_at(stretches, 331, 5, cursor), 0);
+}
+
 LaneIndex lane_named(const RoadMap& map, const std::string& id) {
   for (LaneIndex k = 0; k < map.lanes().size(); ++k)
     if (map.lane(k).id == id) return k;
