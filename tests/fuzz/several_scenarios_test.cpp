@@ -1,8 +1,9 @@
 // `scenfuzz` on a file that executes several scenarios, as LawBreaker's scenest files may
 // (tests/fuzz/data/two_scenarios.scenest): `run`, the search, `space` and `check` take
-// --scenario NAME; without it a file with several is bad usage (exit 2) naming the option and
-// the scenarios; a finding names its scenario in its replay command, which replays it and which
-// `tmin` follows (issue 21).
+// --scenario NAME, a campaign's [[seed]] table `scenario = "NAME"`; without it a file with
+// several is bad usage (exit 2) naming the option and the scenarios; a finding names its scenario
+// in its replay command, which replays it and which `tmin` and a campaign's replay follow
+// (issue 21).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -115,6 +116,14 @@ TEST_F(SeveralScenariosCommand, ASearchOfTheSecondScenarioWritesFindingsThatRepl
   EXPECT_NE(unchosen.err.find("choose one with --scenario NAME"), std::string::npos)
       << unchosen.err;
 
+  // A name is one file's: not for a corpus.
+  const Outcome corpus = scenfuzz({"--budget", "4", "--out", (dir_ / "corpus").string(),
+                                   "--scenario", "scenario2", two_scenarios(), two_scenarios()});
+  EXPECT_EQ(corpus.exit_code, 2);
+  EXPECT_NE(corpus.err.find("--scenario chooses a scenario of one FILE, not of a corpus"),
+            std::string::npos)
+      << corpus.err;
+
   const fs::path out = dir_ / "search";
   const Outcome search = scenfuzz({"--budget", "2", "-j", "1", "--quiet", "--out", out.string(),
                                    "--scenario", "scenario2", "--duration", "4", two_scenarios()});
@@ -140,11 +149,58 @@ TEST_F(SeveralScenariosCommand, ASearchOfTheSecondScenarioWritesFindingsThatRepl
   EXPECT_EQ(replay.exit_code, 1) << replay.out << replay.err;
   EXPECT_NE(replay.out.find("ped_far_away"), std::string::npos) << replay.out;
 
+  // --resume continues only the same scenario's search.
+  const Outcome other =
+      scenfuzz({"--budget", "2", "-j", "1", "--quiet", "--out", out.string(), "--scenario",
+                "scenario1", "--duration", "4", "--resume", two_scenarios()});
+  EXPECT_EQ(other.exit_code, 2) << other.err;
+  EXPECT_NE(other.err.find("its scenario_choice was \"scenario2\", now \"scenario1\""),
+            std::string::npos)
+      << other.err;
+
   // tmin reads the choice from the replay line, and its output's replay keeps it.
   const std::string minimised = (dir_ / "min.scenest").string();
   const Outcome tmin = scenfuzz({"tmin", findings.front().string(), "-o", minimised});
   EXPECT_EQ(tmin.exit_code, 0) << tmin.out << tmin.err;
   EXPECT_NE(tmin.out.find(" --scenario scenario2"), std::string::npos) << tmin.out;
+}
+
+TEST_F(SeveralScenariosCommand, ACampaignSeedTableChoosesTheScenarioAndItsModesReplayIt) {
+  const fs::path folder = dir_ / "c";
+  fs::create_directories(folder);
+  fs::copy_file(two_scenarios(), folder / "two.scenest");
+  const std::string toml =
+      "seeds = [\"two.scenest\"]\n\n[budget]\nsimulations = 32\n\n[search]\nseed = 7\n";
+  write("c/campaign.toml", toml);
+  const Outcome unchosen = scenfuzz({"campaign", "run", folder.string(), "-j", "1"});
+  EXPECT_EQ(unchosen.exit_code, 2);
+  EXPECT_NE(unchosen.err.find("this file executes 2 scenarios: " + kScenarios), std::string::npos)
+      << unchosen.err;
+  EXPECT_FALSE(fs::exists(folder / "campaign.db"));
+
+  write("c/campaign.toml", toml + "\n[[seed]]\npath = \"two.scenest\"\nscenario = \"scenario2\"\n");
+  const Outcome first = scenfuzz({"campaign", "run", folder.string(), "-j", "1"});
+  ASSERT_EQ(first.exit_code, 1) << first.out << first.err;
+  // Only scenario2's spec is searched.
+  EXPECT_NE(first.out.find("two.scenest ped_far_away"), std::string::npos) << first.out;
+  EXPECT_EQ(first.out.find("npc_kept_away"), std::string::npos) << first.out;
+  std::size_t modes = 0;
+  for (const auto& entry : fs::directory_iterator(folder / "modes")) {
+    if (entry.path().extension() != ".scenest") continue;
+    ++modes;
+    EXPECT_NE(slurp(entry.path()).find(" --scenario scenario2 --seed "), std::string::npos);
+  }
+  EXPECT_GT(modes, 0u);
+  // The next run replays the stored whole file's scenario2: the mode still fails.
+  const Outcome second = scenfuzz({"campaign", "run", folder.string(), "-j", "1"});
+  EXPECT_EQ(second.exit_code, 0) << second.out << second.err;
+  EXPECT_NE(second.out.find("regression replay: still_failing " + std::to_string(modes)),
+            std::string::npos)
+      << second.out << second.err;
+  const Outcome report = scenfuzz({"campaign", "report", folder.string()});
+  EXPECT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_NE(slurp(folder / "report.html").find("scenfuzz run --scenario scenario2 --seed "),
+            std::string::npos);
 }
 
 }  // namespace
