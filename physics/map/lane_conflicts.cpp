@@ -48,15 +48,10 @@ std::vector<Box> run_boxes(const std::vector<MapPoint>& points) {
   return runs;
 }
 
-}  // namespace
-
 // Segments whose boxes do not meet cannot cross (the same answer, without the cross products for
 // most pairs): only pairs of runs whose boxes meet have their segments compared.
-bool lines_cross(const Polyline& first, const Polyline& second) {
-  const auto& p = first.points();
-  const auto& q = second.points();
-  if (p.size() < 2 || q.size() < 2) return false;
-  const std::vector<Box> p_runs = run_boxes(p), q_runs = run_boxes(q);
+bool runs_cross(const std::vector<MapPoint>& p, const std::vector<Box>& p_runs,
+                const std::vector<MapPoint>& q, const std::vector<Box>& q_runs) {
   for (std::size_t a = 0; a < p_runs.size(); ++a) {
     for (std::size_t b = 0; b < q_runs.size(); ++b) {
       if (!boxes_meet(p_runs[a], q_runs[b])) continue;
@@ -73,6 +68,15 @@ bool lines_cross(const Polyline& first, const Polyline& second) {
   return false;
 }
 
+}  // namespace
+
+bool lines_cross(const Polyline& first, const Polyline& second) {
+  const auto& p = first.points();
+  const auto& q = second.points();
+  if (p.size() < 2 || q.size() < 2) return false;
+  return runs_cross(p, run_boxes(p), q, run_boxes(q));
+}
+
 bool shares_successor(const Lane& first, const Lane& second) {
   return std::any_of(first.successors.begin(), first.successors.end(), [&](LaneIndex next) {
     return std::find(second.successors.begin(), second.successors.end(), next) !=
@@ -83,10 +87,16 @@ bool shares_successor(const Lane& first, const Lane& second) {
 std::vector<LaneIndex> conflicting_lanes(const RoadMap& map, LaneIndex lane) {
   const Lane& mine = map.lane(lane);
   std::vector<LaneIndex> conflicts;
+  if (!mine.junction) return conflicts;
+  // lines_cross against each of the junction's lanes, with this lane's run boxes made once.
+  const auto& p = mine.centre_line.points();
+  const std::vector<Box> p_runs = p.size() < 2 ? std::vector<Box>{} : run_boxes(p);
   for (LaneIndex other = 0; other < map.lanes().size(); ++other) {
     const Lane& candidate = map.lane(other);
-    if (other == lane || !mine.junction || candidate.junction != mine.junction) continue;
-    if (shares_successor(mine, candidate) || lines_cross(mine.centre_line, candidate.centre_line))
+    if (other == lane || candidate.junction != mine.junction) continue;
+    const auto& q = candidate.centre_line.points();
+    if (shares_successor(mine, candidate) ||
+        (!p_runs.empty() && q.size() >= 2 && runs_cross(p, p_runs, q, run_boxes(q))))
       conflicts.push_back(other);
   }
   return conflicts;

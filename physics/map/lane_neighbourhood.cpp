@@ -72,7 +72,9 @@ CellRange cells_of(const LaneNeighbourhood& n, MapPoint low, MapPoint high) {
 // is tested only against the segments of its own cell. The cell of a point in a box lies within
 // the box's cell range, as the cell of a coordinate never decreases with it (rounding included).
 void fill_grid(LaneNeighbourhood& n) {
-  constexpr double kCell = 4;           // m: a few segments' reach per cell
+  // m: a few segments' reach per cell (16 m cells filed faster but made the crossroads' lookups
+  // cost more than that saved).
+  constexpr double kCell = 4;
   constexpr double kMostCells = 65536;  // a larger area gets larger cells
   const double width = n.high.x - n.low.x, height = n.high.y - n.low.y;
   n.cell = std::max(kCell, std::sqrt(width * height / kMostCells));
