@@ -23,10 +23,10 @@ std::optional<SourceFile> read_input(const std::string& path, std::ostream& err)
 }
 
 std::optional<ScenarioFile> read_scenario(const std::string& path, const std::string& purpose,
-                                          std::ostream& err) {
+                                          std::ostream& err, const ScenarioChoiceOptions& choice) {
   std::optional<SourceFile> file = read_input(path, err);
   if (!file) return std::nullopt;
-  ScenarioParse parsed = parse_scenario_file(*file);
+  ScenarioParse parsed = parse_scenario_file(*file, avunit::ParseOptions{choice.scenario, false});
   err << format_diagnostics(*file, parsed.diagnostics);
   if (!parsed.ok()) return std::nullopt;
   if (!parsed.scenario.has_scenario) {
@@ -37,7 +37,8 @@ std::optional<ScenarioFile> read_scenario(const std::string& path, const std::st
   return ScenarioFile{std::move(*file), std::move(parsed.scenario)};
 }
 
-int run_check(const std::vector<std::string>& paths, std::ostream& err) {
+int run_check(const std::vector<std::string>& paths, const ScenarioChoiceOptions& choice,
+              std::ostream& err) {
   bool failed = false;
   for (const std::string& path : paths) {
     std::optional<SourceFile> file = read_input(path, err);
@@ -45,7 +46,9 @@ int run_check(const std::vector<std::string>& paths, std::ostream& err) {
       failed = true;
       continue;
     }
-    const ScenarioParse result = parse_scenario_file(*file);
+    // Without --scenario, a file executing several scenarios checks every one and lists them.
+    const ScenarioParse result =
+        parse_scenario_file(*file, avunit::ParseOptions{choice.scenario, /*survey=*/true});
     err << format_diagnostics(*file, result.diagnostics);
     if (!result.ok()) failed = true;
     // Every place a spec reads a signal the oracle does not compute, at once: the file is

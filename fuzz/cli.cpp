@@ -60,14 +60,21 @@ void declare_search(CLI::App& app, FuzzCommandOptions& options, std::vector<std:
 // Each declare_* adds one subcommand to `app`; once it is parsed, `action` runs it. Its options
 // live in a shared_ptr that the action keeps.
 void declare_check(CLI::App& app, Action& action) {
-  auto files = std::make_shared<std::vector<std::string>>();
+  struct CheckOptions {
+    std::vector<std::string> files;
+    ScenarioChoiceOptions choice;
+  };
+  auto options = std::make_shared<CheckOptions>();
   CLI::App* check = app.add_subcommand(
       "check", "Parse scenario files and report their errors and warnings (nothing when clean)");
-  check->add_option("FILE", *files, "AVUnit, scenest or WMG SDL (.sdl) scenario files")
+  check->add_option("FILE", options->files, "AVUnit, scenest or WMG SDL (.sdl) scenario files")
       ->required()
       ->type_name("");
-  check->callback([files, &action] {
-    action = [files](std::ostream&, std::ostream& err) { return run_check(*files, err); };
+  add_scenario_options(check, options->choice);
+  check->callback([options, &action] {
+    action = [options](std::ostream&, std::ostream& err) {
+      return run_check(options->files, options->choice, err);
+    };
   });
 }
 
@@ -76,6 +83,7 @@ void declare_space(CLI::App& app, Action& action) {
     std::string file;
     bool json = false;
     MutationCommandOptions mutation;
+    ScenarioChoiceOptions choice;
   };
   auto options = std::make_shared<SpaceOptions>();
   CLI::App* space = app.add_subcommand(
@@ -86,10 +94,11 @@ void declare_space(CLI::App& app, Action& action) {
       ->required()
       ->type_name("");
   space->add_flag("--json", options->json, "Print a JSON document instead of a table");
+  add_scenario_options(space, options->choice);
   add_mutation_options(space, options->mutation);
   space->callback([options, &action] {
     action = [options](std::ostream& out, std::ostream& err) {
-      return run_space(options->file, options->json, options->mutation, out, err);
+      return run_space(options->file, options->json, options->mutation, options->choice, out, err);
     };
   });
 }

@@ -13,9 +13,18 @@
 
 namespace scenfuzz {
 
+// Which of a file's scenarios a command uses (`--scenario`), as fuzz/options.def declares it.
+struct ScenarioChoiceOptions {
+#define SCENFUZZ_SCENARIO_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
+};
+
 // `scenfuzz check FILE...`: parses every file, printing its diagnostics (warnings too) to `err`.
 // Returns kExitSuccess when no file has errors, kExitBadInput otherwise; every file is checked.
-int run_check(const std::vector<std::string>& paths, std::ostream& err);
+// A file executing several scenarios checks each and notes them; `choice` names one that must
+// exist.
+int run_check(const std::vector<std::string>& paths, const ScenarioChoiceOptions& choice,
+              std::ostream& err);
 
 struct MapCommandOptions {
   std::string name;                    // built-in map (with ?parameters), Apollo map name or file
@@ -42,6 +51,7 @@ struct RunCommandOptions {
 #define SCENFUZZ_RUN_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
 #include "fuzz/options.def"
   SimulationCommandOptions simulation;
+  ScenarioChoiceOptions choice;
 };
 
 // `scenfuzz run FILE`: simulates the scenario (a logical one at the point --at chooses), prints
@@ -73,10 +83,12 @@ struct ScenarioFile {
   ScenarioTemplate scenario;
 };
 
-// Reads and parses `path`, printing its diagnostics to `err`; nullopt (with an error on `err`)
-// when it cannot be read, has errors, or builds no scenario ("nothing to <purpose>").
+// Reads and parses `path` (its scenario `choice` names, when it has several), printing its
+// diagnostics to `err`; nullopt (with an error on `err`) when it cannot be read, has errors, or
+// builds no scenario ("nothing to <purpose>").
 std::optional<ScenarioFile> read_scenario(const std::string& path, const std::string& purpose,
-                                          std::ostream& err);
+                                          std::ostream& err,
+                                          const ScenarioChoiceOptions& choice = {});
 
 // How a concrete scenario's values are mutated (sampler/mutation_space.hpp), as fuzz/options.def
 // declares it.
@@ -91,13 +103,14 @@ struct FuzzCommandOptions {
 #include "fuzz/options.def"
   SimulationCommandOptions simulation;
   MutationCommandOptions mutation;
+  ScenarioChoiceOptions choice;
 };
 
 // `scenfuzz space FILE [--json] [--mutate KIND=SIZE]`: prints the file's parameter space to `out`
 // as an aligned table, or as JSON; a concrete file's derived space, marked as derived. Diagnostics
 // go to `err`; a file with errors gives kExitBadInput and no space.
 int run_space(const std::string& path, bool json, const MutationCommandOptions& mutation,
-              std::ostream& out, std::ostream& err);
+              const ScenarioChoiceOptions& choice, std::ostream& out, std::ostream& err);
 
 // `scenfuzz [options] FILE`: searches the scenario's parameter space and writes every finding.
 // Exit status kExitSuccess (no finding), kExitViolated (findings), kExitBadInput / kExitUsage.

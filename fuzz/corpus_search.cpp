@@ -139,6 +139,11 @@ std::vector<std::string> corpus_folder_names(const std::vector<std::string>& see
 
 int run_corpus_search(const FuzzCommandOptions& options, const std::vector<std::string>& entries,
                       std::ostream& out, std::ostream& err) {
+  // A name is one file's: the seeds of a corpus name their scenarios differently.
+  if (!options.choice.scenario.empty()) {
+    err << "scenfuzz: error: --scenario chooses a scenario of one FILE, not of a corpus\n";
+    return kExitUsage;
+  }
   const std::vector<std::string> files = expand_entries(entries, err);
   if (files.empty() || !check_seeds(files, err)) {
     err << "scenfuzz: error: nothing was searched: fix the corpus first\n";

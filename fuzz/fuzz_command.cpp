@@ -307,7 +307,7 @@ Minimised minimise_search_findings(const FuzzCommandOptions& options, FolderSear
 }  // namespace
 
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
-  std::optional<ScenarioFile> input = read_scenario(options.path, "search", err);
+  std::optional<ScenarioFile> input = read_scenario(options.path, "search", err, options.choice);
   if (!input) return kExitBadInput;
   // The search targets the specs the oracle can judge; the others are named, with the reason.
   const std::vector<NotJudgedSpec> not_judged =

@@ -211,7 +211,14 @@ void add_run_options(CLI::App* app, RunCommandOptions& options) {
 #define SCENFUZZ_RUN_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
   add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
 #include "fuzz/options.def"
+  add_scenario_options(app, options.choice);
   add_simulation_options(app, options.simulation);
+}
+
+void add_scenario_options(CLI::App* app, ScenarioChoiceOptions& options) {
+#define SCENFUZZ_SCENARIO_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
+  add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
+#include "fuzz/options.def"
 }
 
 void add_mutation_options(CLI::App* app, MutationCommandOptions& options) {
@@ -224,6 +231,7 @@ void add_search_options(CLI::App* app, FuzzCommandOptions& options) {
 #define SCENFUZZ_SEARCH_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
   add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
 #include "fuzz/options.def"
+  add_scenario_options(app, options.choice);
   add_mutation_options(app, options.mutation);
   add_simulation_options(app, options.simulation);
 }

@@ -96,6 +96,8 @@ void add_corpus_options(CLI::App* app, CorpusOptions& options) {
 #include "fuzz/options.def"
   add_simulation_options(app, options.simulation);
 }
+// --scenario: `run`, the search, `space` and `check`.
+void add_scenario_options(CLI::App* app, ScenarioChoiceOptions& options);
 // --mutate, for the search and `space`.
 void add_mutation_options(CLI::App* app, MutationCommandOptions& options);
 

@@ -259,7 +259,7 @@ nlohmann::json summary_json(const Trace& trace, const ParameterSpace& space,
 }  // namespace
 
 int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& err) {
-  std::optional<ScenarioFile> input = read_scenario(options.path, "simulate", err);
+  std::optional<ScenarioFile> input = read_scenario(options.path, "simulate", err, options.choice);
   if (!input) return kExitBadInput;
   apply_scenario_overrides(options.simulation, input->scenario);
   const SourceFile& file = input->file;

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "lang/avunit/avunit.hpp"
+#include "lang/avunit/scenario_choice.hpp"
 #include "lang/wmg/wmg.hpp"
 
 namespace scenfuzz {
@@ -11,13 +12,21 @@ bool is_wmg_file(const std::string& path) {
   return std::filesystem::path(path).extension() == ".sdl";
 }
 
-ScenarioParse parse_scenario_file(const SourceFile& file) {
+ScenarioParse parse_scenario_file(const SourceFile& file, const avunit::ParseOptions& choice) {
   if (is_wmg_file(file.path())) {
     wmg::ParseResult parsed = wmg::parse(file);
-    return ScenarioParse{std::move(parsed.scenario), std::move(parsed.diagnostics)};
+    ScenarioParse result{std::move(parsed.scenario), std::move(parsed.diagnostics), {}};
+    if (!result.scenario.has_scenario) return result;
+    // One scenery, one scenario: a name given must be its own.
+    const std::vector<avunit::ScenarioCandidate> only{
+        {result.scenario.scenario_name, {}, SourceLocation{1, 1, 0, 0}}};
+    result.scenarios.push_back(result.scenario.scenario_name);
+    avunit::choose_scenario(only, {choice.scenario, choice.survey, true}, result.diagnostics);
+    return result;
   }
-  avunit::ParseResult parsed = avunit::parse(file);
-  return ScenarioParse{std::move(parsed.scenario), std::move(parsed.diagnostics)};
+  avunit::ParseResult parsed = avunit::parse(file, choice);
+  return ScenarioParse{std::move(parsed.scenario), std::move(parsed.diagnostics),
+                       std::move(parsed.scenarios)};
 }
 
 std::string print_concrete_scenario(const SourceFile& file, const ScenarioTemplate& scenario,

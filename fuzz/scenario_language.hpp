@@ -4,7 +4,9 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
+#include "lang/avunit/avunit.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/scenario.hpp"
 #include "lang/source_file.hpp"
@@ -16,11 +18,13 @@ bool is_wmg_file(const std::string& path);
 struct ScenarioParse {
   ScenarioTemplate scenario;  // complete only when there are no errors
   Diagnostics diagnostics;
+  std::vector<std::string> scenarios;  // the file's scenarios by name; `scenario` is one of them
 
   bool ok() const { return !diagnostics.has_errors(); }
 };
 
-ScenarioParse parse_scenario_file(const SourceFile& file);
+// `choice` names the scenario to build (a WMG SDL file has one, named after its scenery).
+ScenarioParse parse_scenario_file(const SourceFile& file, const avunit::ParseOptions& choice = {});
 
 // The file with every range replaced by its value, in the file's language.
 std::string print_concrete_scenario(const SourceFile& file, const ScenarioTemplate& scenario,

@@ -6,25 +6,29 @@ namespace scenfuzz {
 
 nlohmann::json search_identity(const FuzzCommandOptions& options, const SourceFile& file) {
   const SimulationCommandOptions& simulation = options.simulation;
-  return {{"version", SCENFUZZ_VERSION},
-          {"scenario", file.path()},
-          {"scenario_hash", content_hash(file.text())},
-          {"algorithm", options.algorithm},
-          {"seed", options.seed},
-          {"budget", options.budget},
-          {"specs", options.specs},
-          {"target", options.target},
-          {"mutate", options.mutation.mutate},
-          {"map_paths", simulation.map_paths},
-          {"ego_plugin", simulation.ego_plugin},
-          {"duration", simulation.duration ? nlohmann::json(*simulation.duration) : nullptr},
-          {"dt", simulation.dt},
-          {"continue_after_collision", simulation.continue_after_collision},
-          {"npc_behaviour", simulation.npc_behaviour},
-          {"all_collisions", simulation.all_collisions},
-          {"rss", simulation.rss},
-          {"ego_step_timeout", simulation.ego_step_timeout},
-          {"ego_start_timeout", simulation.ego_start_timeout}};
+  nlohmann::json identity = {
+      {"version", SCENFUZZ_VERSION},
+      {"scenario", file.path()},
+      {"scenario_hash", content_hash(file.text())},
+      {"algorithm", options.algorithm},
+      {"seed", options.seed},
+      {"budget", options.budget},
+      {"specs", options.specs},
+      {"target", options.target},
+      {"mutate", options.mutation.mutate},
+      {"map_paths", simulation.map_paths},
+      {"ego_plugin", simulation.ego_plugin},
+      {"duration", simulation.duration ? nlohmann::json(*simulation.duration) : nullptr},
+      {"dt", simulation.dt},
+      {"continue_after_collision", simulation.continue_after_collision},
+      {"npc_behaviour", simulation.npc_behaviour},
+      {"all_collisions", simulation.all_collisions},
+      {"rss", simulation.rss},
+      {"ego_step_timeout", simulation.ego_step_timeout},
+      {"ego_start_timeout", simulation.ego_start_timeout}};
+  // Only when given, so that the searches of files with one scenario keep their identity.
+  if (!options.choice.scenario.empty()) identity["scenario_choice"] = options.choice.scenario;
+  return identity;
 }
 
 std::string identity_difference(const nlohmann::json& stored, const nlohmann::json& now) {

@@ -274,8 +274,13 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
               responsibility_words(std::string(responsibility_name(first.responsibility))) + ": " +
               one_line(first.reason) + "\n";
   }
+  // The file the finding is written in keeps every scenario of its source: name the one it is of.
+  const std::string scenario_flag = options_.choice.scenario.empty()
+                                        ? ""
+                                        : " --scenario " + shell_quote(options_.choice.scenario);
   return header + comment + "replay: scenfuzz run " + shell_quote(scenario_path.string()) +
-         " --seed " + std::to_string(finding.seed) + simulation_flags(options_.simulation) + "\n";
+         scenario_flag + " --seed " + std::to_string(finding.seed) +
+         simulation_flags(options_.simulation) + "\n";
 }
 
 // The finding's other violations (later specs, and a conjunction's later conjuncts), a line

@@ -129,7 +129,7 @@ void print_json(const std::string& path, const ParameterSpace& space, std::ostre
 }  // namespace
 
 int run_space(const std::string& path, bool json, const MutationCommandOptions& mutation,
-              std::ostream& out, std::ostream& err) {
+              const ScenarioChoiceOptions& choice, std::ostream& out, std::ostream& err) {
   const MutationSizesOrError sizes = mutation_sizes(mutation);
   if (!sizes.error.empty()) {
     err << "scenfuzz: error: " << sizes.error << "\n";
@@ -137,7 +137,7 @@ int run_space(const std::string& path, bool json, const MutationCommandOptions& 
   }
   std::optional<SourceFile> file = read_input(path, err);
   if (!file) return kExitBadInput;
-  ScenarioParse result = parse_scenario_file(*file);
+  ScenarioParse result = parse_scenario_file(*file, avunit::ParseOptions{choice.scenario, false});
   err << format_diagnostics(*file, result.diagnostics);
   if (!result.ok()) return kExitBadInput;
   if (searched_by_mutation(result.scenario))

@@ -228,10 +228,25 @@ struct Start {
   Replay original;
 };
 
+// The finding's header and its replay's options: which scenario of the file it is of, too.
+std::string load_header(const std::string& path, Start& start) {
+  std::string error;
+  std::optional<FindingHeader> header =
+      read_header(start.file->text(), comment_prefix(path), error);
+  if (!header) return "'" + path + "': " + error;
+  start.header = std::move(*header);
+  std::optional<RunCommandOptions> run = replay_options(start.header.replay, error);
+  if (!run) return "'" + path + "': " + error;
+  start.run = std::move(*run);
+  return "";
+}
+
 std::string load(const std::string& path, Start& start) {
   start.file = read_source_file(path);
   if (!start.file) return "cannot read '" + path + "'";
-  ScenarioParse parsed = parse_scenario_file(*start.file);
+  if (std::string error = load_header(path, start); !error.empty()) return error;
+  ScenarioParse parsed =
+      parse_scenario_file(*start.file, avunit::ParseOptions{start.run.choice.scenario, false});
   if (!parsed.ok())
     return "'" + path + "' is not a scenario scenfuzz can read:\n" +
            format_diagnostics(*start.file, parsed.diagnostics);
@@ -250,14 +265,6 @@ std::string load(const std::string& path, Start& start) {
     if (!tree.file) return "'" + path + "' has no level-2 text tmin can reduce";
     start.tree = std::move(tree.file);
   }
-  std::string error;
-  std::optional<FindingHeader> header =
-      read_header(start.file->text(), comment_prefix(path), error);
-  if (!header) return "'" + path + "': " + error;
-  start.header = std::move(*header);
-  std::optional<RunCommandOptions> run = replay_options(start.header.replay, error);
-  if (!run) return "'" + path + "': " + error;
-  start.run = std::move(*run);
   start.original = replay(*start.file, start.scenario, start.run, std::nullopt);
   if (start.original.mode.empty() && !start.original.why.empty())
     return "'" + path + "' cannot be replayed and judged: " + start.original.why;

@@ -9,6 +9,8 @@
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/value.hpp"
+#include "oracle/signal_pool.hpp"
+#include "oracle/window_offsets.hpp"
 
 namespace scenfuzz {
 
@@ -73,62 +75,38 @@ class WindowCursor {
   std::size_t begin_ = 0, end_ = 0;
 };
 
-// Sliding-window minimum (Prefer = std::less) or maximum (std::greater) over monotone windows
-// (`window(i)` gives sample i's [begin, end), both non-decreasing in i), with a monotone deque of
-// candidate indices: each index enters and leaves once.
-template <class Window, class Prefer>
-void sliding_extreme(const Signal& x, Window window, double empty, Prefer prefer, Signal& out,
-                     std::vector<std::size_t>& queue) {
-  const std::size_t n = x.size();
-  queue.resize(n);
-  std::size_t head = 0, tail = 0, next = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto [begin, end] = window(i);
-    for (; next < end; ++next) {
-      // A candidate no better than the newcomer can never be the extreme again.
-      while (tail > head && !prefer(x[queue[tail - 1]], x[next])) --tail;
-      queue[tail++] = next;
-    }
-    while (head < tail && queue[head] < begin) ++head;
-    out[i] = head < tail ? x[queue[head]] : empty;
-  }
-}
-
-// Window offsets that hold for every sample: sample i's window is [i + first, i + last] clipped
-// to the trace (empty when last < first). Uniformly sampled traces have them.
-struct Offsets {
-  std::ptrdiff_t first = 0, last = -1;
+struct Minimum {
+  double operator()(double a, double b) const { return std::min(a, b); }
+};
+struct Maximum {
+  double operator()(double a, double b) const { return std::max(a, b); }
 };
 
-// The interval's windows as constant offsets, when the windows the definition gives (walked by a
-// WindowCursor) are exactly those; nullopt otherwise (uneven sampling, windows wider than the
-// trace), where the deque handles them.
-std::optional<Offsets> constant_offsets(std::span<const double> time,
-                                        const TimeInterval& interval) {
-  const auto n = static_cast<std::ptrdiff_t>(time.size());
-  if (n == 0) return std::nullopt;
-  // The middle sample's window, found by bisection, proposes the offsets; the walk below checks
-  // them against every sample's window.
-  const std::ptrdiff_t middle = n / 2;
-  const double t = time[static_cast<std::size_t>(middle)];
-  const double lower = interval.lower - kWindowTolerance, upper = interval.upper + kWindowTolerance;
-  const auto first =
-      std::partition_point(time.begin(), time.end(), [&](double tj) { return tj - t < lower; });
-  const auto last =
-      std::partition_point(first, time.end(), [&](double tj) { return tj - t <= upper; });
-  const Offsets offsets{(first - time.begin()) - middle, (last - time.begin()) - middle - 1};
-  auto clipped = [n](std::ptrdiff_t index) { return std::clamp<std::ptrdiff_t>(index, 0, n); };
-  WindowCursor check(time, interval);
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const auto [begin, end] = check(static_cast<std::size_t>(i));
-    if (offsets.last < offsets.first) {
-      if (begin != end) return std::nullopt;
-    } else if (static_cast<std::ptrdiff_t>(begin) != clipped(i + offsets.first) ||
-               static_cast<std::ptrdiff_t>(end) != clipped(i + offsets.last + 1)) {
-      return std::nullopt;
+// Sliding-window minimum (Extreme = Minimum, identity +inf) or maximum (Maximum, -inf) over
+// monotone windows (`window(i)` gives sample i's [begin, end), both non-decreasing in i), with two
+// stacks: the window is a front part [begin, split), whose suffix extremes were computed when it
+// was cut off, and a back part [split, end), kept as one running extreme. When the window's start
+// passes `split`, the front is rebuilt from the samples still in it. Each sample is rebuilt at most
+// once, and no branch depends on the values: a monotone deque's pops did, and mispredicted on
+// every other sample of a random walk.
+template <class Window, class Extreme>
+void sliding_extreme(const Signal& x, Window window, double identity, Extreme extreme, Signal& out,
+                     Signal& suffix) {
+  const std::size_t n = x.size();
+  suffix.resize(n);
+  std::size_t split = 0, next = 0;  // the back part is [split, next)
+  double back = identity;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [begin, end] = window(i);
+    for (; next < end; ++next) back = extreme(back, x[next]);
+    if (begin > split) {
+      double running = identity;
+      for (std::size_t k = next; k-- > begin;) suffix[k] = running = extreme(running, x[k]);
+      split = next;
+      back = identity;
     }
+    out[i] = extreme(begin < split ? suffix[begin] : identity, back);
   }
-  return offsets;
 }
 
 // Sliding extreme over constant offsets by van Herk / Gil-Werman: the samples padded with the
@@ -174,13 +152,6 @@ void van_herk_extreme(const Signal& x, Offsets offsets, double identity, Extreme
   }
 }
 
-struct Minimum {
-  double operator()(double a, double b) const { return std::min(a, b); }
-};
-struct Maximum {
-  double operator()(double a, double b) const { return std::max(a, b); }
-};
-
 Signal suffix_min(Signal x) {
   for (std::size_t i = x.size(); i-- > 1;) x[i - 1] = std::min(x[i - 1], x[i]);
   return x;
@@ -200,30 +171,46 @@ void unbounded_until(const Signal& p, const Signal& q, Signal& r) {
   }
 }
 
+// bounded_until's working signals, each of n samples, lent by the evaluator.
+struct UntilParts {
+  Signal untimed, p_before_window, q_in_window, q_in_past;
+};
+
 // p U[a:b] q. The samples of the window at or after i split off as (Donze, Ferrere, Maler, CAV
 // 2013): with f the first of them and W the window from f on,
 //   max_{j in W} min(q(j), min p[i, j)) = min(min p[i, f), max_{j in W} q(j), (p U q)(f)),
 // where the untimed until may look past W only when the window's best q bounds it. Samples of
 // the window before i (a negative lower bound) contribute q(j) alone: min p[i, j) is empty.
-void bounded_until(const Signal& p, const Signal& q, const Windows& windows, Signal& r) {
+// Each pass walks the windows afresh with its own cursor rather than storing them: no memory of
+// n indices twice over, for a few comparisons per sample.
+void bounded_until(const Signal& p, const Signal& q, std::span<const double> time,
+                   const TimeInterval& interval, UntilParts& parts, Signal& suffix, Signal& r) {
   const std::size_t n = p.size();
-  Signal untimed(n), p_before_window(n), q_in_window(n), q_in_past(n);
-  std::vector<std::size_t> queue;
-  unbounded_until(p, q, untimed);
-  auto first = [&](std::size_t i) { return std::max(windows.begin[i], i); };
+  unbounded_until(p, q, parts.untimed);
+  WindowCursor before(time, interval), within(time, interval), past(time, interval),
+      merge(time, interval);
   sliding_extreme(
-      p, [&](std::size_t i) { return std::pair(i, first(i)); }, kInfinity, std::less<double>(),
-      p_before_window, queue);
+      p, [&](std::size_t i) { return std::pair(i, std::max(before(i).first, i)); }, kInfinity,
+      Minimum(), parts.p_before_window, suffix);
   sliding_extreme(
-      q, [&](std::size_t i) { return std::pair(first(i), windows.end[i]); }, -kInfinity,
-      std::greater<double>(), q_in_window, queue);
+      q,
+      [&](std::size_t i) {
+        const auto [begin, end] = within(i);
+        return std::pair(std::max(begin, i), end);
+      },
+      -kInfinity, Maximum(), parts.q_in_window, suffix);
   sliding_extreme(
-      q, [&](std::size_t i) { return std::pair(windows.begin[i], std::min(windows.end[i], i)); },
-      -kInfinity, std::greater<double>(), q_in_past, queue);
+      q,
+      [&](std::size_t i) {
+        const auto [begin, end] = past(i);
+        return std::pair(begin, std::min(end, i));
+      },
+      -kInfinity, Maximum(), parts.q_in_past, suffix);
   for (std::size_t i = 0; i < n; ++i) {
-    const double from_first = first(i) < n ? untimed[first(i)] : -kInfinity;
-    const double future = std::min({p_before_window[i], q_in_window[i], from_first});
-    r[i] = std::max(q_in_past[i], future);
+    const std::size_t first = std::max(merge(i).first, i);
+    const double from_first = first < n ? parts.untimed[first] : -kInfinity;
+    const double future = std::min({parts.p_before_window[i], parts.q_in_window[i], from_first});
+    r[i] = std::max(parts.q_in_past[i], future);
   }
 }
 
@@ -245,10 +232,15 @@ struct Operand {
 };
 
 // Evaluates formulas bottom-up; optionally keeps every node's signal for explanations. Buffers
-// freed by one node are reused by the next, so a formula costs few allocations.
+// freed by one node are reused by the next, and kept for the thread's next evaluation
+// (signal_pool.hpp), so a repeat evaluation allocates little more than its result.
 class Evaluator {
  public:
-  Evaluator(const SignalSource& source, bool keep) : source_(source), keep_(keep) {}
+  Evaluator(const SignalSource& source, bool keep)
+      : source_(source), keep_(keep), spare_(take_spare_signals()) {}
+  ~Evaluator() { keep_spare_signals(std::move(spare_)); }
+  Evaluator(const Evaluator&) = delete;
+  Evaluator& operator=(const Evaluator&) = delete;
 
   // Samples from `observed` on are not the trace's but what might come after it: every atom
   // there is as favourable to the whole formula as it can be (robustness_if_continued).
@@ -271,12 +263,36 @@ class Evaluator {
  private:
   std::size_t size() const { return source_.time.size(); }
 
-  Signal acquire() {
-    if (spare_.empty()) return Signal(size());
-    Signal buffer = std::move(spare_.back());
-    spare_.pop_back();
+  // The smallest spare buffer with room for `room` samples, or spare_.end().
+  SpareSignals::iterator spare_with_room(std::size_t room) {
+    auto best = spare_.end();
+    for (auto spare = spare_.begin(); spare != spare_.end(); ++spare)
+      if (spare->capacity() >= room &&
+          (best == spare_.end() || spare->capacity() < best->capacity()))
+        best = spare;
+    return best;
+  }
+
+  // A buffer of size() samples with room for `room` (van Herk's padded signals are longer than
+  // the trace): the smallest spare with that room, so that the long ones stay for padded signals;
+  // a new one when none has it.
+  Signal acquire(std::size_t room = 0) {
+    room = std::max(room, size());
+    Signal buffer;
+    if (const auto best = spare_with_room(room); best != spare_.end()) {
+      buffer = std::move(*best);
+      spare_.erase(best);
+    }
+    buffer.reserve(room);
     buffer.resize(size());
     return buffer;
+  }
+
+  // The room van_herk_extreme's padded and suffix signals need.
+  std::size_t padded_room(Offsets offsets) const {
+    const auto n = static_cast<std::ptrdiff_t>(size());
+    const std::ptrdiff_t width = std::min(offsets.last, n) - std::max(offsets.first, -n) + 1;
+    return size() + static_cast<std::size_t>(std::max<std::ptrdiff_t>(width, 1)) - 1;
   }
 
   void release(Signal&& buffer) {
@@ -334,7 +350,14 @@ class Evaluator {
     if (!source_.leaf) throw OracleError(t.location, "no signal source for '" + t.name + "'");
     SignalValues values = source_.leaf(t);
     SCENFUZZ_DEMAND(values.values.size() == size());
-    return {std::move(values.values), 0, false, values.discrete};
+    // Copied into a kept buffer while one is long enough, and the leaf's own freed at once: malloc
+    // hands that still-mapped block to the next leaf. Kept, it would join the kept buffers, and
+    // every evaluation would take as many new ones as it has leaves.
+    if (spare_with_room(size()) == spare_.end())
+      return {std::move(values.values), 0, false, values.discrete};
+    Signal kept = acquire();
+    std::copy(values.values.begin(), values.values.end(), kept.begin());
+    return {std::move(kept), 0, false, values.discrete};
   }
 
   [[noreturn]] void not_a_number(const Formula& comparison, std::size_t sample) {
@@ -409,7 +432,10 @@ class Evaluator {
   // window [i + lo, i + hi], p before it is [i, i + lo) and the past part [i + lo, i - 1].
   void until_over_offsets(const Signal& p, const Signal& q, Offsets window, Signal& r) {
     const std::size_t n = size();
-    Signal padded = acquire(), suffix = acquire(), extreme_p = acquire(), extreme_q = acquire();
+    const std::size_t room = std::max(
+        {padded_room({0, window.first - 1}), padded_room(window), padded_room({0, window.last})});
+    Signal padded = acquire(room), suffix = acquire(room), extreme_p = acquire(),
+           extreme_q = acquire();
     unbounded_until(p, q, r);  // read at i + lo >= i (or at i) before r[i] is written
     if (window.first >= 0) {
       const auto lo = static_cast<std::size_t>(window.first);
@@ -425,6 +451,16 @@ class Evaluator {
         r[i] = std::max(extreme_p[i], std::min(extreme_q[i], r[i]));
     }
     for (Signal* buffer : {&padded, &suffix, &extreme_p, &extreme_q}) release(std::move(*buffer));
+  }
+
+  void bounded_until_over_cursors(const Signal& p, const Signal& q, const TimeInterval& interval,
+                                  Signal& r) {
+    UntilParts parts{acquire(), acquire(), acquire(), acquire()};
+    Signal suffix = acquire();
+    bounded_until(p, q, source_.time, interval, parts, suffix, r);
+    for (Signal* buffer :
+         {&parts.untimed, &parts.p_before_window, &parts.q_in_window, &parts.q_in_past, &suffix})
+      release(std::move(*buffer));
   }
 
   // An atom's robustness past the observed samples: +inf where it is counted as it stands, -inf
@@ -472,8 +508,9 @@ class Evaluator {
         const bool always = f.kind == FormulaKind::always;
         if (!f.interval) return always ? suffix_min(std::move(x)) : suffix_max(std::move(x));
         Signal out = acquire();
-        if (const std::optional<Offsets> offsets = constant_offsets(source_.time, *f.interval)) {
-          Signal padded = acquire(), suffix = acquire();
+        if (const std::optional<Offsets> offsets =
+                constant_window_offsets(source_.time, *f.interval)) {
+          Signal padded = acquire(padded_room(*offsets)), suffix = acquire(padded_room(*offsets));
           if (always)
             van_herk_extreme(x, *offsets, kInfinity, Minimum(), out, padded, suffix);
           else
@@ -482,10 +519,12 @@ class Evaluator {
           release(std::move(suffix));
         } else {
           WindowCursor window(source_.time, *f.interval);
+          Signal suffix = acquire();
           if (always)
-            sliding_extreme(x, window, kInfinity, std::less<double>(), out, queue_);
+            sliding_extreme(x, window, kInfinity, Minimum(), out, suffix);
           else
-            sliding_extreme(x, window, -kInfinity, std::greater<double>(), out, queue_);
+            sliding_extreme(x, window, -kInfinity, Maximum(), out, suffix);
+          release(std::move(suffix));
         }
         release(std::move(x));
         return out;
@@ -503,10 +542,11 @@ class Evaluator {
         Signal r = acquire();
         if (!f.interval)
           unbounded_until(p, q, r);
-        else if (const std::optional<Offsets> offsets = constant_offsets(source_.time, *f.interval))
+        else if (const std::optional<Offsets> offsets =
+                     constant_window_offsets(source_.time, *f.interval))
           until_over_offsets(p, q, *offsets, r);
         else
-          bounded_until(p, q, windows_of(source_.time, f.interval), r);
+          bounded_until_over_cursors(p, q, *f.interval, r);
         release(std::move(p));
         release(std::move(q));
         return r;
@@ -520,8 +560,7 @@ class Evaluator {
   std::size_t observed_ = std::numeric_limits<std::size_t>::max();
   bool negated_ = false;
   std::unordered_map<const Formula*, Signal> kept_;
-  std::vector<Signal> spare_;
-  std::vector<std::size_t> queue_;  // the sliding windows' deque
+  SpareSignals spare_;  // buffers free for the next node
 };
 
 // Follows the value of `f` at `sample` down to the atom that gives it.

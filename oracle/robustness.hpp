@@ -1,7 +1,8 @@
 // Quantitative STL semantics over sampled signals (DESIGN.md "Semantics", RTAMT's discrete-time
 // conventions): the robustness of a formula at every sample, computed bottom-up with one
-// linear-time pass per operator (monotone-deque windows for bounded G and F, a backward pass for
-// unbounded U, the Donze-Ferrere-Maler decomposition for bounded U).
+// linear-time pass per operator (two-stack sliding windows for bounded G and F, van Herk /
+// Gil-Werman where the sampling is uniform, a backward pass for unbounded U, the
+// Donze-Ferrere-Maler decomposition for bounded U).
 //
 // The oracle knows numbers, enumeration words, times of day, arithmetic and the operators; what a
 // named signal means (a CSV column, `dis(a, b)` over a simulated trace, ...) comes from a

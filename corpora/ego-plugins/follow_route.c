@@ -9,6 +9,10 @@
  *   is within 2 m of the route's centre line (the intelligent driver model).
  * - Stopping: at a red light's line, at a yellow one's when there is room, at a stop sign's line
  *   (then on after standing 1 s), at the target, and at the end of a route that ends.
+ * - Signals (ABI version 2): the indicator towards a turn of the route (its heading turning by
+ *   more than 30 degrees within max(30 m, 3 s of travel) ahead) until the turn is nearly done;
+ *   low beams from dusk and in fog, fog lights in fog (0.2 and thicker), wipers in rain or snow.
+ *   scenfuzz adds the brake lights itself whenever the plugin brakes.
  *
  * Deterministic and without randomness, so config->seed is not needed here.
  * Build: gcc -std=c99 -shared -fPIC -O2 -Wall -I<repo>/physics/ego follow_route.c \
@@ -27,6 +31,10 @@
 #define STOP_MARGIN 0.5    /* m between the front bumper and a stop line */
 #define STOP_SIGN_WAIT 1.0 /* s standing at a stop sign before going on */
 #define PI 3.14159265358979323846
+#define INDICATE_DISTANCE 30.0 /* m: indicate at least this far before a turn */
+#define INDICATE_TIME 3.0      /* s: and at least this long before it */
+#define TURN_ANGLE 0.5236      /* rad (30 degrees): the route turns by more than this */
+#define THICK_FOG 0.2          /* environment.fog from which fog lights go on */
 
 typedef struct driver {
   scenfuzz_ego_config config;
@@ -45,6 +53,10 @@ static double wrap_angle(double angle) {
   while (angle < -PI) angle += 2.0 * PI;
   return angle;
 }
+
+/* Built against version 2 (the observation's object_signals and environment, the control's
+ * signals): scenfuzz tells create the version both speak, and this plugin needs its own. */
+uint32_t scenfuzz_ego_abi_version(void) { return SCENFUZZ_EGO_ABI_VERSION; }
 
 void* scenfuzz_ego_create(const scenfuzz_ego_config* config) {
   driver* self;
@@ -235,6 +247,31 @@ static double stop_sign_line(driver* self, const scenfuzz_observation* observati
   return distance;
 }
 
+/* The indicator towards the sharpest turn of the route within the indicating distance ahead. */
+static uint32_t turn_indicator(const scenfuzz_observation* observation, const double* arc) {
+  const double notice = fmax(INDICATE_DISTANCE, INDICATE_TIME * observation->ego.speed);
+  const double heading = observation->route[0].heading;
+  double sharpest = 0;
+  uint32_t i;
+  for (i = 1; i < observation->route_point_count && arc[i] <= notice; ++i) {
+    const double turn = wrap_angle(observation->route[i].heading - heading);
+    if (fabs(turn) > fabs(sharpest)) sharpest = turn;
+  }
+  if (sharpest > TURN_ANGLE) return SCENFUZZ_SIGNAL_LEFT_INDICATOR;
+  if (sharpest < -TURN_ANGLE) return SCENFUZZ_SIGNAL_RIGHT_INDICATOR;
+  return 0;
+}
+
+/* The lights and wipers the weather and the time of day ask for. */
+static uint32_t weather_signals(const scenfuzz_environment* environment) {
+  uint32_t signals = 0;
+  if (environment->darkness > 0 || environment->fog >= THICK_FOG)
+    signals |= SCENFUZZ_SIGNAL_LOW_BEAM;
+  if (environment->fog >= THICK_FOG) signals |= SCENFUZZ_SIGNAL_FOG_LIGHTS;
+  if (environment->rain > 0 || environment->snow > 0) signals |= SCENFUZZ_SIGNAL_WIPERS;
+  return signals;
+}
+
 int scenfuzz_ego_step(void* state, const scenfuzz_observation* observation,
                       scenfuzz_control* control) {
   driver* self = state;
@@ -246,12 +283,15 @@ int scenfuzz_ego_step(void* state, const scenfuzz_observation* observation,
   double max_acceleration =
       self->config.vehicle.max_acceleration > 0 ? self->config.vehicle.max_acceleration : 2.0;
 
+  control->version = SCENFUZZ_EGO_ABI_VERSION;
+  control->signals = weather_signals(&observation->environment);
   if (observation->route_point_count == 0) { /* nowhere to go: stop */
     control->acceleration = -self->comfortable_deceleration;
     control->steering_angle = 0;
     return 0;
   }
   route_arc_lengths(observation, arc);
+  control->signals |= turn_indicator(observation, arc);
   control->steering_angle = pure_pursuit(self, observation, fmax(5.0, 0.8 * speed));
 
   nearest_in_path(self, observation, arc, &gap, &other_speed);

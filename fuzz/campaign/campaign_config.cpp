@@ -324,7 +324,7 @@ struct Reader {
   }
 
   void read_seed_override(const toml::table& table, std::map<std::string, std::uint32_t>& lines) {
-    check_keys(table, "[[seed]]", {"path", "budget_share", "algo"});
+    check_keys(table, "[[seed]]", {"path", "budget_share", "algo", "scenario"});
     CampaignSeedOverride seed;
     const toml::node* path = table.get("path");
     if (path == nullptr) {
@@ -350,6 +350,8 @@ struct Reader {
       if (auto value = positive_number(*share, "seed.budget_share")) seed.budget_share = *value;
     }
     if (const toml::node* algo = table.get("algo")) seed.algorithm = algorithm(*algo, "seed.algo");
+    if (const toml::node* scenario = table.get("scenario"))
+      if (auto name = non_empty_string(*scenario, "seed.scenario")) seed.scenario = *name;
     config.seed_overrides.push_back(std::move(seed));
   }
 

@@ -30,7 +30,8 @@ struct CampaignSeedOverride {
   std::string path;  // relative to the campaign folder, normalised like CampaignConfig::seed_files
   double budget_share = 1;               // weight of its share of the budget; every other seed: 1
   std::optional<std::string> algorithm;  // instead of [search] algo
-  SourceLocation location;               // of its `path` value
+  std::string scenario;  // as --scenario: which of the file's scenarios it is (empty: its only one)
+  SourceLocation location;  // of its `path` value
 };
 
 struct CampaignConfig {

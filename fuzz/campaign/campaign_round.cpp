@@ -124,9 +124,9 @@ RoundEnd record(RoundContext& context, std::int64_t round, const CampaignSearchT
       context.err << "scenfuzz: error: " << files.error << "\n";
       return RoundEnd::failed;
     }
-    modes.push_back({seed.id, found.signature, found.spec, found.responsibility,
-                     files.scenario_file,
-                     replay_command(context.simulation, files.scenario_file, found.seed)});
+    modes.push_back(
+        {seed.id, found.signature, found.spec, found.responsibility, files.scenario_file,
+         replay_command(context.simulation, files.scenario_file, found.seed, seed.scenario)});
   }
   if (context.tmin && !minimise_new_modes(context, modes)) return RoundEnd::interrupted;
   const SearchRecord search = search_record(context, round, task, result);
@@ -205,10 +205,12 @@ class Workers {
 }  // namespace
 
 std::string replay_command(const SimulationCommandOptions& simulation,
-                           const std::string& scenario_file, std::uint64_t seed) {
+                           const std::string& scenario_file, std::uint64_t seed,
+                           const std::string& scenario) {
   std::string command = "scenfuzz run";
   for (const std::string& path : simulation.map_paths) command += " --map-path " + quoted(path);
   if (!simulation.ego_plugin.empty()) command += " --ego-plugin " + quoted(simulation.ego_plugin);
+  if (!scenario.empty()) command += " --scenario " + quoted(scenario);
   return command + " --seed " + std::to_string(seed) + " " + quoted(scenario_file);
 }
 

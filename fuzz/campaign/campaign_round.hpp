@@ -68,8 +68,10 @@ class RoundRecorder {
 RoundEnd run_round(RoundContext& context, std::int64_t round,
                    std::vector<CampaignSearchTask> tasks);
 
-// The command that replays a mode's representative scenario from the campaign folder.
+// The command that replays a mode's representative scenario from the campaign folder; `scenario`
+// names which of the file's scenarios it is (empty: its only one).
 std::string replay_command(const SimulationCommandOptions& simulation,
-                           const std::string& scenario_file, std::uint64_t seed);
+                           const std::string& scenario_file, std::uint64_t seed,
+                           const std::string& scenario = "");
 
 }  // namespace scenfuzz

@@ -24,6 +24,7 @@ FuzzCommandOptions search_command(const LoadedSeed& seed, const CampaignArm& arm
   options.resume = true;  // a search killed earlier continues from its journal
   options.quiet = true;
   options.simulation = simulation;
+  options.choice.scenario = seed.scenario;
   return options;
 }
 

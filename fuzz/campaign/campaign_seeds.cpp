@@ -30,7 +30,10 @@ std::optional<LoadedSeed> load_seed(const CampaignConfig& config,
                                     const std::string& path, bool& searchable, std::ostream& err) {
   LoadedSeed seed;
   seed.path = path;
-  std::optional<ScenarioFile> input = read_scenario(path, "search", err);
+  const CampaignSeedOverride* own = override_of(config, path);
+  if (own) seed.scenario = own->scenario;
+  std::optional<ScenarioFile> input =
+      read_scenario(path, "search", err, ScenarioChoiceOptions{seed.scenario});
   if (!input) return std::nullopt;
   if (searched_by_mutation(input->scenario))
     input->scenario =
@@ -64,7 +67,6 @@ std::optional<LoadedSeed> load_seed(const CampaignConfig& config,
       err << "scenfuzz: error: " << *problem << "\n";
       return std::nullopt;
     }
-  const CampaignSeedOverride* own = override_of(config, path);
   seed.algorithm = own && own->algorithm ? *own->algorithm : config.search.algorithm;
   seed.budget_share = own ? own->budget_share : 1;
   return seed;

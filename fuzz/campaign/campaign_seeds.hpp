@@ -21,6 +21,7 @@ struct LoadedSeed {
   std::string path;          // as in the config: relative to the campaign folder
   std::string content_hash;  // of the bytes read
   std::string algorithm;     // [[seed]] algo, else [search] algo
+  std::string scenario;      // [[seed]] scenario: which of the file's scenarios (--scenario)
   double budget_share = 1;
   std::int64_t id = 0;  // in the database; set once it is open
   // Behind pointers: the evaluator keeps references to the file and the scenario.

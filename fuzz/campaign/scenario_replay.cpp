@@ -136,11 +136,31 @@ std::vector<std::uint64_t> replay_seeds(std::uint64_t own, int count) {
   return seeds;
 }
 
+std::string finding_scenario(std::string_view scenario_text) {
+  std::istringstream lines{std::string(scenario_text)};
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.find("replay: scenfuzz run ") == std::string::npos) continue;
+    const std::string flag = " --scenario ";
+    const std::size_t at = line.find(flag);
+    if (at == std::string::npos) return "";
+    // A scenario's name is a variable's: no spaces; shell_quote may have quoted it.
+    std::string name = line.substr(at + flag.size());
+    name = name.substr(0, name.find(' '));
+    if (name.size() >= 2 && name.front() == '\'' && name.back() == '\'')
+      name = name.substr(1, name.size() - 2);
+    return name;
+  }
+  return "";
+}
+
 ReplayOutcome replay_scenario(const ReplayTarget& target, const ReplaySettings& settings) {
   try {
     std::ostringstream diagnostics;
+    std::optional<SourceFile> file = read_source_file(target.scenario.string());
+    const ScenarioChoiceOptions choice{file ? finding_scenario(file->text()) : ""};
     std::optional<ScenarioFile> input =
-        read_scenario(target.scenario.string(), "replay", diagnostics);
+        read_scenario(target.scenario.string(), "replay", diagnostics, choice);
     if (!input) return {0, 0, without_prefix(trimmed(diagnostics.str()))};
     apply_scenario_overrides(settings.simulation, input->scenario);
     std::string error;

@@ -42,6 +42,10 @@ struct ReplayTarget {
 // (a scenario written by hand).
 std::uint64_t finding_seed(std::string_view scenario_text);
 
+// Which of the file's scenarios the finding is of: the `--scenario NAME` of the same line; empty
+// when there is none (a file of one scenario).
+std::string finding_scenario(std::string_view scenario_text);
+
 // The perception seeds of a replay: the finding's own first, so that a failure that does not
 // depend on the noise replays exactly, then derive_seed(own, 1), derive_seed(own, 2), ...
 std::vector<std::uint64_t> replay_seeds(std::uint64_t own, int count);

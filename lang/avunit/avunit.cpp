@@ -15,17 +15,19 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 }  // namespace
 
-ParseResult parse(const SourceFile& file) {
+ParseResult parse(const SourceFile& file, const ParseOptions& options) {
   ParseResult result;
   SourceLanguage language =
       ends_with(file.path(), ".scenest") ? SourceLanguage::scenest : SourceLanguage::avunit;
   // Each statement is elaborated as soon as it is parsed, and its tokens and syntax then let go:
   // memory grows with what the file's names are bound to, not with its text.
   TokenReader reader(file, result.diagnostics);
-  StatementElaborator elaborator(language, result.diagnostics);
+  StatementElaborator elaborator(language, result.diagnostics,
+                                 ScenarioRequest{options.scenario, options.survey});
   parse_statements(reader, result.diagnostics,
                    [&](const Statement& statement) { elaborator.add(statement); });
   result.scenario = elaborator.finish();
+  result.scenarios = elaborator.scenario_names();
   return result;
 }
 

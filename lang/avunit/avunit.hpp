@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "lang/diagnostic.hpp"
 #include "lang/scenario.hpp"
@@ -15,12 +16,24 @@ namespace scenfuzz::avunit {
 struct ParseResult {
   ScenarioTemplate scenario;  // complete only when there are no errors
   Diagnostics diagnostics;
+  // The scenarios the file executes (`Trace t = EXE(NAME);`), each once, in file order; when it
+  // executes none, those it creates. `scenario` is the chosen one of them.
+  std::vector<std::string> scenarios;
 
   bool ok() const { return !diagnostics.has_errors(); }
 };
 
+// Which of a file's scenarios to build (lang/avunit/scenario_choice.hpp).
+struct ParseOptions {
+  // The scenario `--scenario NAME` names; empty: the file must execute only one.
+  std::string scenario;
+  // Several scenarios without a name are fine (`scenfuzz check`): every one is checked, the first
+  // is built, and a note lists them.
+  bool survey = false;
+};
+
 // Parses and resolves a whole file. Never throws on bad input: every problem is a diagnostic.
-ParseResult parse(const SourceFile& file);
+ParseResult parse(const SourceFile& file, const ParseOptions& options = {});
 
 struct FormulaParseResult {
   std::optional<Formula> formula;  // set when there are no errors

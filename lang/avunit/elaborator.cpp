@@ -8,10 +8,11 @@
 
 #include "lang/avunit/builtins.hpp"
 #include "lang/avunit/item.hpp"
+#include "lang/avunit/scenario_choice.hpp"
+#include "lang/avunit/template_checks.hpp"
 #include "lang/avunit/traffic_extensions.hpp"
 #include "lang/edit_distance.hpp"
 #include "lang/number_format.hpp"
-#include "lang/walk_values.hpp"
 
 namespace scenfuzz::avunit {
 
@@ -140,8 +141,8 @@ Item number_item(Value value, SourceLocation location, ItemKind kind = ItemKind:
 
 class Elaborator {
  public:
-  Elaborator(Diagnostics& diagnostics, SourceLanguage language)
-      : diagnostics_(diagnostics), language_(language) {}
+  Elaborator(Diagnostics& diagnostics, SourceLanguage language, ScenarioRequest request = {})
+      : diagnostics_(diagnostics), language_(language), request_(std::move(request)) {}
 
   // A lone formula whose unknown names are signals (`scenfuzz stl`: columns of a CSV file).
   std::optional<Formula> lone_formula(const Syntax& syntax) {
@@ -163,6 +164,8 @@ class Elaborator {
   }
 
   ScenarioTemplate finish() { return build_template(); }
+
+  const std::vector<std::string>& scenario_names() const { return scenario_names_; }
 
  private:
   // ---- reporting -------------------------------------------------------------------------
@@ -237,15 +240,7 @@ class Elaborator {
         mismatch(scenario, "a scenario made by CreateScenario{...}");
       } else {
         auto parts = payload_of<std::shared_ptr<const ScenarioParts>>(scenario);
-        if (traced_ && traced_ != parts) {
-          fail(value.location,
-               "a file describes one scenario, but this trace executes a "
-               "different one than trace '" +
-                   trace_name_ + "'");
-        } else if (!traced_) {
-          traced_ = parts;
-          trace_name_ = statement.name;
-        }
+        traces_.push_back(TraceBinding{statement.name, parts, statement.name_location});
         trace = make_item(ItemKind::trace, statement.name_location, parts);
         trace.word = statement.name;
       }
@@ -275,6 +270,7 @@ class Elaborator {
                     ? statement.value.text
                     : "spec" + std::to_string(specs_.size() + 1);
     specs_.push_back(std::move(spec));
+    spec_parts_.push_back(payload_of<std::shared_ptr<const ScenarioParts>>(found->second));
   }
 
   // ---- expressions -----------------------------------------------------------------------
@@ -1649,121 +1645,93 @@ class Elaborator {
 
   // ---- the template ----------------------------------------------------------------------
 
-  ScenarioTemplate build_template() {
+  // A scenario the file executes (or, executing none, creates), with how a user names it.
+  struct Candidate {
+    std::shared_ptr<const ScenarioParts> parts;
+    ScenarioCandidate described;
+  };
+
+  // The first variable, by name, bound to the scenario `parts` ("" when none is).
+  std::string variable_of(const std::shared_ptr<const ScenarioParts>& parts) const {
+    for (const auto& [name, item] : variables_)
+      if (item.kind == ItemKind::scenario &&
+          *std::get<Boxed<std::shared_ptr<const ScenarioParts>>>(item.payload) == parts)
+        return name;
+    return "";
+  }
+
+  // Each executed scenario once, in the order of its first trace; with no trace, every scenario
+  // the file creates.
+  std::vector<Candidate> candidates() const {
+    std::vector<Candidate> found;
+    auto entry = [&](const std::shared_ptr<const ScenarioParts>& parts) -> Candidate& {
+      for (Candidate& candidate : found)
+        if (candidate.parts == parts) return candidate;
+      found.push_back(Candidate{parts, {variable_of(parts), {}, parts->location}});
+      return found.back();
+    };
+    for (const TraceBinding& trace : traces_) {
+      ScenarioCandidate& described = entry(trace.parts).described;
+      if (described.traces.empty()) described.location = trace.location;
+      if (described.name.empty()) described.name = trace.name;
+      described.traces.push_back(trace.name);
+    }
+    if (traces_.empty())
+      for (const auto& parts : scenarios_) entry(parts);
+    return found;
+  }
+
+  // One candidate as a template: its parts, the specs asserted on its traces, every parameter.
+  ScenarioTemplate template_of(const Candidate& candidate) const {
+    const ScenarioParts& parts = *candidate.parts;
     ScenarioTemplate result;
     result.language = language_;
-    std::shared_ptr<const ScenarioParts> parts = traced_;
-    if (!parts && scenarios_.size() == 1) parts = scenarios_.front();
-    if (!parts && scenarios_.size() > 1) {
-      std::set<const ScenarioParts*> distinct;
-      for (const auto& scenario : scenarios_) distinct.insert(scenario.get());
-      if (distinct.size() > 1)
-        diagnostics_.error(scenarios_[1]->location,
-                           "this file creates several scenarios but executes none: choose one "
-                           "with 'Trace trace = EXE(scenario);'");
-      parts = scenarios_.front();
-    }
-    if (parts) {
-      result.has_scenario = true;
-      result.map = parts->map;
-      result.ego = parts->ego;
-      result.vehicles = parts->vehicles;
-      result.pedestrians = parts->pedestrians;
-      result.obstacles = parts->obstacles;
-      result.environment = parts->environment;
-      result.traffic = parts->traffic;
-      result.npc_behaviour = parts->npc_behaviour;
-      result.trace_name = trace_name_;
-      for (const auto& [name, item] : variables_)
-        if (item.kind == ItemKind::scenario &&
-            payload_of<std::shared_ptr<const ScenarioParts>>(item) == parts &&
-            (result.scenario_name.empty() || name < result.scenario_name))
-          result.scenario_name = name;
-      check_references(result);
-    }
-    result.specs = specs_;
+    result.has_scenario = true;
+    result.map = parts.map;
+    result.ego = parts.ego;
+    result.vehicles = parts.vehicles;
+    result.pedestrians = parts.pedestrians;
+    result.obstacles = parts.obstacles;
+    result.environment = parts.environment;
+    result.traffic = parts.traffic;
+    result.npc_behaviour = parts.npc_behaviour;
+    if (!candidate.described.traces.empty()) result.trace_name = candidate.described.traces.front();
+    result.scenario_name = variable_of(candidate.parts);
+    for (std::size_t i = 0; i < specs_.size(); ++i)
+      if (spec_parts_[i] == candidate.parts) result.specs.push_back(specs_[i]);
     result.parameters = parameters_;
-    name_parameters(result);
     return result;
   }
 
-  // Headings related to actors and specs reading actors need those actors in the scenario.
-  void check_references(const ScenarioTemplate& scenario) {
-    std::set<std::string> names;
-    auto add = [&](const std::string& name) { names.insert(name); };
-    add(scenario.ego.name);
-    for (const Actor& actor : scenario.vehicles) add(actor.name);
-    for (const Actor& actor : scenario.pedestrians) add(actor.name);
-    for (const Obstacle& obstacle : scenario.obstacles) add(obstacle.name);
-    auto check_state = [&](const State& state) {
-      if (state.heading && state.heading->relative_to &&
-          state.heading->relative_to->kind == Direction::Kind::actor &&
-          !names.count(state.heading->relative_to->actor))
-        diagnostics_.error(state.heading->relative_to->location,
-                           "the heading is related to '" + state.heading->relative_to->actor +
-                               "', which is not part of the scenario");
-    };
-    auto check_actor = [&](const Actor& actor) {
-      check_state(actor.initial);
-      for (const State& state : actor.motion.states) check_state(state);
-      if (actor.target) check_state(*actor.target);
-    };
-    check_actor(scenario.ego);
-    for (const Actor& actor : scenario.vehicles) check_actor(actor);
-    for (const Actor& actor : scenario.pedestrians) check_actor(actor);
-    for (const Spec& spec : specs_) check_formula(spec.formula, names);
-  }
-
-  void check_formula(const Formula& formula, const std::set<std::string>& names) {
-    for (const SpecTerm& term : formula.terms) check_term(term, names);
-    for (const Formula& operand : formula.operands) check_formula(operand, names);
-  }
-
-  void check_term(const SpecTerm& term, const std::set<std::string>& names) {
-    if (term.kind == TermKind::object && term.source != ObjectSource::ego &&
-        !names.count(term.name))
-      diagnostics_.error(term.location, "'" + term.name + "' is not part of the scenario that '" +
-                                            trace_name_ + "' executes");
-    for (const SpecTerm& operand : term.operands) check_term(operand, names);
-  }
-
-  // Names each parameter after the first slot that reads it, orders the parameters by that
-  // walk, and drops those nothing reads.
-  void name_parameters(ScenarioTemplate& scenario) {
-    std::vector<int> new_index(scenario.parameters.size(), -1);
-    std::vector<Parameter> ordered;
-    std::set<std::string> taken;
-    for_each_value(scenario, [&](Value& value, const std::string& path, const std::string& unit) {
-      std::vector<int> read;
-      collect_parameters(value, read);
-      for (int p : read) {
-        if (new_index[static_cast<std::size_t>(p)] >= 0) continue;
-        Parameter parameter = scenario.parameters[static_cast<std::size_t>(p)];
-        parameter.name = path;
-        for (int k = 2; !taken.insert(parameter.name).second; ++k)
-          parameter.name = path + "#" + std::to_string(k);
-        if (parameter.unit.empty()) parameter.unit = unit;
-        if (unit == "deg" || unit == "rad") parameter.kind = ParameterKind::angle;
-        new_index[static_cast<std::size_t>(p)] = static_cast<int>(ordered.size());
-        ordered.push_back(std::move(parameter));
-      }
-    });
-    if (scenario.has_scenario)
-      for (std::size_t p = 0; p < new_index.size(); ++p)
-        if (new_index[p] < 0)
-          diagnostics_.warning(scenario.parameters[p].location,
-                               "this range is used by neither the scenario nor a specification, "
-                               "so it is not a search dimension");
-    for_each_value(scenario, [&](Value& value, const std::string&, const std::string&) {
-      renumber(value, new_index);
-    });
-    scenario.parameters = std::move(ordered);
-  }
-
-  static void renumber(Value& value, const std::vector<int>& new_index) {
-    if (value.op == ValueOp::parameter)
-      value.parameter = new_index[static_cast<std::size_t>(value.parameter)];
-    for (Value& operand : value.operands) renumber(operand, new_index);
+  ScenarioTemplate build_template() {
+    const std::vector<Candidate> found = candidates();
+    std::vector<ScenarioCandidate> described;
+    for (const Candidate& candidate : found) {
+      described.push_back(candidate.described);
+      scenario_names_.push_back(candidate.described.name);
+    }
+    ScenarioRequest request = request_;
+    request.executed = !traces_.empty();
+    const std::optional<std::size_t> chosen = choose_scenario(described, request, diagnostics_);
+    // Every scenario is checked, chosen or not; a range only another scenario reads is no
+    // "unused range".
+    std::vector<ScenarioTemplate> templates;
+    std::vector<bool> read_elsewhere(parameters_.size(), false);
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      templates.push_back(template_of(found[i]));
+      check_references(templates.back(), diagnostics_);
+      if (chosen != i) mark_read_parameters(templates.back(), read_elsewhere);
+    }
+    ScenarioTemplate result;
+    if (chosen) {
+      result = std::move(templates[*chosen]);
+    } else {
+      result.language = language_;
+      result.parameters = parameters_;
+      if (found.empty()) result.specs = specs_;
+    }
+    name_parameters(result, read_elsewhere, diagnostics_);
+    return result;
   }
 
   Diagnostics& diagnostics_;
@@ -1775,20 +1743,33 @@ class Elaborator {
   std::vector<std::string> names_;
   std::vector<Parameter> parameters_;
   std::vector<std::shared_ptr<const ScenarioParts>> scenarios_;
-  std::shared_ptr<const ScenarioParts> traced_;
-  std::string trace_name_;
+  // A `Trace name = EXE(scenario);`: which scenario the trace's specs judge.
+  struct TraceBinding {
+    std::string name;
+    std::shared_ptr<const ScenarioParts> parts;
+    SourceLocation location;
+  };
+  ScenarioRequest request_;
+  std::vector<TraceBinding> traces_;
+  std::vector<std::string> scenario_names_;
   std::string current_trace_;
   std::vector<Spec> specs_;
+  std::vector<std::shared_ptr<const ScenarioParts>> spec_parts_;  // the scenario each spec judges
 };
 
-StatementElaborator::StatementElaborator(SourceLanguage language, Diagnostics& diagnostics)
-    : elaborator_(std::make_unique<Elaborator>(diagnostics, language)) {}
+StatementElaborator::StatementElaborator(SourceLanguage language, Diagnostics& diagnostics,
+                                         ScenarioRequest request)
+    : elaborator_(std::make_unique<Elaborator>(diagnostics, language, std::move(request))) {}
 
 StatementElaborator::~StatementElaborator() = default;
 
 void StatementElaborator::add(const Statement& statement) { elaborator_->add(statement); }
 
 ScenarioTemplate StatementElaborator::finish() { return elaborator_->finish(); }
+
+const std::vector<std::string>& StatementElaborator::scenario_names() const {
+  return elaborator_->scenario_names();
+}
 
 std::optional<Formula> elaborate_lone_formula(const Syntax& syntax, Diagnostics& diagnostics) {
   return Elaborator(diagnostics, SourceLanguage::avunit).lone_formula(syntax);

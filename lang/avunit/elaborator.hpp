@@ -5,8 +5,10 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
+#include "lang/avunit/scenario_choice.hpp"
 #include "lang/avunit/syntax.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/scenario.hpp"
@@ -19,7 +21,9 @@ class Elaborator;
 // trees need not all be held at once: only what its names are bound to.
 class StatementElaborator {
  public:
-  StatementElaborator(SourceLanguage language, Diagnostics& diagnostics);
+  // `request` chooses the scenario the template is built from when the file has several.
+  StatementElaborator(SourceLanguage language, Diagnostics& diagnostics,
+                      ScenarioRequest request = {});
   ~StatementElaborator();
   StatementElaborator(const StatementElaborator&) = delete;
   StatementElaborator& operator=(const StatementElaborator&) = delete;
@@ -27,6 +31,8 @@ class StatementElaborator {
   void add(const Statement& statement);
   // The template of all the statements added.
   ScenarioTemplate finish();
+  // After finish: the names of the scenarios the file executes (or, executing none, creates).
+  const std::vector<std::string>& scenario_names() const;
 
  private:
   std::unique_ptr<Elaborator> elaborator_;

@@ -35,6 +35,9 @@ class Trajectory {
   // (step_yaw_rate): a simulation step that samples the trajectory replaces it.
   KinematicState state_at(double t) const;
   const Polyline& path() const { return path_; }
+  // How far along the path the actor is at time t >= 0 (0 for a standing actor): its route
+  // distance, where the path was drawn along a lane route (the NPCs' indicators).
+  double distance_at(double t) const { return profile_.empty() ? 0 : profile_.at(t).s; }
   double duration() const;  // time to reach the end of the path (infinite if it never does)
   // The given speed points the actor cannot keep to (only with motion limits), by point.
   const std::vector<SpeedShortfall>& shortfalls() const { return shortfalls_; }

@@ -4,8 +4,13 @@
  * child process for each evaluation, so a plugin that crashes or hangs costs that evaluation
  * only. Every step (dt seconds of simulated time) the plugin gets an observation (its own
  * state, what its perception saw, the route ahead, the next traffic light and stop sign) and
- * returns a control (acceleration and front-wheel steering angle), which scenfuzz applies to
- * the ego with the kinematic bicycle model of its vehicle class.
+ * returns a control (acceleration and front-wheel steering angle, and from ABI version 2 the
+ * vehicle's signals), which scenfuzz applies to the ego with the kinematic bicycle model of its
+ * vehicle class.
+ *
+ * Versions: version 2 appended fields to scenfuzz_observation and scenfuzz_control and added the
+ * optional scenfuzz_ego_abi_version function; nothing before them moved, so a plugin built
+ * against version 1 runs unchanged (its signals read as off).
  *
  * All structs are plain C with fixed-size arrays so that they cross a pipe unchanged; all
  * quantities are SI (m, s, m/s, m/s^2, rad) in the map's ENU frame, headings counter-clockwise
@@ -19,9 +24,21 @@
 extern "C" {
 #endif
 
-#define SCENFUZZ_EGO_ABI_VERSION 1
+#define SCENFUZZ_EGO_ABI_VERSION 2
 #define SCENFUZZ_MAX_OBJECTS 64
 #define SCENFUZZ_ROUTE_POINTS 64
+
+/* The vehicle signals (version 2): bits of scenfuzz_control.signals and of
+ * scenfuzz_observation.object_signals. */
+#define SCENFUZZ_SIGNAL_LEFT_INDICATOR 0x001u
+#define SCENFUZZ_SIGNAL_RIGHT_INDICATOR 0x002u
+#define SCENFUZZ_SIGNAL_HAZARD_LIGHTS 0x004u /* both indicators flashing */
+#define SCENFUZZ_SIGNAL_HORN 0x008u
+#define SCENFUZZ_SIGNAL_LOW_BEAM 0x010u
+#define SCENFUZZ_SIGNAL_HIGH_BEAM 0x020u
+#define SCENFUZZ_SIGNAL_FOG_LIGHTS 0x040u
+#define SCENFUZZ_SIGNAL_WIPERS 0x080u
+#define SCENFUZZ_SIGNAL_BRAKE_LIGHTS 0x100u /* scenfuzz adds it whenever the ego brakes */
 
 typedef struct scenfuzz_vehicle {
   double length, width, wheelbase;
@@ -30,9 +47,11 @@ typedef struct scenfuzz_vehicle {
 } scenfuzz_vehicle;
 
 typedef struct scenfuzz_ego_config {
-  uint32_t abi_version; /* SCENFUZZ_EGO_ABI_VERSION */
-  double dt;            /* seconds per step */
-  uint64_t seed;        /* for any randomness the driver has: use it, so runs repeat */
+  /* The version both sides speak: the plugin's (scenfuzz_ego_abi_version, 1 when it does not
+   * export it), or scenfuzz's SCENFUZZ_EGO_ABI_VERSION if that is lower. */
+  uint32_t abi_version;
+  double dt;     /* seconds per step */
+  uint64_t seed; /* for any randomness the driver has: use it, so runs repeat */
   scenfuzz_vehicle vehicle;
   double target_x, target_y; /* where the ego must go; NaN when the scenario gives no target */
 } scenfuzz_ego_config;
@@ -70,6 +89,10 @@ enum scenfuzz_light {
   SCENFUZZ_LIGHT_GREEN = 2
 };
 
+typedef struct scenfuzz_environment {
+  double darkness, fog, rain, snow;
+} scenfuzz_environment;
+
 typedef struct scenfuzz_observation {
   scenfuzz_ego_state ego;
   uint32_t object_count; /* nearest first, at most SCENFUZZ_MAX_OBJECTS */
@@ -80,11 +103,22 @@ typedef struct scenfuzz_observation {
   int32_t light;             /* enum scenfuzz_light: the next signal on the route */
   double light_distance;     /* to its stop line; INFINITY when light is NONE */
   double stop_sign_distance; /* to the next stop sign's line on the route; INFINITY if none */
+  /* Version 2: the signals (SCENFUZZ_SIGNAL_*) of objects[i] as perceived, as late as the rest
+   * of it; 0 for pedestrians and obstacles. */
+  uint32_t object_signals[SCENFUZZ_MAX_OBJECTS];
+  /* Version 2: the weather and light of the run (the same every step), each in [0, 1]: 0 none
+   * (daylight), 1 the heaviest (night without street light). What a driver needs to choose its
+   * lights and wipers. */
+  scenfuzz_environment environment;
 } scenfuzz_observation;
 
 typedef struct scenfuzz_control {
   double acceleration;   /* m/s^2; negative brakes; clamped to the vehicle's limits */
   double steering_angle; /* rad, front wheel, positive left; clamped */
+  /* Version 2. scenfuzz zero-fills the control before each step, so a version 1 plugin, which
+   * writes only the fields above, leaves version 0: its signals are off. */
+  uint32_t version; /* the ABI version the plugin speaks: SCENFUZZ_EGO_ABI_VERSION */
+  uint32_t signals; /* SCENFUZZ_SIGNAL_* bits; read only when version >= 2 */
 } scenfuzz_control;
 
 /* Returns the driver's state, or NULL on failure (the evaluation is reported as failed). */
@@ -93,6 +127,9 @@ void* scenfuzz_ego_create(const scenfuzz_ego_config* config);
 int scenfuzz_ego_step(void* driver, const scenfuzz_observation* observation,
                       scenfuzz_control* control);
 void scenfuzz_ego_destroy(void* driver);
+/* Optional (version 2): the ABI version the plugin was built against, SCENFUZZ_EGO_ABI_VERSION.
+ * A plugin that does not export it is taken to speak version 1, and its config says 1. */
+uint32_t scenfuzz_ego_abi_version(void);
 
 #ifdef __cplusplus
 }

@@ -50,6 +50,8 @@ struct WorldObject {
   double x = 0, y = 0, heading = 0, speed = 0;
   double length = 0, width = 0;
   bool reversing = false;  // moving against its heading (KinematicState::reversing)
+  // The signals it shows (a vehicle's; 0 for others): perceived with the rest of it, as late.
+  VehicleSignals signals = 0;
 };
 
 class Perception {

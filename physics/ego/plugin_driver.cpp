@@ -22,6 +22,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -55,6 +56,30 @@ struct StepReply {
 using CreateFunction = void* (*)(const scenfuzz_ego_config*);
 using StepFunction = int (*)(void*, const scenfuzz_observation*, scenfuzz_control*);
 using DestroyFunction = void (*)(void*);
+using VersionFunction = uint32_t (*)(void);
+
+// The control's signal bits are VehicleSignals' as they are: a plugin's word is stored as is.
+static_assert(SCENFUZZ_SIGNAL_LEFT_INDICATOR == vehicle_signal::left_indicator);
+static_assert(SCENFUZZ_SIGNAL_RIGHT_INDICATOR == vehicle_signal::right_indicator);
+static_assert(SCENFUZZ_SIGNAL_HAZARD_LIGHTS == vehicle_signal::hazard_lights);
+static_assert(SCENFUZZ_SIGNAL_HORN == vehicle_signal::horn);
+static_assert(SCENFUZZ_SIGNAL_LOW_BEAM == vehicle_signal::low_beam);
+static_assert(SCENFUZZ_SIGNAL_HIGH_BEAM == vehicle_signal::high_beam);
+static_assert(SCENFUZZ_SIGNAL_FOG_LIGHTS == vehicle_signal::fog_lights);
+static_assert(SCENFUZZ_SIGNAL_WIPERS == vehicle_signal::wipers);
+static_assert(SCENFUZZ_SIGNAL_BRAKE_LIGHTS == vehicle_signal::brake_lights);
+// Version 2 only appended fields: version 1 plugins find theirs where they were.
+static_assert(offsetof(scenfuzz_control, version) == 2 * sizeof(double));
+static_assert(offsetof(scenfuzz_observation, object_signals) >=
+              offsetof(scenfuzz_observation, stop_sign_distance) + sizeof(double));
+
+// The version the plugin and scenfuzz both speak: the plugin's own (its optional
+// scenfuzz_ego_abi_version; 1 without it), or scenfuzz's if that is lower.
+uint32_t agreed_version(void* handle) {
+  const auto version = reinterpret_cast<VersionFunction>(dlsym(handle, "scenfuzz_ego_abi_version"));
+  const uint32_t plugin = version != nullptr ? version() : 1;
+  return std::min<uint32_t>(std::max<uint32_t>(plugin, 1), SCENFUZZ_EGO_ABI_VERSION);
+}
 
 Clock::time_point deadline_after(double seconds) {
   return Clock::now() +
@@ -232,7 +257,9 @@ void isolate_child(int socket_fd, pid_t parent) {
   const auto step = reinterpret_cast<StepFunction>(symbols[1]);
   const auto destroy = reinterpret_cast<DestroyFunction>(symbols[2]);
 
-  void* driver = create(&config);
+  scenfuzz_ego_config agreed = config;
+  agreed.abi_version = agreed_version(handle);
+  void* driver = create(&agreed);
   if (driver == nullptr) {
     start.status = StartStatus::create_failed;
     send_or_leave(socket_fd, &start, sizeof start);

@@ -447,16 +447,23 @@ bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionSt
       conflicts_.insert(conflicts_.end(), more.begin(), more.end());
     }
     std::sort(conflicts_.begin(), conflicts_.end());
+    // Vehicles up to 20 m long near the outline are covered (the test below).
+    junction_lanes_ = junction_neighbourhood(map_, stretch.junction, 10);
   }
+  const auto& outline = map_.junctions()[stretch.junction].outline;
   for (const WorldObject& object : input.objects) {
     if (object.kind != TraceActorKind::vehicle) continue;
     const double dx = object.x - input.ego.x, dy = object.y - input.ego.y;
     if (dx * dx + dy * dy > kJunctionWatch * kJunctionWatch) continue;
     // Most are outside the junction's outline: no lane search for them.
-    const auto& outline = map_.junctions()[stretch.junction].outline;
     if (!outline.empty() && !near_polygon({object.x, object.y}, outline, object.length / 2))
       continue;
-    auto on = project_to_lane(map_, {object.x, object.y}, object.heading);
+    // The junction's own segments answer as project_to_lane would, without its map-wide search;
+    // a vehicle outside them (a very long one, a junction without an outline) searches the map.
+    const MapPoint at{object.x, object.y};
+    auto on = covers(junction_lanes_, at) && std::isfinite(object.heading)
+                  ? lane_containing(map_, junction_lanes_, at, object.heading)
+                  : project_to_lane(map_, at, object.heading);
     if (on && on->inside && std::binary_search(conflicts_.begin(), conflicts_.end(), on->lane))
       return true;
   }

@@ -22,6 +22,7 @@
 #include "physics/ego/perception.hpp"
 #include "physics/ego/route_tracker.hpp"
 #include "physics/ego/sight_distance.hpp"
+#include "physics/map/lane_neighbourhood.hpp"
 
 namespace scenfuzz {
 
@@ -139,6 +140,7 @@ class ReferenceDriver {
   // junction stretch it last looked at, and since when the ego stands held at its entry.
   double conflicts_entry_ = -1;
   std::vector<LaneIndex> conflicts_;
+  LaneNeighbourhood junction_lanes_;  // the lane segments around that stretch's junction
   double held_since_junction_ = -1;
   double released_entry_ = -1;
   double next_glance_ = 0;        // s: when crossing_inside is looked at again

@@ -2,6 +2,7 @@
 #include "physics/map/lane_conflicts.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace scenfuzz {
 
@@ -16,32 +17,64 @@ bool segments_cross(MapPoint a, MapPoint b, MapPoint c, MapPoint d) {
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
 }
 
+struct Box {
+  MapPoint low, high;
+};
+
+bool boxes_meet(const Box& a, const Box& b) {
+  return a.low.x <= b.high.x && b.low.x <= a.high.x && a.low.y <= b.high.y && b.low.y <= a.high.y;
+}
+
+Box box_of(const std::vector<MapPoint>& points, std::size_t from, std::size_t to) {
+  Box box{points[from], points[from]};
+  for (std::size_t k = from + 1; k <= to; ++k) {
+    box.low = {std::min(box.low.x, points[k].x), std::min(box.low.y, points[k].y)};
+    box.high = {std::max(box.high.x, points[k].x), std::max(box.high.y, points[k].y)};
+  }
+  return box;
+}
+
+// Segments per run: junction lanes are sampled finely (hundreds of segments), and most pairs of
+// them meet, if at all, in one place.
+constexpr std::size_t kRun = 8;
+
+// The boxes of a line's runs of kRun segments (run r: segments r * kRun .. r * kRun + kRun - 1).
+std::vector<Box> run_boxes(const std::vector<MapPoint>& points) {
+  const std::size_t segments = points.size() - 1;
+  std::vector<Box> runs;
+  runs.reserve((segments + kRun - 1) / kRun);
+  for (std::size_t first = 0; first < segments; first += kRun)
+    runs.push_back(box_of(points, first, std::min(first + kRun, segments)));
+  return runs;
+}
+
+// Segments whose boxes do not meet cannot cross (the same answer, without the cross products for
+// most pairs): only pairs of runs whose boxes meet have their segments compared.
+bool runs_cross(const std::vector<MapPoint>& p, const std::vector<Box>& p_runs,
+                const std::vector<MapPoint>& q, const std::vector<Box>& q_runs) {
+  for (std::size_t a = 0; a < p_runs.size(); ++a) {
+    for (std::size_t b = 0; b < q_runs.size(); ++b) {
+      if (!boxes_meet(p_runs[a], q_runs[b])) continue;
+      for (std::size_t i = a * kRun; i < std::min((a + 1) * kRun, p.size() - 1); ++i) {
+        const Box mine = box_of(p, i, i + 1);
+        if (!boxes_meet(mine, q_runs[b])) continue;
+        for (std::size_t j = b * kRun; j < std::min((b + 1) * kRun, q.size() - 1); ++j)
+          if (boxes_meet(mine, box_of(q, j, j + 1)) &&
+              segments_cross(p[i], p[i + 1], q[j], q[j + 1]))
+            return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 bool lines_cross(const Polyline& first, const Polyline& second) {
   const auto& p = first.points();
   const auto& q = second.points();
-  if (q.empty()) return false;
-  // Segments that cannot reach the other line's bounding box cannot cross it (the same answer,
-  // without the cross products for most pairs).
-  MapPoint low = q.front(), high = q.front();
-  for (MapPoint point : q) {
-    low = {std::min(low.x, point.x), std::min(low.y, point.y)};
-    high = {std::max(high.x, point.x), std::max(high.y, point.y)};
-  }
-  auto apart = [](MapPoint a, MapPoint b, MapPoint lo, MapPoint hi) {
-    return std::max(a.x, b.x) < lo.x || std::min(a.x, b.x) > hi.x || std::max(a.y, b.y) < lo.y ||
-           std::min(a.y, b.y) > hi.y;
-  };
-  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-    if (apart(p[i], p[i + 1], low, high)) continue;
-    const MapPoint lo{std::min(p[i].x, p[i + 1].x), std::min(p[i].y, p[i + 1].y)};
-    const MapPoint hi{std::max(p[i].x, p[i + 1].x), std::max(p[i].y, p[i + 1].y)};
-    for (std::size_t j = 0; j + 1 < q.size(); ++j)
-      if (!apart(q[j], q[j + 1], lo, hi) && segments_cross(p[i], p[i + 1], q[j], q[j + 1]))
-        return true;
-  }
-  return false;
+  if (p.size() < 2 || q.size() < 2) return false;
+  return runs_cross(p, run_boxes(p), q, run_boxes(q));
 }
 
 bool shares_successor(const Lane& first, const Lane& second) {
@@ -54,10 +87,16 @@ bool shares_successor(const Lane& first, const Lane& second) {
 std::vector<LaneIndex> conflicting_lanes(const RoadMap& map, LaneIndex lane) {
   const Lane& mine = map.lane(lane);
   std::vector<LaneIndex> conflicts;
+  if (!mine.junction) return conflicts;
+  // lines_cross against each of the junction's lanes, with this lane's run boxes made once.
+  const auto& p = mine.centre_line.points();
+  const std::vector<Box> p_runs = p.size() < 2 ? std::vector<Box>{} : run_boxes(p);
   for (LaneIndex other = 0; other < map.lanes().size(); ++other) {
     const Lane& candidate = map.lane(other);
-    if (other == lane || !mine.junction || candidate.junction != mine.junction) continue;
-    if (shares_successor(mine, candidate) || lines_cross(mine.centre_line, candidate.centre_line))
+    if (other == lane || candidate.junction != mine.junction) continue;
+    const auto& q = candidate.centre_line.points();
+    if (shares_successor(mine, candidate) ||
+        (!p_runs.empty() && q.size() >= 2 && runs_cross(p, p_runs, q, run_boxes(q))))
       conflicts.push_back(other);
   }
   return conflicts;

@@ -33,10 +33,15 @@ class BackgroundTraffic {
   bool empty() const { return vehicles_.empty(); }
   std::size_t size() const { return vehicles_.size(); }
   const FlowVehicle& vehicle(std::size_t j) const { return vehicles_[j]; }
+  const std::vector<FlowVehicle>& vehicles() const { return vehicles_; }
   // Where vehicle j is before its first step (its entry pose, at rest, while it is not yet on
   // the map).
   KinematicState initial_state(std::size_t j) const;
   bool present_at_start(std::size_t j) const { return followers_[j].has_value(); }
+  // Vehicle j's driver while it is on the map, else null.
+  const LaneFollower* follower(std::size_t j) const {
+    return followers_[j] ? &*followers_[j] : nullptr;
+  }
 
   // At sample `step` (time t): vehicles that have left are taken out, due arrivals whose entry is
   // clear come in; every flow vehicle's state, present flag (both by actor id) and body in

@@ -620,7 +620,11 @@ bool uncontrolled_approach_to(const RoadMap& map, LaneIndex lane,
 void LaneFollower::hold_at_junction(const WorldSnapshot& world, std::uint32_t self,
                                     std::vector<Stop>& stops) {
   const double front = s_ + body_.length / 2;
-  auto stretch = junction_stretch_ahead(*map_, route_.segments, route_starts_, front);
+  if (!stretch_known_ || (stretch_ && stretch_->exit <= front)) {
+    stretch_ = junction_stretch_ahead(*map_, route_.segments, route_starts_, front);
+    stretch_known_ = true;
+  }
+  const std::optional<JunctionStretch>& stretch = stretch_;
   if (!stretch || stretch->entry <= front || stretch->entry == released_entry_) {
     held_since_ = -1;
     return;

@@ -189,6 +189,10 @@ class LaneFollower {
   double held_since_ = -1;      // s: when it came to stand held at a junction's entry
   double released_entry_ = -1;  // route distance of the entry its patience let it through
   bool gives_way_ = false;      // gives_way_in_junction at the last scan
+  // The junction stretch ahead of the front bumper, found again only once the front has passed
+  // its exit (the front never moves back, so until then it is still the first ahead).
+  std::optional<JunctionStretch> stretch_;
+  bool stretch_known_ = false;
   // Junction lanes of its route and the lanes that cross or merge with each, found when needed.
   std::vector<std::pair<LaneIndex, std::vector<LaneIndex>>> conflicts_;
 };

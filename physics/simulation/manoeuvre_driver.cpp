@@ -65,6 +65,21 @@ const PhaseMotion* ManoeuvreDriver::current() const {
 
 int ManoeuvreDriver::phase() const { return running_ ? static_cast<int>(next_) : -1; }
 
+VehicleSignals ManoeuvreDriver::indicator() const {
+  if (pedestrian_) return 0;
+  // m off the new lane's centre at the start of a sideways move that is a lane change, not a
+  // small correction towards the centre line.
+  constexpr double kLaneChangeOffset = 1.0;
+  if (lateral_duration_ > 0 && lateral_elapsed_ < lateral_duration_ &&
+      std::abs(lateral_from_) > kLaneChangeOffset)
+    return lateral_from_ > 0 ? vehicle_signal::right_indicator : vehicle_signal::left_indicator;
+  if (turn_available_ && !turn_done_) {
+    if (turn_wanted_ == LaneTurn::left) return vehicle_signal::left_indicator;
+    if (turn_wanted_ == LaneTurn::right) return vehicle_signal::right_indicator;
+  }
+  return 0;
+}
+
 void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   update_phases(world, self);
   double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self);

@@ -32,6 +32,10 @@ class ManoeuvreDriver {
   int phase() const;
   // When the first phase began (world time, s); NaN before.
   double sequence_start() const { return sequence_start_; }
+  // The indicator it shows: through a sideways move to a neighbour lane (towards it), and through
+  // a turn phase until the turn is done; 0 otherwise. Its phases start on conditions met during
+  // the run, so it indicates from the phase's start, not before.
+  VehicleSignals indicator() const;
 
   // Starts and ends phases by what holds in `world` (where this actor is actor `self`), then
   // moves the actor on by dt.

@@ -24,7 +24,7 @@ std::uint32_t object_kind(TraceActorKind kind) {
 
 scenfuzz_ego_config plugin_config(const SimulationSetup& setup, double dt, std::uint64_t seed) {
   scenfuzz_ego_config config{};
-  config.abi_version = SCENFUZZ_EGO_ABI_VERSION;
+  config.abi_version = SCENFUZZ_EGO_ABI_VERSION;  // lowered to the plugin's (plugin_driver.cpp)
   config.dt = dt;
   config.seed = seed;
   const ActorClass& body = setup.ego_body;
@@ -65,6 +65,10 @@ void fill_observation(const RouteTracker& route, const KinematicState& ego, doub
     observation.objects[i] = {o.id,   object_kind(o.kind), o.x, o.y, o.heading, o.speed, o.length,
                               o.width};
   }
+  // Only vehicles show signals; slots past the objects seen hold none.
+  for (std::size_t i = 0; i < SCENFUZZ_MAX_OBJECTS; ++i)
+    observation.object_signals[i] =
+        i < count && nearest[i]->kind == TraceActorKind::vehicle ? nearest[i]->signals : 0;
 
   std::uint32_t points = 0;
   for (double s = route.progress();

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "physics/collision/collision_world.hpp"
+#include "physics/ego/ego_indicators.hpp"
 #include "physics/ego/observation_json.hpp"
 #include "physics/ego/plugin_driver.hpp"
 #include "physics/simulation/background_traffic.hpp"
@@ -21,6 +22,7 @@
 #include "physics/simulation/lane_follower.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/manoeuvre_driver.hpp"
+#include "physics/simulation/npc_signals.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
 #include "physics/simulation/plugin_observation.hpp"
 #include "physics/simulation/predicted_points.hpp"
@@ -101,6 +103,16 @@ const std::vector<WorldObject>& present_objects(const std::vector<WorldObject>& 
   column.reversing.push_back(seen && seen->reversing ? 1 : 0);
 }
 
+// The ego's signals from a plugin's control: its word when it speaks version 2 or later (an
+// older plugin leaves the zero-filled fields: all off), and brake lights as its acceleration
+// has them, whatever it says (they follow the brake pedal, not a switch).
+VehicleSignals plugin_signals(const scenfuzz_control& control, double speed) {
+  const VehicleSignals said =
+      control.version >= 2 ? static_cast<VehicleSignals>(control.signals & vehicle_signal::all)
+                           : VehicleSignals{0};
+  return said | brake_lights(control.acceleration, speed, true);
+}
+
 // The lights' colours as runs of equal steps, written into the trace's columns when the run
 // ends: a colour per light per step reached into every one of a city map's hundreds of lights'
 // columns at every step, which cost more than the rest of recording.
@@ -134,6 +146,8 @@ void reserve_samples(Trace& trace, std::size_t samples) {
   for (TraceActor& actor : trace.actors) {
     actor.lane.reserve(samples);
     actor.reversing.reserve(samples);
+    if (actor.kind == TraceActorKind::ego || actor.kind == TraceActorKind::vehicle)
+      actor.signals.reserve(samples);
   }
   for (PerceivedActor& perceived : trace.perceived) {
     perceived.detected.reserve(samples);
@@ -250,6 +264,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     states.push_back(start);
   }
   const std::size_t actor_count = trace.actors.size();
+  const SignalWeather weather = signal_weather(setup.conditions, options.perception);
+  NpcSignals npc_signals(map, setup, followers, traffic.vehicles(), weather);
   const bool sees_world = watches_world || !traffic.empty();
   // By actor id: on the map now. Only flow vehicles come and go.
   std::vector<std::uint8_t> present(actor_count, 1);
@@ -277,6 +293,16 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver,
                          sensing);
   TrafficSignals signals(map, setup.lights);
+  EgoIndicators ego_indicators(map, route);
+  SignalMemory ego_memory;
+  bool ego_collided = false;
+  // The ego's signals at the sample just written, until its driver decides at this step: what
+  // the last sample keeps when the run ends before that. At the start, the brake held while it
+  // stands, and for the reference driver the weather's lights (a plugin chooses its own).
+  const VehicleSignals weather_lights = weather_signals(weather);
+  VehicleSignals ego_signals_now =
+      (options.ego_plugin.empty() ? weather_lights : VehicleSignals{0}) |
+      brake_lights(setup.ego_initial.acceleration, setup.ego_initial.speed, true);
   std::vector<LaneTracker> lanes(actor_count, LaneTracker(widest_half_lane(map)));
   std::vector<LaneFix> fixes(actor_count);
   std::vector<ObservedManoeuvre> manoeuvres(actor_count, ObservedManoeuvre::going_ahead);
@@ -323,6 +349,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
   reserve_samples(trace, last_step + 1);
   scenfuzz_observation observation{};
+  observation.environment = {setup.conditions.darkness, setup.conditions.fog, setup.conditions.rain,
+                             setup.conditions.snow};
   ColourRuns colour_runs;
 
   for (std::size_t step = 0;; ++step) {
@@ -348,6 +376,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                               {}});
       ego_hit = ego_hit || contact.first == kEgo;
     }
+    ego_collided = ego_collided || ego_hit;
 
     trace.time.push_back(t);
     for (std::size_t k = 0; k < actor_count; ++k) {
@@ -356,6 +385,10 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                             : LaneFix{};
       append_sample(trace.actors[k], states[k], fixes[k]);
     }
+    // The ego's signals are what it decided at the last step, until its driver decides below.
+    trace.actors[kEgo].signals.push_back(ego_signals_now);
+    npc_signals.record(t, states, followers, drivers, traffic, first_flow,
+                       plugin ? &truth : nullptr);
     const std::vector<SignalColour>& colours = signals.colours_at(t);
     colour_runs.add(colours);
 
@@ -456,17 +489,26 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       try {
         scenfuzz_control answer = plugin->step(observation);
         control = {answer.acceleration, answer.steering_angle};
+        ego_signals_now = plugin_signals(answer, states[kEgo].speed);
       } catch (const EgoPluginError& error) {
         end_with_ego_failure(trace, error, t, &observation);
         break;
       }
     } else {
       control = driver.step({t, states[kEgo], seen, colours});
+      const VehicleSignals indicator =
+          ego_indicators.at(route.progress(), states[kEgo].speed, driver.overtake());
+      ego_signals_now = ego_signals(
+          {t, states[kEgo], control.acceleration, indicator, seen,
+           driver.last_reason() == DriverReason::emergency, ego_collided, weather_lights},
+          weather, ego_memory);
     }
+    trace.actors[kEgo].signals.back() = ego_signals_now;
     states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
   }
   colour_runs.write(trace.lights);
   traffic.finish(trace.actors, trace.sample_count());
+  npc_signals.finish(trace.actors, first_flow);
   return trace;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lang/demand.hpp"
+#include "physics/actors/vehicle_signal_names.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -121,6 +122,8 @@ ordered_json actor_json(const TraceActor& actor) {
   samples["lane"] = actor.lane;
   samples["s"] = actor.s;
   samples["reversing"] = reversing_json(actor.reversing, actor.x.size());
+  // Bit sets (vehicle_signals.hpp), only for an actor that shows signals at all.
+  if (!actor.signals.empty()) samples["signals"] = actor.signals;
   ordered_json written{{"name", actor.name},
                        {"kind", trace_actor_kind_name(actor.kind)},
                        {"category", category_name(actor.category)},
@@ -291,6 +294,24 @@ std::vector<std::uint8_t> read_reversing_column(const json& object, const std::s
   return read_flag_column(object, "reversing", where, sample_count);
 }
 
+// Optional, as traces written before signals were recorded have none: then none were shown.
+std::vector<VehicleSignals> read_signals_column(const json& object, const std::string& where,
+                                                std::size_t sample_count) {
+  if (!object.contains("signals")) return {};
+  const json& column = read_column(object, "signals", where, sample_count);
+  const std::string path = member_path(where, "signals");
+  std::vector<VehicleSignals> values;
+  values.reserve(column.size());
+  for (std::size_t i = 0; i < column.size(); ++i) {
+    const std::int64_t bits = read_integer(column[i], element_path(path, i));
+    if (bits < 0 || bits > vehicle_signal::all)
+      fail(element_path(path, i), "signal bits " + std::to_string(bits) + " out of range (0 to " +
+                                      std::to_string(vehicle_signal::all) + ")");
+    values.push_back(static_cast<VehicleSignals>(bits));
+  }
+  return values;
+}
+
 std::vector<std::int32_t> read_lane_column(const json& object, const std::string& where,
                                            std::size_t sample_count) {
   const json& column = read_column(object, "lane", where, sample_count);
@@ -346,6 +367,7 @@ TraceActor read_actor(const json& value, const std::string& where, std::size_t s
   actor.lane = read_lane_column(samples, samples_path, sample_count);
   actor.s = read_number_column(samples, "s", samples_path, sample_count);
   actor.reversing = read_reversing_column(samples, samples_path, sample_count);
+  actor.signals = read_signals_column(samples, samples_path, sample_count);
   read_presence(value, where, sample_count, actor);
   return actor;
 }
@@ -420,7 +442,8 @@ TraceEvent read_event(const json& value, const std::string& where, std::size_t c
     return actor.x.size() == n && actor.y.size() == n && actor.heading.size() == n &&
            actor.speed.size() == n && actor.acceleration.size() == n &&
            actor.yaw_rate.size() == n && actor.lane.size() == n && actor.s.size() == n &&
-           (actor.reversing.empty() || actor.reversing.size() == n);
+           (actor.reversing.empty() || actor.reversing.size() == n) &&
+           (actor.signals.empty() || actor.signals.size() == n);
   });
   return actors && std::ranges::all_of(trace.perceived, [n](const PerceivedActor& perceived) {
            return perceived.detected.size() == n && perceived.x.size() == n &&
@@ -442,7 +465,7 @@ std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids)
   std::string out =
       "time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,reversing,"
       "perceived_detected,perceived_x,perceived_y,perceived_heading,perceived_speed,"
-      "perceived_reversing\n";
+      "perceived_reversing,signals\n";
   out.reserve(out.size() + trace.sample_count() * trace.actors.size() * 160);
   for (std::size_t i = 0; i < trace.sample_count(); ++i) {
     for (std::size_t id = 0; id < trace.actors.size(); ++id) {
@@ -465,17 +488,19 @@ std::string trace_csv(const Trace& trace, std::span<const std::string> lane_ids)
       out += reversing_at(actor.reversing, i) ? ",1" : ",0";
       const PerceivedActor* perceived = perceived_by_actor[id];
       if (id == kEgo || perceived == nullptr) {
-        out += ",,,,,,\n";
-        continue;
-      }
-      out += perceived->detected[i] != 0 ? ",1" : ",0";
-      for (const std::vector<double>* column :
-           {&perceived->x, &perceived->y, &perceived->heading, &perceived->speed}) {
+        out += ",,,,,,";
+      } else {
+        out += perceived->detected[i] != 0 ? ",1" : ",0";
+        for (const std::vector<double>* column :
+             {&perceived->x, &perceived->y, &perceived->heading, &perceived->speed}) {
+          out += ',';
+          if (perceived->detected[i] != 0) append_csv_number(out, (*column)[i]);
+        }
         out += ',';
-        if (perceived->detected[i] != 0) append_csv_number(out, (*column)[i]);
+        if (perceived->detected[i] != 0) out += reversing_at(perceived->reversing, i) ? '1' : '0';
       }
       out += ',';
-      if (perceived->detected[i] != 0) out += reversing_at(perceived->reversing, i) ? '1' : '0';
+      if (!actor.signals.empty()) out += vehicle_signal_list(actor.signals[i]);
       out += '\n';
     }
   }

@@ -76,6 +76,7 @@ tmin = true
 path = "corpus/b.avu"
 budget_share = 2.5
 algo = "random"
+scenario = "scenario2"
 
 [[seed]]
 path = "./a.avu"
@@ -101,9 +102,11 @@ path = "./a.avu"
   EXPECT_EQ(config.seed_overrides[0].budget_share, 2.5);
   EXPECT_EQ(config.seed_overrides[0].algorithm, "random");
   EXPECT_EQ(config.seed_overrides[0].location.line, 23u);
+  EXPECT_EQ(config.seed_overrides[0].scenario, "scenario2");
   EXPECT_EQ(config.seed_overrides[1].path, "a.avu");
   EXPECT_EQ(config.seed_overrides[1].budget_share, 1.0);
   EXPECT_FALSE(config.seed_overrides[1].algorithm);
+  EXPECT_EQ(config.seed_overrides[1].scenario, "");
   EXPECT_TRUE(result.diagnostics.all().empty());
 }
 
@@ -213,7 +216,10 @@ std::vector<Malformed> malformed_files() {
        "'seed.budget_share': expected a finite number greater than 0, found -1"},
       {"an unknown key in [[seed]]",
        kSeeds + kBudget + "[[seed]]\npath = \"a.avu\"\ncolour = \"red\"\n", "6:1",
-       "unknown key 'colour' in [[seed]]; expected one of: path, budget_share, algo"},
+       "unknown key 'colour' in [[seed]]; expected one of: path, budget_share, algo, scenario"},
+      {"an empty scenario name in [[seed]]",
+       kSeeds + kBudget + "[[seed]]\npath = \"a.avu\"\nscenario = \"\"\n", "6:12",
+       "'seed.scenario': expected a non-empty string"},
       {"seed as a number", kSeeds + "seed = 3\n" + kBudget, "2:8",
        "'seed': expected [[seed]] tables (path = ..., budget_share = ..., algo = ...), found an "
        "integer"},

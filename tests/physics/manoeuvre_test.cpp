@@ -306,6 +306,27 @@ TEST(ManoeuvreTest, AManoeuvreConditionSeesAnotherActorChangeLane) {
   EXPECT_LT(mover.y[braking], -5.25 + 0.5) << "early in the lane change";
 }
 
+TEST(ManoeuvreTest, ALaneChangePhaseIndicatesTowardsTheNewLaneUntilItIsOver) {
+  ScenarioTemplate scenario = three_lane_road(20, 10);
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Mover",
+                                          relative_state("Ego", "FSL", 40, 10),
+                                          {phase("LaneChangeLeft_CutOut", 10, 4)}));
+  ManoeuvreRun run = run_manoeuvres(scenario);
+  ASSERT_TRUE(run.trace) << run.messages;
+  const TraceActor& mover = actor_named(*run.trace, "Mover");
+  ASSERT_EQ(mover.signals.size(), run.trace->sample_count());
+  bool indicated = false;
+  for (std::size_t i = 0; i < mover.y.size(); ++i) {
+    EXPECT_FALSE(signal_on(mover.signals, i, vehicle_signal::right_indicator)) << i;
+    if (mover.y[i] > -5.0 && mover.y[i] < -2.0) {
+      ASSERT_TRUE(signal_on(mover.signals, i, vehicle_signal::left_indicator)) << i;
+      indicated = true;
+    }
+  }
+  EXPECT_TRUE(indicated);
+  EXPECT_FALSE(signal_on(mover.signals, mover.y.size() - 1, vehicle_signal::left_indicator));
+}
+
 TEST(ManoeuvreTest, ConditionsThatCannotBeEvaluatedAreErrors) {
   ScenarioTemplate scenario = lead_with(phase("Stop", {}, 2));
   Formula eventually;
@@ -553,6 +574,14 @@ TEST(ManoeuvreTest, TurnsTakeTheConnectorOfTheirSideAtTheNextJunction) {
     EXPECT_EQ(turner.lane.back(), static_cast<std::int32_t>(*map.find_lane(exit))) << manoeuvre;
     EXPECT_NEAR(turner.heading.back() * 180 / std::numbers::pi, heading, 1.0) << manoeuvre;
     EXPECT_TRUE(run.trace->collisions.empty());
+    // It indicates its side through the turn, and not once it is done.
+    const VehicleSignals side =
+        heading > 0 ? vehicle_signal::left_indicator : vehicle_signal::right_indicator;
+    bool indicated = false;
+    for (std::size_t i = 0; i < turner.signals.size(); ++i)
+      indicated = indicated || signal_on(turner.signals, i, side);
+    EXPECT_TRUE(indicated) << manoeuvre;
+    EXPECT_FALSE(signal_on(turner.signals, turner.signals.size() - 1, side)) << manoeuvre;
   }
 }
 

@@ -96,6 +96,28 @@ TEST(PluginDriverExample, SteersLeftIntoALeftBend) {
   EXPECT_GT(driver.step(observation).steering_angle, 0.05);
 }
 
+TEST(PluginDriverExample, IndicatesTowardsATurnOfItsRouteAndNotOnAStraightOne) {
+  PluginDriver driver(options_for(SCENFUZZ_EXAMPLE_EGO_PLUGIN), car_config());
+  scenfuzz_observation observation = open_road(5);
+  set_left_curve_route(observation, 10);
+  const scenfuzz_control turning = driver.step(observation);
+  EXPECT_EQ(turning.version, 2u);
+  EXPECT_EQ(turning.signals, SCENFUZZ_SIGNAL_LEFT_INDICATOR);
+  set_straight_route(observation, 10);
+  EXPECT_EQ(driver.step(observation).signals, 0u);
+}
+
+TEST(PluginDriverExample, LightsAndWipersAsTheEnvironmentAsks) {
+  PluginDriver driver(options_for(SCENFUZZ_EXAMPLE_EGO_PLUGIN), car_config());
+  scenfuzz_observation observation = open_road(5);
+  set_straight_route(observation, 10);
+  observation.environment.darkness = 1;
+  EXPECT_EQ(driver.step(observation).signals, SCENFUZZ_SIGNAL_LOW_BEAM);
+  observation.environment = {0, 0.5, 0.3, 0};
+  EXPECT_EQ(driver.step(observation).signals,
+            SCENFUZZ_SIGNAL_LOW_BEAM | SCENFUZZ_SIGNAL_FOG_LIGHTS | SCENFUZZ_SIGNAL_WIPERS);
+}
+
 TEST(PluginDriverExample, BrakesForARedLightButNotForAGreenOne) {
   PluginDriver driver(options_for(SCENFUZZ_EXAMPLE_EGO_PLUGIN), car_config());
   scenfuzz_observation observation = open_road(8);

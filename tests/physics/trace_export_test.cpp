@@ -1,6 +1,7 @@
 // trace_csv, trace_json and trace_from_json on a small hand-made trace (three actors, three
 // samples, a collision, an undetected perceived sample, two lights): the CSV's shape, quoting and
-// perceived columns; an exact JSON round trip with NaN as null; clear errors for bad JSON.
+// perceived columns and vehicle signals; an exact JSON round trip with NaN as null; clear errors
+// for bad JSON.
 #include "physics/trace/trace_export.hpp"
 
 #include <gtest/gtest.h>
@@ -42,6 +43,8 @@ Trace sample_trace() {
   ego.yaw_rate = {0, 0.002, -0.2};
   ego.lane = {0, 0, 1};
   ego.s = {20, 25.1, 0.2};
+  ego.signals = {vehicle_signal::left_indicator | vehicle_signal::low_beam, 0,
+                 vehicle_signal::brake_lights | vehicle_signal::horn};
 
   TraceActor npc;
   npc.name = "npc, \"the second\"";
@@ -59,6 +62,7 @@ Trace sample_trace() {
   npc.lane = {2, 2, -1};
   npc.s = {3, 4, 0};
   npc.reversing = {1, 1, 0};  // backing up, then standing
+  npc.signals = {0, 0, vehicle_signal::all};
 
   TraceActor pedestrian;
   pedestrian.name = "ped";
@@ -175,6 +179,7 @@ void expect_equal_traces(const Trace& actual, const Trace& expected) {
     for (std::size_t k = 0; k < actual.time.size(); ++k)
       EXPECT_EQ(reversing_at(a.reversing, k), reversing_at(e.reversing, k))
           << e.name << ".reversing[" << k << "]";
+    EXPECT_EQ(a.signals, e.signals) << e.name;
   }
   ASSERT_EQ(actual.perceived.size(), expected.perceived.size());
   for (std::size_t i = 0; i < actual.perceived.size(); ++i) {
@@ -248,9 +253,9 @@ TEST(TraceExport, CsvHasAHeaderAndOneRowPerSampleAndActor) {
   EXPECT_EQ(lines[0],
             "time,actor,kind,x,y,heading,speed,acceleration,yaw_rate,lane,s,reversing,"
             "perceived_detected,perceived_x,perceived_y,perceived_heading,perceived_speed,"
-            "perceived_reversing");
+            "perceived_reversing,signals");
   for (std::size_t i = 1; i < lines.size(); ++i)
-    EXPECT_EQ(csv_fields(lines[i]).size(), 18u) << lines[i];
+    EXPECT_EQ(csv_fields(lines[i]).size(), 19u) << lines[i];
   // Samples in time order, actors in id order within a sample.
   EXPECT_EQ(csv_fields(lines[1])[1], "ego");
   EXPECT_EQ(csv_fields(lines[3])[1], "ped");
@@ -297,6 +302,31 @@ TEST(TraceExport, CsvSaysWhereAnActorReverses) {
   EXPECT_EQ(csv_fields(lines[2])[11], "1");  // the npc backing up at t = 0
   EXPECT_EQ(csv_fields(lines[8])[11], "0");  // and standing at t = 1
   EXPECT_EQ(csv_fields(lines[3])[11], "0");  // the pedestrian, whose column is empty
+}
+
+TEST(TraceExport, CsvNamesTheVehicleSignalsOn) {
+  const std::vector<std::string> lines = lines_of(trace_csv(sample_trace()));
+  EXPECT_EQ(csv_fields(lines[1])[18], "left_indicator|low_beam");  // the ego at t = 0
+  EXPECT_EQ(csv_fields(lines[4])[18], "");                         // and at t = 0.5
+  EXPECT_EQ(csv_fields(lines[7])[18], "horn|brake_lights");        // and at t = 1
+  EXPECT_EQ(csv_fields(lines[8])[18],
+            "left_indicator|right_indicator|hazard_lights|horn|low_beam|high_beam|fog_lights|"
+            "wipers|brake_lights");
+  EXPECT_EQ(csv_fields(lines[3])[18], "");  // the pedestrian shows none
+}
+
+TEST(TraceExport, JsonSignalsAreBitSetsAndOptional) {
+  const std::string json = trace_json(sample_trace());
+  EXPECT_NE(json.find("\"signals\":[17,0,264]"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"signals\":[0,0,511]"), std::string::npos);
+  // As traces written before signals were recorded: none shown.
+  const Trace old =
+      trace_from_json(std::regex_replace(json, std::regex(R"(,"signals":\[[0-9,]*\])"), ""));
+  for (const TraceActor& actor : old.actors) EXPECT_TRUE(actor.signals.empty()) << actor.name;
+  EXPECT_EQ(read_error(replaced(json, "[0,0,511]", "[0,0,512]")),
+            "trace JSON: actors[1].samples.signals[2]: signal bits 512 out of range (0 to 511)");
+  EXPECT_EQ(read_error(replaced(json, "[0,0,511]", "[0,0]")),
+            "trace JSON: actors[1].samples.signals: has 2 entries, expected one per sample (3)");
 }
 
 TEST(TraceExport, CsvLanesPrintAsMapIdsWhenGiven) {
