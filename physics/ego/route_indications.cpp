@@ -71,7 +71,8 @@ std::vector<IndicationStretch> route_indications(const RoadMap& map,
     VehicleSignals indicator = 0;
     for (std::size_t k = stretch->first; k <= stretch->last && indicator == 0; ++k)
       indicator = junction_lane_indicator(map, segments[k].lane);
-    if (indicator != 0) stretches.push_back({stretch->entry, stretch->exit, indicator});
+    if (indicator != 0)
+      stretches.push_back({stretch->entry, stretch->exit, indicator, kTurnNotice});
     from = stretch->exit;
   }
   std::sort(
@@ -93,12 +94,14 @@ VehicleSignals look_for_indication(std::span<const IndicationStretch> stretches,
   }
   const IndicationStretch& stretch = stretches[cursor.next];
   if (cursor.on) return stretch.indicator;
-  const double lead = std::max(notice.distance, notice.time * std::abs(speed));
+  const double lead =
+      std::max({notice.distance, notice.time * std::abs(speed), stretch.least_notice});
   if (progress >= stretch.begin - lead) {
     cursor.on = true;
     return stretch.indicator;
   }
-  cursor.quiet_until = stretch.begin - std::max(notice.distance, notice.time * kFastestVehicle);
+  cursor.quiet_until = stretch.begin - std::max({notice.distance, notice.time * kFastestVehicle,
+                                                 stretch.least_notice});
   return 0;
 }
 

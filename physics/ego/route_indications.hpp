@@ -1,7 +1,8 @@
 // Where a vehicle following a lane route shows its indicators: the stretches of its route where
 // it changes lane or turns at a junction, each with the indicator it asks for, and which
 // indicator is on at a point of the route. A law-abiding driver indicates from a notice before
-// the manoeuvre (3 s of travel or 30 m, whichever is longer) until it ends. Shared by the ego
+// the manoeuvre (3 s of travel or 30 m, whichever is longer; before a junction turn at least
+// kTurnNotice) until it ends. Shared by the ego
 // (signal_policy.hpp) and the lane-following NPCs.
 #pragma once
 
@@ -21,7 +22,14 @@ struct IndicationStretch {
   double begin = 0;
   double end = 0;
   VehicleSignals indicator = 0;  // vehicle_signal::left_indicator or right_indicator
+  double least_notice = 0;       // m: the notice is at least this, whatever the speed
 };
+
+// A junction turn's least notice (m before the junction's entry, from the vehicle's centre):
+// Apollo's planner signals a turn when the junction begins within 100 m of the front bumper,
+// which is where the oracle's `direction` turns left or right (docs/oracle.md) and law57 asks
+// for the indicator; 10 m more covers half the length of the longest vehicle.
+inline constexpr double kTurnNotice = 110;
 
 // How long before a manoeuvre the indicator goes on: the longer of the two.
 struct IndicationNotice {

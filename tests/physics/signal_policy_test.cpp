@@ -140,6 +140,16 @@ TEST(SignalPolicyTest, IndicatesFromThreeSecondsOrThirtyMetresBeforeUntilTheEnd)
   EXPECT_EQ(indicator_at(stretches, 221, 20, cursor), 0);
 }
 
+// law57 asks for the indicator wherever the oracle's `direction` says left, from 100 m before
+// the junction (measured from the front bumper): a slow car must not wait for its 30 m notice.
+TEST(SignalPolicyTest, AJunctionTurnIndicatesFromItsLeastNotice) {
+  const std::vector<IndicationStretch> stretches{{200, 230, sig::left_indicator, kTurnNotice}};
+  IndicationCursor cursor;
+  EXPECT_EQ(indicator_at(stretches, 200 - kTurnNotice - 1, 2, cursor), 0);
+  EXPECT_EQ(indicator_at(stretches, 200 - kTurnNotice + 1, 2, cursor), sig::left_indicator);
+  EXPECT_EQ(indicator_at(stretches, 231, 2, cursor), 0);
+}
+
 TEST(SignalPolicyTest, AnIndicatorOnStaysOnWhenTheVehicleSlows) {
   const std::vector<IndicationStretch> stretches{{300, 330, sig::left_indicator}};
   IndicationCursor cursor;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "physics/ego/route_indications.hpp"
 #include "simulation_fixtures.hpp"
 
 #if !defined(SCENFUZZ_TEST_PLUGIN_DIR)
@@ -123,24 +124,23 @@ TEST(VehicleSignalsTest, TheEgoIndicatesOutAndBackWhenItOvertakes) {
 }
 
 // crossroads?lanes=1: north-south has green first; south_in_0 runs north at x = 1.75 up to the
-// junction. Turning left leads west, right leads east.
+// junction, whose one-lane arms begin at y = -10. Turning left leads west, right leads east.
 void expect_turn_indicated(const std::string& target, VehicleSignals indicator,
                            VehicleSignals other) {
   const Trace trace =
       run(scenario("crossroads?lanes=1", "",
-                   "ego = AV((\"south_in_0\"->60, , 8), (\"" + target + "\"->60));\n"),
-          40);
+                   "ego = AV((\"south_in_0\"->20, , 8), (\"" + target + "\"->60));\n"),
+          50);
   const TraceActor& ego = trace.actors[0];
   EXPECT_EQ(trace.end, EndReason::target_reached);
   const auto first = first_on(ego, indicator);
   ASSERT_TRUE(first);
-  EXPECT_FALSE(on(ego, 0, indicator)) << "60 m before the junction is too early";
-  EXPECT_LT(ego.y[*first], -20.0) << "on before the junction";
-  // About 3 s before its centre enters the junction (y = -10 with one-lane arms): 3 s at the
-  // speed it had then, and it speeds up a little on the way.
-  std::size_t entry = 0;
-  while (entry < trace.sample_count() && ego.y[entry] < -10) ++entry;
-  EXPECT_GE(trace.time[entry] - trace.time[*first], 2.8);
+  EXPECT_FALSE(on(ego, 0, indicator)) << "130 m before the junction is too early";
+  // From kTurnNotice before the junction's entry: where the oracle's `direction` (100 m from the
+  // front bumper) asks law57's indicator.
+  constexpr double kEntry = -10;
+  EXPECT_LE(ego.y[*first], kEntry - (100 + ego.length / 2));
+  EXPECT_GE(ego.y[*first], kEntry - kTurnNotice - 1);
   EXPECT_FALSE(ever_on(ego, other));
   EXPECT_FALSE(on(ego, trace.sample_count() - 1, indicator)) << "off once the turn is done";
 }
