@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/simulation/path_indications.hpp"
+
 namespace scenfuzz {
 
 NpcSignals::NpcSignals(const RoadMap& map, const SimulationSetup& setup,
@@ -26,6 +28,9 @@ NpcSignals::NpcSignals(const RoadMap& map, const SimulationSetup& setup,
       const LaneRoute& route = actor.lane_drive->route;
       actor_stretches_[i] =
           route_indications(map, route.segments, lane_change_stretches(map, route));
+    } else if (!actor.manoeuvres) {
+      // Its path through its waypoints (or standing: none), read off the map.
+      actor_stretches_[i] = path_indications(map, actor.trajectory.path());
     }
     slot.indicates = actor.manoeuvres || !actor_stretches_[i].empty();
     if (slot.indicates) indicating_.push_back(i);

@@ -1,8 +1,8 @@
 // The NPC vehicles' signals at each sample: the weather's lights (low beams from dusk and in poor
 // visibility, fog lights, wipers), brake lights, and the indicators before and through the lane
 // changes and junction turns of a lane route (lane followers, scripted lane drives, background
-// traffic, from route_indications.hpp) or of a manoeuvre phase (ManoeuvreDriver::indicator).
-// Vehicles on a waypoint path do not indicate. docs/simulation.md ("Vehicle signals") has the
+// traffic, from route_indications.hpp), of a waypoint path (path_indications.hpp) or of a
+// manoeuvre phase (ManoeuvreDriver::indicator). docs/simulation.md ("Vehicle signals") has the
 // figures. Kept cheap: during the run only the vehicles with something to indicate are looked
 // at; the lights and brake lights, which the trace's own columns decide, are added when the run
 // ends. Only a plugin reads other vehicles' signals during the run (perception passes them on):
@@ -56,7 +56,8 @@ class NpcSignals {
     bool driven = false;     // reactive (a lane follower, manoeuvre phases): holds the brake
                              // whenever it stands; a scripted one only once it has moved
     bool moved = false;      // so far in the run (for `truth`)
-    bool indicates = false;  // a lane route with something to indicate, or manoeuvre phases
+    bool indicates = false;  // a lane route or waypoint path with something to indicate, or
+                             // manoeuvre phases
   };
 
   VehicleSignals brake(double acceleration, double speed, bool held) const {
@@ -92,7 +93,8 @@ class NpcSignals {
   VehicleSignals lights_ = 0;            // the weather's, the same for all
   std::vector<Slot> slots_;              // by scenario actor
   std::vector<std::size_t> indicating_;  // the scenario actors whose slot indicates, in order
-  // By scenario actor: its lane drive's stretches (empty without one) and cursor.
+  // By scenario actor: its lane drive's or waypoint path's stretches (empty without one) and
+  // cursor.
   std::vector<std::vector<IndicationStretch>> actor_stretches_;
   std::vector<IndicationCursor> actor_cursors_;
   // By flow: its route's stretches; by flow vehicle: its flow and cursor.

@@ -270,6 +270,103 @@ TEST(VehicleSignalsTest, ALaneFollowingNpcIndicatesBeforeItsTurnAndShowsBrakeLig
   EXPECT_TRUE(ever_on(npc, sig::brake_lights)) << "it slows for the bend";
 }
 
+// A waypoint NPC on straight?two_way=0 from east_0 (y = -5.25) or east_1 (y = -1.75) at 40 m,
+// 10 m/s, through a waypoint in the other lane at 160 m: its lane leg moves over in the 30 m
+// before (3 s at 10 m/s), from x = 130, so the indicator goes on 30 m (3 s) before that.
+void expect_waypoint_lane_change_indicated(const std::string& from, const std::string& to,
+                                           VehicleSignals indicator, VehicleSignals other) {
+  const Trace trace = run(scenario("straight?two_way=0", "npc",
+                                   "ego = AV((\"east_0\"->5, , 0), (\"east_0\"->480));\n"
+                                   "npc = Vehicle((\"" +
+                                       from + "\"->40, , 10), Waypoint(((\"" + to +
+                                       "\"->160, , 10))), (\"" + to + "\"->300));\n"),
+                          30);
+  expect_column_complete(trace);
+  const TraceActor& npc = trace.actors[1];
+  const auto indicating = first_on(npc, indicator);
+  const auto moving = first_moved_sideways(npc, 0.1);
+  const auto crossing = first_moved_sideways(npc, 1.75);  // its centre on the lane line
+  ASSERT_TRUE(indicating);
+  ASSERT_TRUE(moving);
+  ASSERT_TRUE(crossing);
+  EXPECT_LT(*indicating, *crossing);
+  EXPECT_LT(*indicating, *moving);
+  // The notice: 3 s or 30 m before the move begins (at 10 m/s both), give or take where the
+  // path is seen to begin moving sideways.
+  EXPECT_NEAR(npc.x[*moving] - npc.x[*indicating], 30.0, 4.0);
+  for (std::size_t i = *indicating; i <= *crossing; ++i) ASSERT_TRUE(on(npc, i, indicator)) << i;
+  EXPECT_FALSE(ever_on(npc, other));
+  EXPECT_FALSE(on(npc, trace.sample_count() - 1, indicator)) << "off once it is over";
+}
+
+TEST(VehicleSignalsTest, AWaypointNpcIndicatesLeftBeforeItsLaneChange) {
+  expect_waypoint_lane_change_indicated("east_0", "east_1", sig::left_indicator,
+                                        sig::right_indicator);
+}
+
+TEST(VehicleSignalsTest, AWaypointNpcIndicatesRightBeforeItsLaneChange) {
+  expect_waypoint_lane_change_indicated("east_1", "east_0", sig::right_indicator,
+                                        sig::left_indicator);
+}
+
+TEST(VehicleSignalsTest, AWaypointNpcDrivingStraightNeverIndicates) {
+  const Trace trace = run(scenario("straight?two_way=0", "npc",
+                                   "ego = AV((\"east_0\"->5, , 0), (\"east_0\"->480));\n"
+                                   "npc = Vehicle((\"east_1\"->40, , 10), Waypoint(((\"east_1\""
+                                   "->160, , 10))), (\"east_1\"->300));\n"),
+                          30);
+  const TraceActor& npc = trace.actors[1];
+  ASSERT_GT(npc.x.back() - npc.x.front(), 200.0) << "it drove";
+  EXPECT_FALSE(ever_on(npc, sig::left_indicator | sig::right_indicator));
+}
+
+// crossroads?lanes=1 (as for the ego above): from south_in_0 at 20 m, 130 m before the junction,
+// through a waypoint on the arm it turns into or crosses to.
+Trace waypoint_junction_run(const std::string& arm) {
+  Trace trace = run(scenario("crossroads?lanes=1", "npc",
+                             "ego = AV((\"east_in_0\"->100, , 0), (\"west_out_0\"->100));\n"
+                             "npc = Vehicle((\"south_in_0\"->20, , 8), Waypoint(((\"" +
+                                 arm + "\"->30, , 8))), (\"" + arm + "\"->60));\n"),
+                    30);
+  expect_column_complete(trace);
+  return trace;
+}
+
+TEST(VehicleSignalsTest, AWaypointNpcIndicatesLeftBeforeItsLeftTurnAtAJunction) {
+  const Trace trace = waypoint_junction_run("west_out_0");
+  const TraceActor& npc = trace.actors[1];
+  const auto first = first_on(npc, sig::left_indicator);
+  ASSERT_TRUE(first);
+  constexpr double kEntry = -10;
+  EXPECT_FALSE(on(npc, 0, sig::left_indicator)) << "130 m before the junction is too early";
+  EXPECT_LE(npc.y[*first], kEntry - 100) << "the ego's rule: kTurnNotice before the entry";
+  EXPECT_GE(npc.y[*first], kEntry - kTurnNotice - 1);
+  for (std::size_t i = *first; i < trace.sample_count() && npc.y[i] < kEntry; ++i)
+    ASSERT_TRUE(on(npc, i, sig::left_indicator)) << i;
+  EXPECT_LT(npc.x.back(), -20.0) << "it turned west";
+  EXPECT_FALSE(ever_on(npc, sig::right_indicator));
+  EXPECT_FALSE(on(npc, trace.sample_count() - 1, sig::left_indicator)) << "off once turned";
+}
+
+TEST(VehicleSignalsTest, AWaypointNpcGoingStraightThroughAJunctionNeverIndicates) {
+  const Trace trace = waypoint_junction_run("north_out_0");
+  const TraceActor& npc = trace.actors[1];
+  EXPECT_GT(npc.y.back(), 20.0) << "it went through";
+  EXPECT_FALSE(ever_on(npc, sig::left_indicator | sig::right_indicator));
+}
+
+// A pedestrian has no lamps: its signals column stays empty, whatever its path crosses.
+TEST(VehicleSignalsTest, AWaypointPedestrianCrossingLanesHasNoSignals) {
+  const Trace trace =
+      run("ego = AV((\"east_0\"->5, , 0), (\"east_0\"->480));\n"
+          "ped = Pedestrian((\"east_0\"->100, , 1.4), Waypoint(((\"east_1\"->104, , 1.4))), "
+          "(\"east_1\"->110));\n"
+          "scenario = CreateScenario{load(\"straight?two_way=0\");\nego;\n{};\n{ped};\n{};\n};\n",
+          10);
+  expect_column_complete(trace);
+  EXPECT_TRUE(trace.actors[1].signals.empty());
+}
+
 std::string test_plugin(const std::string& name) {
   return std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/lib" + name + ".so";
 }

@@ -1,0 +1,181 @@
+// The lane changes and junction turns along a drawn path (path_indications.hpp).
+#include "physics/simulation/path_indications.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <optional>
+#include <utility>
+
+#include "physics/map/lane_queries.hpp"
+
+namespace scenfuzz {
+namespace {
+
+constexpr double kSpacing = 1;  // m between the path points looked at
+// m sideways per m along: a slower drift is no part of a lane change. A smoothstep move of a lane
+// width over 30 m (waypoint_path's) is slower only within about a metre of its ends.
+constexpr double kSideways = 0.02;
+
+constexpr double kHalfTurn = std::numbers::pi / 2;
+
+struct PathSample {
+  double s = 0;
+  std::optional<LaneIndex> lane;  // the lane the point lies inside, heading the path's way
+  double lateral = 0;             // from that lane's centre line, left positive
+  bool against = false;           // the lane runs against the path (the oncoming lane)
+};
+
+std::vector<PathSample> sample_path(const RoadMap& map, const Polyline& path) {
+  std::vector<PathSample> samples;
+  const auto steps = static_cast<std::size_t>(std::ceil(path.length() / kSpacing));
+  for (std::size_t i = 0; i <= steps; ++i) {
+    PathSample sample;
+    sample.s = std::min(path.length(), static_cast<double>(i) * kSpacing);
+    const auto on = project_to_lane(map, path.point_at(sample.s), path.heading_at(sample.s));
+    if (on && on->inside) {
+      sample.lane = on->lane;
+      sample.lateral = on->lateral;
+      sample.against = std::abs(angle_difference(lane_heading_at(map, on->lane, on->s),
+                                                 path.heading_at(sample.s))) > kHalfTurn;
+    }
+    samples.push_back(sample);
+  }
+  return samples;
+}
+
+bool holds(const std::vector<LaneIndex>& lanes, LaneIndex lane) {
+  return std::find(lanes.begin(), lanes.end(), lane) != lanes.end();
+}
+
+bool is_neighbour(const Lane& lane, LaneIndex other) {
+  return holds(lane.left_forward_neighbours, other) ||
+         holds(lane.right_forward_neighbours, other) ||
+         holds(lane.left_reverse_neighbours, other) || holds(lane.right_reverse_neighbours, other);
+}
+
+// The lane a move from `from` into `to` crosses sideways from: `from` when `to` is its
+// neighbour, else a lane following it whose neighbour `to` is (the line crossed where `from`
+// ends); nullopt for no sideways move (a successor, a lane far off).
+std::optional<LaneIndex> crossed_from(const RoadMap& map, LaneIndex from, LaneIndex to) {
+  if (is_neighbour(map.lane(from), to)) return from;
+  for (const LaneIndex next : map.lane(from).successors)
+    if (is_neighbour(map.lane(next), to)) return next;
+  return std::nullopt;
+}
+
+// Whether the path moves sideways by `toward` (+1 left, -1 right) from sample k to k + 1, both on
+// a lane that the lateral offsets are comparable on (one lane, or one and its successor).
+bool moves_sideways(const RoadMap& map, const std::vector<PathSample>& samples, std::size_t k,
+                    double toward) {
+  const PathSample& a = samples[k];
+  const PathSample& b = samples[k + 1];
+  if (!a.lane || !b.lane) return false;
+  if (*a.lane != *b.lane && !holds(map.lane(*a.lane).successors, *b.lane)) return false;
+  return toward * (b.lateral - a.lateral) > kSideways * (b.s - a.s);
+}
+
+// The lane changes: each crossing into a neighbour, stretched back and on while the path moves
+// sideways its way (not back past the crossing before it).
+std::vector<IndicationStretch> lane_changes(const RoadMap& map,
+                                            const std::vector<PathSample>& samples) {
+  std::vector<IndicationStretch> changes;
+  std::size_t floor = 0;            // the sample after the last crossing
+  std::optional<std::size_t> last;  // the last sample on a lane
+  for (std::size_t c = 0; c < samples.size(); ++c) {
+    if (!samples[c].lane) continue;
+    if (!last || *samples[*last].lane == *samples[c].lane) {
+      last = c;
+      continue;
+    }
+    const std::size_t previous = *last;
+    const LaneIndex after = *samples[c].lane;
+    last = c;
+    const auto from = crossed_from(map, *samples[previous].lane, after);
+    if (!from) continue;
+    const Lane& crossed = map.lane(*from);
+    // Sideways as the lanes run (the laterals' frames): towards `after`, and on it away from
+    // `from`, which is the other way on a lane running the other way.
+    const bool left = holds(crossed.left_forward_neighbours, after) ||
+                      holds(crossed.left_reverse_neighbours, after);
+    const bool reverse = holds(crossed.left_reverse_neighbours, after) ||
+                         holds(crossed.right_reverse_neighbours, after);
+    const double toward = left ? 1.0 : -1.0;
+    std::size_t begin = previous;
+    while (begin > floor && moves_sideways(map, samples, begin - 1, toward)) --begin;
+    std::size_t end = c;
+    while (end + 1 < samples.size() &&
+           moves_sideways(map, samples, end, reverse ? -toward : toward))
+      ++end;
+    // The driver's left is the lane's unless it drives against the lane (back from the oncoming
+    // lane after passing).
+    const bool drivers_left = left != samples[previous].against;
+    changes.push_back(
+        {samples[begin].s, samples[end].s,
+         drivers_left ? vehicle_signal::left_indicator : vehicle_signal::right_indicator});
+    floor = c;
+  }
+  return changes;
+}
+
+// The lane seen at the most samples among [first, last] (on a lane each).
+LaneIndex most_seen(const std::vector<PathSample>& samples, std::size_t first, std::size_t last) {
+  std::vector<std::pair<LaneIndex, std::size_t>> counts;
+  for (std::size_t k = first; k <= last; ++k) {
+    if (!samples[k].lane) continue;
+    auto it = std::find_if(counts.begin(), counts.end(),
+                           [&](const auto& count) { return count.first == *samples[k].lane; });
+    if (it == counts.end())
+      counts.emplace_back(*samples[k].lane, 1);
+    else
+      ++it->second;
+  }
+  return std::max_element(counts.begin(), counts.end(),
+                          [](const auto& a, const auto& b) { return a.second < b.second; })
+      ->first;
+}
+
+std::optional<std::uint32_t> junction_of(const RoadMap& map, const PathSample& sample) {
+  if (!sample.lane) return std::nullopt;
+  return map.lane(*sample.lane).junction;
+}
+
+// The junction turns: runs of samples on one junction's lanes (points on no lane do not end
+// one), from halfway between the last point before and the first in, to halfway out.
+std::vector<IndicationStretch> junction_turns(const RoadMap& map,
+                                              const std::vector<PathSample>& samples) {
+  std::vector<IndicationStretch> turns;
+  for (std::size_t first = 0; first < samples.size(); ++first) {
+    const auto junction = junction_of(map, samples[first]);
+    if (!junction) continue;
+    std::size_t last = first;
+    for (std::size_t k = first + 1; k < samples.size(); ++k) {
+      if (!samples[k].lane) continue;
+      if (junction_of(map, samples[k]) != junction) break;
+      last = k;
+    }
+    const double entry = first > 0 ? (samples[first - 1].s + samples[first].s) / 2 : 0;
+    const double exit =
+        last + 1 < samples.size() ? (samples[last].s + samples[last + 1].s) / 2 : samples[last].s;
+    const VehicleSignals indicator = junction_lane_indicator(map, most_seen(samples, first, last));
+    if (indicator != 0) turns.push_back({entry, exit, indicator, kTurnNotice});
+    first = last;
+  }
+  return turns;
+}
+
+}  // namespace
+
+std::vector<IndicationStretch> path_indications(const RoadMap& map, const Polyline& path) {
+  if (path.points().size() < 2 || path.length() <= 0) return {};
+  const std::vector<PathSample> samples = sample_path(map, path);
+  std::vector<IndicationStretch> stretches = lane_changes(map, samples);
+  for (const IndicationStretch& turn : junction_turns(map, samples)) stretches.push_back(turn);
+  std::sort(
+      stretches.begin(), stretches.end(),
+      [](const IndicationStretch& a, const IndicationStretch& b) { return a.begin < b.begin; });
+  return stretches;
+}
+
+}  // namespace scenfuzz
