@@ -274,20 +274,36 @@ struct Pass {
   std::size_t first = 0, last = 0;
 };
 
-// The lane change that leads into a pass: walking back from `first` while the vehicle stays
-// near and ahead (the ego following it), the first sample of the first lane change met.
-std::size_t start_of_pass(const Trace& trace, const TraceActor& other,
-                          const EgoManoeuvre& manoeuvre, std::size_t first) {
+// Whether `other` was ahead of the ego in the ego's lane at sample i: the same lane, or one that
+// follows it (a lane ends where a road is split into lanes).
+bool ahead_in_lane(const RoadMap& map, const TraceActor& ego, const TraceActor& other,
+                   std::size_t i) {
+  if (!present_at(other, i) || ego.lane[i] < 0 || other.lane[i] < 0) return false;
+  const auto mine = static_cast<LaneIndex>(ego.lane[i]);
+  const auto theirs = static_cast<LaneIndex>(other.lane[i]);
+  return (mine == theirs || is_successor(map, mine, theirs)) &&
+         relative_to_ego(ego, other, i).along == Along::ahead;
+}
+
+// The lane change out that leads into a pass: walking back from `first` while the vehicle stays
+// near and ahead (the ego following it), the first sample of the first lane change met, when
+// the vehicle was ahead in the ego's lane as it began. nullopt otherwise: the ego passes a
+// vehicle in another lane without leaving its own for it, which is no overtaking.
+std::optional<std::size_t> start_of_pass(const Trace& trace, const RoadMap& map,
+                                         const TraceActor& other, const EgoManoeuvre& manoeuvre,
+                                         std::size_t first) {
   const TraceActor& ego = trace.actors[kEgo];
-  for (std::size_t k = first; k-- > 0;) {
+  for (std::size_t k = first + 1; k-- > 0;) {
     if (manoeuvre.lane_changing[k]) {
       while (k > 0 && manoeuvre.lane_changing[k - 1]) --k;
-      return k;
+      if (ahead_in_lane(map, ego, other, k)) return k;
+      return std::nullopt;
     }
+    if (k == first) continue;  // beside: the pass itself
     const Relative relative = relative_to_ego(ego, other, k);
     if (!present_at(other, k) || relative.along != Along::ahead || !relative.near) break;
   }
-  return first;
+  return std::nullopt;
 }
 
 // The lane change back after a pass, found the same way forward while the vehicle is behind.
@@ -401,15 +417,18 @@ std::vector<double> turning_around(const Trace& trace, const EgoManoeuvre& manoe
   return values;
 }
 
-std::vector<double> overtaking(const Trace& trace, const EgoManoeuvre& manoeuvre) {
+std::vector<double> overtaking(const Trace& trace, const RoadMap& map,
+                               const EgoManoeuvre& manoeuvre) {
   std::vector<double> values(trace.sample_count());
   for (std::size_t k = 1; k < trace.actors.size(); ++k) {
     const TraceActor& other = trace.actors[k];
     if (other.kind != TraceActorKind::vehicle) continue;
     for (const Pass& pass : passes_of(trace, other)) {
-      const std::size_t first = start_of_pass(trace, other, manoeuvre, pass.first);
+      const std::optional<std::size_t> first =
+          start_of_pass(trace, map, other, manoeuvre, pass.first);
+      if (!first) continue;
       const std::size_t last = end_of_pass(trace, other, manoeuvre, pass.last);
-      for (std::size_t i = first; i <= last; ++i) values[i] = 1;
+      for (std::size_t i = *first; i <= last; ++i) values[i] = 1;
     }
   }
   return values;

@@ -53,11 +53,14 @@ EgoManoeuvre ego_manoeuvre(const Trace& trace, const RoadMap& map,
 inline constexpr double kTurnAroundWindow = 8;  // s
 std::vector<double> turning_around(const Trace& trace, const EgoManoeuvre& manoeuvre);
 
-// `isOverTaking`: 1 while the ego passes a vehicle that drives its way, beside it within
-// kOvertakeBeside of its centre line: from where that vehicle was ahead until it is behind, with
-// the ego's lane changes out before and back after (docs/oracle.md), else 0.
+// `isOverTaking`: 1 while the ego overtakes a vehicle that drives its way: the ego changes lane
+// out of the lane that vehicle is ahead of it in (or out of one the vehicle's lane follows),
+// passes it beside it within kOvertakeBeside of its centre line, from the lane change out until
+// the vehicle is behind, and on through the lane change back after (docs/oracle.md), else 0.
+// Passing a vehicle in the next lane without leaving its own lane for it is no overtaking.
 inline constexpr double kOvertakeBeside = 5;  // m: centre to centre, across the ego's heading
-std::vector<double> overtaking(const Trace& trace, const EgoManoeuvre& manoeuvre);
+std::vector<double> overtaking(const Trace& trace, const RoadMap& map,
+                               const EgoManoeuvre& manoeuvre);
 
 // `currentLane.direction` at every sample: the manoeuvres the ego's lane allows, in LawBreaker's
 // 0-7 coding; 0 off the lanes.

@@ -562,7 +562,7 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
         });
     return discrete(priority_vehicle_ahead(trace, manoeuvre(), ahead));
   }
-  if (name == "isOverTaking") return discrete(overtaking(trace, manoeuvre()));
+  if (name == "isOverTaking") return discrete(overtaking(trace, map, manoeuvre()));
   if (name == "PriorityPedsAhead") return discrete(priority_pedestrian_ahead(trace, manoeuvre()));
   if (name == "isTrafficJam")
     return discrete(along_the_lanes(trace, map, [&](const AheadView& view, std::size_t i) {

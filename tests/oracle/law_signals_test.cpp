@@ -450,14 +450,33 @@ TEST_F(LawSignalsTest, OverTakingIsPassingAVehicleByChangingLaneAndBack) {
   EXPECT_LT(robustness_at_start(trace, straight, "trace |= G (~isOverTaking);\n"), 0);
 }
 
-TEST_F(LawSignalsTest, OverTakingIsAlsoPassingAVehicleInTheNextLane) {
-  // On east_1 all along, past npc1 on east_0: overtaking while beside it (s 66 to 74), no
-  // lane change to add.
+TEST_F(LawSignalsTest, PassingAVehicleInTheNextLaneWithoutChangingLaneIsNotOverTaking) {
+  // On east_1 all along, past npc1 on east_0: driving faster in its own lane than the traffic in
+  // the next is not overtaking (law47 is not broken by it), though it goes from behind npc1,
+  // beside it, to ahead.
   const std::vector<double> s = {60, 62, 64, 66, 68, 70, 72, 74, 76, 78};
   const Trace trace = overtaking_trace(straight, std::vector<std::string>(10, "east_1"), s,
                                        std::vector<double>(10, 0));
   EXPECT_EQ(law_values(trace, straight, "trace |= isOverTaking;\n").values,
-            (std::vector<double>{0, 0, 0, 1, 1, 1, 1, 1, 0, 0}));
+            std::vector<double>(10, 0));
+  EXPECT_GT(robustness_at_start(trace, straight, "trace |= G (~isOverTaking);\n"), 0);
+}
+
+TEST_F(LawSignalsTest, PassingASlowCarAfterChangingLaneOutOfItsLaneAndBackIsOverTaking) {
+  // npc1 drives east_0 at 1 m a sample, the ego at 3 behind it: out to east_1 (samples 1-4)
+  // while npc1 is still ahead, beside it at 4-8, back to east_0 (11-14) once it is behind.
+  Trace trace = law_trace(straight, 17);
+  const std::vector<double> offsets = {0, 0.8, 1.6,  -1.4, -0.6, 0,   0, 0, 0,
+                                       0, 0,   -0.8, -1.6, 1.4,  0.6, 0, 0};
+  for (std::size_t i = 0; i < 17; ++i) {
+    const double step = static_cast<double>(i);
+    const bool out = i >= 3 && i <= 12;
+    put_on_lane(straight, trace.actors[0], i, out ? "east_1" : "east_0", 50 + 3 * step, offsets[i]);
+    put_on_lane(straight, trace.actors[1], i, "east_0", 62 + step);
+  }
+  std::vector<double> expected(17, 0);
+  std::fill(expected.begin() + 1, expected.begin() + 15, 1);
+  EXPECT_EQ(law_values(trace, straight, "trace |= isOverTaking;\n").values, expected);
 }
 
 TEST_F(LawSignalsTest, FollowingBeingPassedOrMeetingAVehicleIsNotOverTaking) {
@@ -478,11 +497,12 @@ TEST_F(LawSignalsTest, FollowingBeingPassedOrMeetingAVehicleIsNotOverTaking) {
                                    {60, 62, 64, 66, 68, 70, 72, 74, 76, 78}, zeros);
   for (std::size_t i = 0; i < 10; ++i) meeting.actors[1].heading[i] = std::numbers::pi;
   EXPECT_EQ(law_values(meeting, straight, "trace |= isOverTaking;\n").values, zeros);
-  // The run ending before npc1 is behind: still overtaking while beside it.
-  const Trace cut = overtaking_trace(straight, std::vector<std::string>(5, "east_1"),
-                                     {60, 62, 64, 66, 68}, std::vector<double>(5, 0));
+  // The run ending before npc1 is behind: still overtaking while beside it, from the lane
+  // change out of npc1's lane (samples 1-2).
+  const Trace cut = overtaking_trace(straight, {"east_0", "east_0", "east_1", "east_1", "east_1"},
+                                     {60, 62, 64, 66, 68}, {0, 1.6, -1.4, 0, 0});
   EXPECT_EQ(law_values(cut, straight, "trace |= isOverTaking;\n").values,
-            (std::vector<double>{0, 0, 0, 1, 1}));
+            (std::vector<double>{0, 1, 1, 1, 1}));
 }
 
 TEST_F(LawSignalsTest, NoMapMarksNoHonkingZonesOrSpecialLocations) {
