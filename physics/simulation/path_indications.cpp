@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numbers>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "physics/map/lane_queries.hpp"
+#include "physics/simulation/lane_tracker.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -22,27 +25,56 @@ constexpr double kHalfTurn = std::numbers::pi / 2;
 
 struct PathSample {
   double s = 0;
-  std::optional<LaneIndex> lane;  // the lane the point lies inside, heading the path's way
-  double lateral = 0;             // from that lane's centre line, left positive
-  bool against = false;           // the lane runs against the path (the oncoming lane)
+  MapPose pose;                   // on the path
+  std::optional<LaneIndex> lane;  // the lane the point lies inside (LaneTracker's)
+  double lane_s = 0;              // where along it
 };
 
-std::vector<PathSample> sample_path(const RoadMap& map, const Polyline& path) {
+// The path every kSpacing metres, with the lane under each point. The lane is tracked as the
+// simulation tracks an actor's (cheap while the path stays on one lane; where lanes overlap, the
+// one heading most nearly the path's way when the path comes onto them).
+std::vector<PathSample> sample_path(const RoadMap& map, const Polyline& path,
+                                    double widest_half_lane) {
+  LaneTracker tracker(widest_half_lane);
   std::vector<PathSample> samples;
   const auto steps = static_cast<std::size_t>(std::ceil(path.length() / kSpacing));
+  samples.reserve(steps + 1);
+  const std::vector<MapPoint>& points = path.points();
+  const std::vector<double>& at = path.arc_lengths();
+  std::size_t segment = 0;  // the path's segment the sample lies on: walked, not searched for
   for (std::size_t i = 0; i <= steps; ++i) {
     PathSample sample;
     sample.s = std::min(path.length(), static_cast<double>(i) * kSpacing);
-    const auto on = project_to_lane(map, path.point_at(sample.s), path.heading_at(sample.s));
-    if (on && on->inside) {
-      sample.lane = on->lane;
-      sample.lateral = on->lateral;
-      sample.against = std::abs(angle_difference(lane_heading_at(map, on->lane, on->s),
-                                                 path.heading_at(sample.s))) > kHalfTurn;
+    while (segment + 2 < points.size() && at[segment + 1] <= sample.s) ++segment;
+    const MapPoint& a = points[segment];
+    const MapPoint& b = points[segment + 1];
+    const double t = (sample.s - at[segment]) / (at[segment + 1] - at[segment]);
+    sample.pose = {{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)},
+                   std::atan2(b.y - a.y, b.x - a.x)};
+    const LaneFix fix = tracker.update(map, sample.pose.position, sample.pose.heading);
+    if (fix.lane >= 0) {
+      sample.lane = static_cast<LaneIndex>(fix.lane);
+      sample.lane_s = fix.s;
     }
     samples.push_back(sample);
   }
   return samples;
+}
+
+// The sample's offset from its lane's centre line, left positive (looked at near lane changes
+// only).
+double lateral_of(const RoadMap& map, const PathSample& sample) {
+  const auto centre = lane_pose_at(map, *sample.lane, sample.lane_s);
+  if (!centre) return 0;
+  const double dx = sample.pose.position.x - centre->position.x;
+  const double dy = sample.pose.position.y - centre->position.y;
+  return -dx * std::sin(centre->heading) + dy * std::cos(centre->heading);
+}
+
+// Whether the sample's lane runs against the path (the oncoming lane).
+bool against(const RoadMap& map, const PathSample& sample) {
+  return std::abs(angle_difference(lane_heading_at(map, *sample.lane, sample.lane_s),
+                                   sample.pose.heading)) > kHalfTurn;
 }
 
 bool holds(const std::vector<LaneIndex>& lanes, LaneIndex lane) {
@@ -73,7 +105,7 @@ bool moves_sideways(const RoadMap& map, const std::vector<PathSample>& samples, 
   const PathSample& b = samples[k + 1];
   if (!a.lane || !b.lane) return false;
   if (*a.lane != *b.lane && !holds(map.lane(*a.lane).successors, *b.lane)) return false;
-  return toward * (b.lateral - a.lateral) > kSideways * (b.s - a.s);
+  return toward * (lateral_of(map, b) - lateral_of(map, a)) > kSideways * (b.s - a.s);
 }
 
 // The lane changes: each crossing into a neighbour, stretched back and on while the path moves
@@ -110,7 +142,7 @@ std::vector<IndicationStretch> lane_changes(const RoadMap& map,
       ++end;
     // The driver's left is the lane's unless it drives against the lane (back from the oncoming
     // lane after passing).
-    const bool drivers_left = left != samples[previous].against;
+    const bool drivers_left = left != against(map, samples[previous]);
     changes.push_back(
         {samples[begin].s, samples[end].s,
          drivers_left ? vehicle_signal::left_indicator : vehicle_signal::right_indicator});
@@ -167,9 +199,10 @@ std::vector<IndicationStretch> junction_turns(const RoadMap& map,
 
 }  // namespace
 
-std::vector<IndicationStretch> path_indications(const RoadMap& map, const Polyline& path) {
+std::vector<IndicationStretch> path_indications(const RoadMap& map, const Polyline& path,
+                                                double widest_half_lane) {
   if (path.points().size() < 2 || path.length() <= 0) return {};
-  const std::vector<PathSample> samples = sample_path(map, path);
+  const std::vector<PathSample> samples = sample_path(map, path, widest_half_lane);
   std::vector<IndicationStretch> stretches = lane_changes(map, samples);
   for (const IndicationStretch& turn : junction_turns(map, samples)) stretches.push_back(turn);
   std::sort(

@@ -3,7 +3,7 @@
 // indication stretches in path arc length, which indicator_at (route_indications.hpp) then reads
 // with the same notice as for a lane route. The path is read as the map sees it, so the rule does
 // not depend on how a leg was made:
-//   - a lane change is where the lane under the path (project_to_lane, heading its way) becomes a
+//   - a lane change is where the lane under the path (as LaneTracker finds it) becomes a
 //     neighbour of the one before (or of a lane following it); it lasts while the path moves
 //     sideways towards that neighbour around the crossing, and indicates towards it;
 //   - a junction turn is a run of path points on one junction's lanes; it indicates as the lane
@@ -19,7 +19,9 @@
 
 namespace scenfuzz {
 
-// The stretches of `path` (empty for an empty path), sorted by begin.
-std::vector<IndicationStretch> path_indications(const RoadMap& map, const Polyline& path);
+// The stretches of `path` (empty for an empty path), sorted by begin. `widest_half_lane` is the
+// map's (lane_tracker.hpp), worked out once for all the paths on it.
+std::vector<IndicationStretch> path_indications(const RoadMap& map, const Polyline& path,
+                                                double widest_half_lane);
 
 }  // namespace scenfuzz

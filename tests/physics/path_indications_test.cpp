@@ -12,6 +12,7 @@
 #include "physics/actors/trajectory.hpp"
 #include "physics/map/builtin_maps.hpp"
 #include "physics/map/lane_route.hpp"
+#include "physics/simulation/lane_tracker.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -23,6 +24,10 @@ RoadMap builtin(const std::string& name, const std::vector<MapParameterValue>& p
 }
 
 Polyline line(const std::vector<MapPoint>& points) { return Polyline(points); }
+
+std::vector<IndicationStretch> indications(const RoadMap& map, const Polyline& path) {
+  return path_indications(map, path, widest_half_lane(map));
+}
 
 LanePosition at(const RoadMap& map, const std::string& lane, double s) {
   return {*map.find_lane(lane), s, 0};
@@ -39,7 +44,7 @@ void expect_as_the_route(const RoadMap& map, LanePosition from, LanePosition to)
   const Polyline path = route_path(map, route, 0, kChange, 1);
   const std::vector<IndicationStretch> expected =
       route_indications(map, route.segments, lane_change_stretches(map, route, kChange));
-  const std::vector<IndicationStretch> read = path_indications(map, path);
+  const std::vector<IndicationStretch> read = indications(map, path);
   ASSERT_EQ(read.size(), expected.size());
   for (std::size_t k = 0; k < read.size(); ++k) {
     EXPECT_EQ(read[k].indicator, expected[k].indicator) << k;
@@ -66,7 +71,7 @@ TEST(PathIndicationsTest, AFreePathIntoTheNextLaneIndicatesWhileItMovesOver) {
   // straight?two_way=0: east_0 at y = -5.25, east_1 at y = -1.75; straight across in 30 m.
   const RoadMap map = builtin("straight", {{"two_way", 0}});
   const Polyline path = line({{10, -5.25}, {50, -5.25}, {80, -1.75}, {120, -1.75}});
-  const std::vector<IndicationStretch> read = path_indications(map, path);
+  const std::vector<IndicationStretch> read = indications(map, path);
   ASSERT_EQ(read.size(), 1u);
   EXPECT_EQ(read[0].indicator, sig::left_indicator);
   EXPECT_NEAR(read[0].begin, 40, 1.5);
@@ -78,7 +83,7 @@ TEST(PathIndicationsTest, OutAcrossTheCentreLineAndBackIndicatesLeftThenRight) {
   const RoadMap map = builtin("straight", {{"lanes", 1}, {"two_way", 1}});
   const Polyline path =
       line({{10, -1.75}, {50, -1.75}, {70, 1.75}, {110, 1.75}, {130, -1.75}, {170, -1.75}});
-  const std::vector<IndicationStretch> read = path_indications(map, path);
+  const std::vector<IndicationStretch> read = indications(map, path);
   ASSERT_EQ(read.size(), 2u);
   EXPECT_EQ(read[0].indicator, sig::left_indicator);
   EXPECT_EQ(read[1].indicator, sig::right_indicator);
@@ -92,8 +97,8 @@ TEST(PathIndicationsTest, OutAcrossTheCentreLineAndBackIndicatesLeftThenRight) {
 
 TEST(PathIndicationsTest, ADriftWithinTheLaneOrAnEmptyPathIndicatesNothing) {
   const RoadMap map = builtin("straight", {{"two_way", 0}});
-  EXPECT_TRUE(path_indications(map, line({{10, -5.25}, {50, -6.5}, {90, -4.0}})).empty());
-  EXPECT_TRUE(path_indications(map, Polyline()).empty());
+  EXPECT_TRUE(indications(map, line({{10, -5.25}, {50, -6.5}, {90, -4.0}})).empty());
+  EXPECT_TRUE(indications(map, Polyline()).empty());
 }
 
 }  // namespace

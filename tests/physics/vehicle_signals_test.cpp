@@ -1,7 +1,8 @@
 // Vehicle signals through whole simulations: the reference driver indicates before a lane change,
 // an overtaking manoeuvre and a turn and not on a straight drive, uses its lights as the time of
 // day and the weather ask, dips its high beam for an oncoming car and shows brake lights; lane
-// following NPCs indicate before their lane changes and turns; a version 1 plugin still runs
+// following NPCs and waypoint NPCs indicate before their lane changes and turns (and a waypoint
+// NPC driving straight never does, a pedestrian has no lamps); a version 1 plugin still runs
 // with its signals off, and a version 2 plugin's signals reach the trace and it is told the
 // signals of the vehicles it perceives.
 #include <gtest/gtest.h>
