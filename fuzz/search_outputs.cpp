@@ -15,6 +15,7 @@
 #include "fuzz/search_identity.hpp"
 #include "fuzz/tmin_finding.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/failure_mode.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/trace/trace_export.hpp"
 #include "physics/trace/trace_svg.hpp"
@@ -56,6 +57,16 @@ std::string simulation_flags(const SimulationCommandOptions& options) {
   if (options.ego_start_timeout != defaults.ego_start_timeout)
     flags += " --ego-start-timeout " + format_number(options.ego_start_timeout);
   return flags;
+}
+
+// What the mode's key leaves out (the other's class, the ego's fine activity and road feature,
+// the touching sides): a line of the finding's header, empty when there is nothing to describe.
+std::string seen_as_line(const ScenarioRun& run, const std::string& comment) {
+  const std::vector<std::size_t> order = violation_order(run.verdicts);
+  if (order.empty() || !run.trace || !run.map) return "";
+  return comment + "seen as: " +
+         failure_mode_details(describe_failure(*run.trace, *run.map, run.verdicts[order.front()])) +
+         "\n";
 }
 
 std::string seconds_text(double seconds) {
@@ -268,6 +279,7 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
     header += also_violated_lines(finding, run, comment);
   }
   header += comment + "failure mode: " + finding.mode + "\n";
+  if (!finding.ego_failure()) header += seen_as_line(run, comment);
   if (!run.responsibilities.empty()) {
     const CollisionResponsibility& first = run.responsibilities.front();
     header += comment + "collision with " + run.trace->actors[first.other].name + ", " +
