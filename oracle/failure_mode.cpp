@@ -196,12 +196,9 @@ std::string_view contact_direction_name(ContactDirection direction) {
 }
 
 std::string failure_mode_key(const FailureMode& mode) {
-  std::string other = mode.other_role.empty() ? std::string("-") : mode.other_role;
-  if (!mode.other_role.empty() && mode.direction)
-    other += " " + std::string(contact_direction_name(*mode.direction));
   std::string key = mode.atom;
   key += " | " + std::string(failure_event_name(mode.event));
-  key += " | " + other;
+  key += " | " + (mode.other_role.empty() ? std::string("-") : mode.other_role);
   key += " | " + (mode.responsibility.empty() ? std::string("-") : mode.responsibility);
   key += " | " + std::string(ego_phase_name(mode.phase));
   return key;
@@ -210,6 +207,8 @@ std::string failure_mode_key(const FailureMode& mode) {
 std::string failure_mode_details(const FailureMode& mode) {
   std::string text = mode.other_class.empty() ? std::string("no road user near")
                                               : mode.other_class + " " + mode.other_role;
+  if (!mode.other_class.empty() && mode.direction)
+    text += " " + std::string(contact_direction_name(*mode.direction));
   text += "; ego " + std::string(ego_activity_name(mode.ego_activity)) + " on a " +
           std::string(road_feature_name(mode.road_feature));
   if (mode.ego_side && mode.other_side)

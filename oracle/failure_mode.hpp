@@ -1,12 +1,12 @@
 // Failure modes: what makes two findings "the same failure". As libFuzzer and ClusterFuzz dedupe
 // crashes by their crash state (the top frames), a mode is keyed by what identifies a failure to
 // a user and stays the same from run to run of it: the violated atom, the kind of event
-// (collision, near miss, stuck, rule), the other road user's role (and for a collision where it
-// was: ahead, beside, behind), whose fault a collision was, and the ego's coarse manoeuvre phase
-// (ego_phase.hpp). What flickers between runs of one failure (the touching sides, the fine
-// activity label, the road feature, the other's class within a flow) describes the finding but is
-// not in the key. The search writes one representative finding per key and counts the rest
-// (docs/search.md, "Findings and failure modes").
+// (collision, near miss, stuck, rule), the other road user's role, whose fault a collision was,
+// and the ego's coarse manoeuvre phase (ego_phase.hpp). What flickers between runs of one failure
+// (the touching sides, where the other was at contact, the fine activity label, the road feature,
+// the other's class within a flow) describes the finding but is not in the key. The search writes
+// one representative finding per key and counts the rest (docs/search.md, "Findings and failure
+// modes").
 #pragma once
 
 #include <cstddef>
@@ -56,18 +56,19 @@ enum class FailureEvent { collision, stuck, near_miss, rule };
 
 // Where the other road user's centre was in the ego's frame just before contact: past the ego's
 // front bumper line, behind its rear one, or between them. Which corners touched flickers from
-// run to run of one crash; this does not unless the other is level with a bumper.
+// run to run of one crash; this does less, but still does for a car cutting in level with a bumper
+// (ahead in one run, beside in the next), so it describes a finding and is not in the key.
 enum class ContactDirection { ahead, beside, behind };
 
 struct FailureMode {
   // The key's fields (failure_mode_key).
   std::string atom;  // the violated atom as written, or "collision"
   FailureEvent event = FailureEvent::rule;
-  std::string other_role;  // its name; a background-traffic vehicle by its flow's name
-  std::optional<ContactDirection> direction;  // a collision's
-  std::string responsibility;                 // "ego", "other", "shared"; empty: no collision
+  std::string other_role;      // its name; a background-traffic vehicle by its flow's name
+  std::string responsibility;  // "ego", "other", "shared"; empty: no collision
   EgoPhase phase = EgoPhase::in_lane;
   // The description of this finding (failure_mode_details), not the key.
+  std::optional<ContactDirection> direction;  // a collision's
   std::string other_class;  // "car", "pedestrian", "obstacle", ...; empty: no other actor
   EgoActivity ego_activity = EgoActivity::cruising;
   RoadFeature road_feature = RoadFeature::straight;
@@ -79,12 +80,11 @@ std::string_view road_feature_name(RoadFeature feature);
 std::string_view failure_event_name(FailureEvent event);
 std::string_view contact_direction_name(ContactDirection direction);
 
-// The mode as one line, `atom | event | other | responsibility | phase`, the other as its role
-// and for a collision its direction ("lead ahead"), "-" for none (the key findings are grouped
-// by; docs/search.md documents it).
+// The mode as one line, `atom | event | other | responsibility | phase`, the other as its role,
+// "-" for none (the key findings are grouped by; docs/search.md documents it).
 std::string failure_mode_key(const FailureMode& mode);
-// The rest of what was seen, for a finding's header: "car lead; ego pulling out on a straight;
-// touching ego front, lead rear".
+// The rest of what was seen, for a finding's header: "car lead ahead; ego pulling out on a
+// straight; touching ego front, lead rear".
 std::string failure_mode_details(const FailureMode& mode);
 
 // A background-traffic vehicle is named "<flow>.<n>", numbered in spawn order, which depends on

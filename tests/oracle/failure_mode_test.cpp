@@ -163,9 +163,9 @@ TEST(FailureModeTest, TheKeyTellsModesApartByEveryKeyField) {
   mode.ego_activity = EgoActivity::following;
   mode.ego_side = BodySide::front;
   mode.other_side = BodySide::rear;
-  EXPECT_EQ(failure_mode_key(mode), "collision | collision | npc1 ahead | ego | in lane");
+  EXPECT_EQ(failure_mode_key(mode), "collision | collision | npc1 | ego | in lane");
   EXPECT_EQ(failure_mode_details(mode),
-            "car npc1; ego following on a straight; touching ego front, npc1 rear");
+            "car npc1 ahead; ego following on a straight; touching ego front, npc1 rear");
   auto differs = [&](auto change) {
     FailureMode other = mode;
     change(other);
@@ -174,11 +174,11 @@ TEST(FailureModeTest, TheKeyTellsModesApartByEveryKeyField) {
   EXPECT_TRUE(differs([](FailureMode& m) { m.atom = "spec1: d > 2"; }));
   EXPECT_TRUE(differs([](FailureMode& m) { m.event = FailureEvent::near_miss; }));
   EXPECT_TRUE(differs([](FailureMode& m) { m.other_role = "npc2"; }));
-  EXPECT_TRUE(differs([](FailureMode& m) { m.direction = ContactDirection::behind; }));
   EXPECT_TRUE(differs([](FailureMode& m) { m.responsibility = "other"; }));
   EXPECT_TRUE(differs([](FailureMode& m) { m.phase = EgoPhase::leaving_lane; }));
   // What flickers between runs of one failure describes it but does not split it.
   EXPECT_FALSE(differs([](FailureMode& m) { m.ego_side = BodySide::left; }));
+  EXPECT_FALSE(differs([](FailureMode& m) { m.direction = ContactDirection::beside; }));
   EXPECT_FALSE(differs([](FailureMode& m) { m.ego_activity = EgoActivity::cruising; }));
   EXPECT_FALSE(differs([](FailureMode& m) { m.road_feature = RoadFeature::merge; }));
   EXPECT_FALSE(differs([](FailureMode& m) { m.other_class = "van"; }));
@@ -238,7 +238,7 @@ TEST(FailureModeTest, OneFailureTouchingAtAnotherCornerIsOneMode) {
   ASSERT_NE(a.ego_side, b.ego_side);  // the physics told them apart
   ASSERT_NE(a.ego_activity, b.ego_activity);
   EXPECT_EQ(failure_mode_key(a), failure_mode_key(b));
-  EXPECT_EQ(failure_mode_key(a), "collision | collision | lead ahead | - | leaving lane");
+  EXPECT_EQ(failure_mode_key(a), "collision | collision | lead | - | leaving lane");
 }
 
 // Two different failures with the same actor: the ego clipping the car ahead as it pulls out,
@@ -254,11 +254,14 @@ TEST(FailureModeTest, DifferentFailuresWithTheSameActorAreDifferentModes) {
   rammed.actors.push_back(
       still_actor(rammed, "lead", TraceActorKind::vehicle, BodyShape::box, 4.5, 1.9, 45.6, -5.25));
   rammed.collisions.push_back({4.0, kEgo, 1, {47.8, -5.25}, BodySide::rear, BodySide::front});
-  const std::string clip_key = failure_mode_key(describe_failure(clip, map, collision_verdict(4)));
-  const std::string rammed_key =
-      failure_mode_key(describe_failure(rammed, map, collision_verdict(4)));
-  EXPECT_EQ(rammed_key, "collision | collision | lead behind | - | standing");
+  const FailureMode clip_mode = describe_failure(clip, map, collision_verdict(4));
+  const FailureMode rammed_mode = describe_failure(rammed, map, collision_verdict(4));
+  const std::string clip_key = failure_mode_key(clip_mode);
+  const std::string rammed_key = failure_mode_key(rammed_mode);
+  EXPECT_EQ(rammed_key, "collision | collision | lead | - | standing");
   EXPECT_NE(clip_key, rammed_key);
+  EXPECT_EQ(clip_mode.direction, ContactDirection::ahead);  // described, not keyed
+  EXPECT_EQ(rammed_mode.direction, ContactDirection::behind);
 
   Trace missed = clip;
   missed.collisions.clear();
@@ -317,10 +320,10 @@ TEST(FailureModeTest, ACollisionNamesItsOtherActorAndSidesAtItsMoment) {
   verdict.robustness = -0.3;
   verdict.time = 1.0;  // nearest approach is not where the mode is read: the collision is
   const FailureMode mode = describe_failure(trace, map, verdict);
-  EXPECT_EQ(failure_mode_key(mode), "collision | collision | flow2 ahead | - | in lane");
+  EXPECT_EQ(failure_mode_key(mode), "collision | collision | flow2 | - | in lane");
   EXPECT_EQ(mode.ego_activity, EgoActivity::following);
   EXPECT_EQ(failure_mode_details(mode),
-            "car flow2; ego following on a straight; touching ego front, flow2 rear");
+            "car flow2 ahead; ego following on a straight; touching ego front, flow2 rear");
 }
 
 TEST(FailureModeTest, AViolationWithoutCollisionNamesTheNearestRoadUser) {
