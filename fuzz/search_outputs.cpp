@@ -10,11 +10,13 @@
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/coverage_summary.hpp"
 #include "fuzz/law_coverage_report.hpp"
+#include "fuzz/parameter_provenance.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "fuzz/search_identity.hpp"
 #include "fuzz/tmin_finding.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/failure_mode.hpp"
 #include "oracle/trace_audit.hpp"
 #include "physics/trace/trace_export.hpp"
 #include "physics/trace/trace_svg.hpp"
@@ -56,6 +58,16 @@ std::string simulation_flags(const SimulationCommandOptions& options) {
   if (options.ego_start_timeout != defaults.ego_start_timeout)
     flags += " --ego-start-timeout " + format_number(options.ego_start_timeout);
   return flags;
+}
+
+// What the mode's key leaves out (the other's class, the ego's fine activity and road feature,
+// the touching sides): a line of the finding's header, empty when there is nothing to describe.
+std::string seen_as_line(const ScenarioRun& run, const std::string& comment) {
+  const std::vector<std::size_t> order = violation_order(run.verdicts);
+  if (order.empty() || !run.trace || !run.map) return "";
+  return comment + "seen as: " +
+         failure_mode_details(describe_failure(*run.trace, *run.map, run.verdicts[order.front()])) +
+         "\n";
 }
 
 std::string seconds_text(double seconds) {
@@ -268,6 +280,7 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
     header += also_violated_lines(finding, run, comment);
   }
   header += comment + "failure mode: " + finding.mode + "\n";
+  if (!finding.ego_failure()) header += seen_as_line(run, comment);
   if (!run.responsibilities.empty()) {
     const CollisionResponsibility& first = run.responsibilities.front();
     header += comment + "collision with " + run.trace->actors[first.other].name + ", " +
@@ -281,6 +294,14 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
   return header + comment + "replay: scenfuzz run " + shell_quote(scenario_path.string()) +
          scenario_flag + " --seed " + std::to_string(finding.seed) +
          simulation_flags(options_.simulation) + "\n";
+}
+
+// The concrete scenario of a finding: an AVUnit file's header names each dimension inside an
+// expression by the value of what the user wrote (parameter_provenance.hpp).
+std::string SearchOutputs::concrete_text(std::span<const double> values) const {
+  const std::string printed = print_concrete_scenario(file_, scenario_, values);
+  if (is_wmg_file(file_.path())) return printed;
+  return with_parameter_provenance(printed, file_, scenario_, values);
 }
 
 // The finding's other violations (later specs, and a conjunction's later conjuncts), a line
@@ -356,8 +377,8 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
   if (finding.ego_failure() && !run.trace->ego_failure->last_observation.empty())
     files.emplace_back(finding_path(finding, ".observation.json"),
                        run.trace->ego_failure->last_observation + "\n");
-  files.emplace_back(scenario_path, finding_header(finding, run, scenario_path) +
-                                        print_concrete_scenario(file_, scenario_, run.values));
+  files.emplace_back(scenario_path,
+                     finding_header(finding, run, scenario_path) + concrete_text(run.values));
   for (const auto& [path, content] : files) {
     failure = write_file_atomically(path, content);
     fatal = !failure.empty();

@@ -60,20 +60,25 @@ std::optional<EgoActivity> turning(const RoadMap& map, const TraceActor& ego, st
   return std::nullopt;
 }
 
-// Another present road user whose centre lies ahead of the ego within its lane's width (2 m
-// either side of the ego's heading line) and within max(10 m, 3 s at the ego's speed).
-bool following(const Trace& trace, std::size_t i) {
+// The nearest other present road user whose centre lies ahead of the ego within its lane's width
+// (2 m either side of the ego's heading line) and within max(10 m, 3 s at the ego's speed).
+std::optional<ActorId> followed_road_user(const Trace& trace, std::size_t i) {
   const TraceActor& ego = trace.actors[kEgo];
   const double c = std::cos(ego.heading[i]), s = std::sin(ego.heading[i]);
-  const double reach = std::max(10.0, 3 * ego.speed[i]);
+  double reach = std::max(10.0, 3 * ego.speed[i]);
+  std::optional<ActorId> followed;
   for (ActorId id = 1; id < trace.actors.size(); ++id) {
     const TraceActor& other = trace.actors[id];
     if (other.kind == TraceActorKind::obstacle || !present_at(other, i)) continue;
     const double dx = other.x[i] - ego.x[i], dy = other.y[i] - ego.y[i];
     const double along = dx * c + dy * s, across = -dx * s + dy * c;
-    if (along > 0 && along < reach && std::abs(across) < 2) return true;
+    if (along > 0 && along < reach && std::abs(across) < 2) reach = along, followed = id;
   }
-  return false;
+  return followed;
+}
+
+bool following(const Trace& trace, std::size_t i) {
+  return followed_road_user(trace, i).has_value();
 }
 
 // A ring: a lane whose centre line closes on itself (the built-in roundabout's ring).
@@ -171,17 +176,45 @@ std::string_view road_feature_name(RoadFeature feature) {
   return "straight";
 }
 
+std::string_view failure_event_name(FailureEvent event) {
+  switch (event) {
+    case FailureEvent::collision: return "collision";
+    case FailureEvent::stuck: return "stuck";
+    case FailureEvent::near_miss: return "near miss";
+    case FailureEvent::rule: return "rule";
+  }
+  return "rule";
+}
+
+std::string_view contact_direction_name(ContactDirection direction) {
+  switch (direction) {
+    case ContactDirection::ahead: return "ahead";
+    case ContactDirection::beside: return "beside";
+    case ContactDirection::behind: return "behind";
+  }
+  return "beside";
+}
+
 std::string failure_mode_key(const FailureMode& mode) {
   std::string key = mode.atom;
-  key += " | " +
-         (mode.other_class.empty() ? std::string("-") : mode.other_class + " " + mode.other_role);
+  key += " | " + std::string(failure_event_name(mode.event));
+  key += " | " + (mode.other_role.empty() ? std::string("-") : mode.other_role);
   key += " | " + (mode.responsibility.empty() ? std::string("-") : mode.responsibility);
-  key += " | " + std::string(ego_activity_name(mode.ego_activity));
-  key += " | " + std::string(road_feature_name(mode.road_feature));
-  if (mode.ego_side && mode.other_side)
-    key += " | " + std::string(body_side_name(*mode.ego_side)) + "-" +
-           std::string(body_side_name(*mode.other_side));
+  key += " | " + std::string(ego_phase_name(mode.phase));
   return key;
+}
+
+std::string failure_mode_details(const FailureMode& mode) {
+  std::string text = mode.other_class.empty() ? std::string("no road user near")
+                                              : mode.other_class + " " + mode.other_role;
+  if (!mode.other_class.empty() && mode.direction)
+    text += " " + std::string(contact_direction_name(*mode.direction));
+  text += "; ego " + std::string(ego_activity_name(mode.ego_activity)) + " on a " +
+          std::string(road_feature_name(mode.road_feature));
+  if (mode.ego_side && mode.other_side)
+    text += "; touching ego " + std::string(body_side_name(*mode.ego_side)) + ", " +
+            mode.other_role + " " + std::string(body_side_name(*mode.other_side));
+  return text;
 }
 
 std::string actor_role(const TraceActor& actor) {
@@ -291,6 +324,29 @@ std::optional<ActorId> nearest_road_user(const Trace& trace, std::size_t i) {
 
 }  // namespace
 
+namespace {
+
+// Where `other` was at the sample before contact (at contact when it is the first).
+ContactDirection contact_direction(const Trace& trace, ActorId other, std::size_t contact) {
+  const std::size_t i = contact > 0 ? contact - 1 : 0;
+  const TraceActor& ego = trace.actors[kEgo];
+  const TraceActor& them = trace.actors[other];
+  const double along = (them.x[i] - ego.x[i]) * std::cos(ego.heading[i]) +
+                       (them.y[i] - ego.y[i]) * std::sin(ego.heading[i]);
+  if (along >= ego.length / 2) return ContactDirection::ahead;
+  if (along <= -ego.length / 2) return ContactDirection::behind;
+  return ContactDirection::beside;
+}
+
+FailureEvent failure_event(const Trace& trace, const SpecVerdict& verdict) {
+  if (first_ego_collision(trace)) return FailureEvent::collision;
+  if (verdict.ending == VerdictEnding::stuck) return FailureEvent::stuck;
+  if (verdict.actor_distance) return FailureEvent::near_miss;
+  return FailureEvent::rule;
+}
+
+}  // namespace
+
 FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict) {
   FailureMode mode;
   if (verdict.name == kNoCollisionSpec)
@@ -309,13 +365,18 @@ FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecV
     other = ego_first ? collision->second : collision->first;
     mode.ego_side = ego_first ? collision->first_side : collision->second_side;
     mode.other_side = ego_first ? collision->second_side : collision->first_side;
+    mode.direction = contact_direction(trace, *other, at);
   } else {
-    other = nearest_road_user(trace, at);
+    // The one it follows, else the nearest: a road user beside it is nearer at times.
+    other = followed_road_user(trace, at);
+    if (!other) other = nearest_road_user(trace, at);
   }
   if (other) {
     mode.other_class = actor_class_name(trace.actors[*other]);
     mode.other_role = actor_role(trace.actors[*other]);
   }
+  mode.event = failure_event(trace, verdict);
+  mode.phase = ego_phase_at(trace, map, at);
   mode.ego_activity = ego_activity_at(trace, map, at);
   mode.road_feature = road_feature_at(trace, map, at);
   return mode;

@@ -1,7 +1,12 @@
-// Failure modes: what makes two findings "the same failure". A signature names the violated
-// atom, the other road user involved (class and role), whose fault a collision was, what the ego
-// was doing and where (the road feature), and the sides that touched. The search writes one
-// representative finding per signature and counts the rest (docs/search.md, "Failure modes").
+// Failure modes: what makes two findings "the same failure". As libFuzzer and ClusterFuzz dedupe
+// crashes by their crash state (the top frames), a mode is keyed by what identifies a failure to
+// a user and stays the same from run to run of it: the violated atom, the kind of event
+// (collision, near miss, stuck, rule), the other road user's role, whose fault a collision was,
+// and the ego's coarse manoeuvre phase (ego_phase.hpp). What flickers between runs of one failure
+// (the touching sides, where the other was at contact, the fine activity label, the road feature,
+// the other's class within a flow) describes the finding but is not in the key. The search writes
+// one representative finding per key and counts the rest (docs/search.md, "Findings and failure
+// modes").
 #pragma once
 
 #include <cstddef>
@@ -10,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "oracle/ego_phase.hpp"
 #include "oracle/judge.hpp"
 #include "physics/collision/body_side.hpp"
 #include "physics/map/road_map.hpp"
@@ -42,11 +48,28 @@ inline constexpr double kCrosswalkMargin = 3;    // m around a crosswalk's outli
 inline constexpr double kJunctionMargin = 5;     // m around a junction's outline
 inline constexpr double kMergeLookahead = 30;    // m before a lane that merges into another
 
+// What happened, the first that applies: the ego touched another road user; the spec was
+// violated only because the run ended while the ego was stuck (judge.hpp); the violated atom
+// compares the distance between two road users (SpecVerdict::actor_distance, so that all
+// violations of one distance atom are one kind, whatever its threshold); else a rule was broken.
+enum class FailureEvent { collision, stuck, near_miss, rule };
+
+// Where the other road user's centre was in the ego's frame just before contact: past the ego's
+// front bumper line, behind its rear one, or between them. Which corners touched flickers from
+// run to run of one crash; this does less, but still does for a car cutting in level with a bumper
+// (ahead in one run, beside in the next), so it describes a finding and is not in the key.
+enum class ContactDirection { ahead, beside, behind };
+
 struct FailureMode {
-  std::string atom;            // the violated atom as written, or "collision"
-  std::string other_class;     // "car", "pedestrian", "obstacle", ...; empty: no other actor
+  // The key's fields (failure_mode_key).
+  std::string atom;  // the violated atom as written, or "collision"
+  FailureEvent event = FailureEvent::rule;
   std::string other_role;      // its name; a background-traffic vehicle by its flow's name
-  std::string responsibility;  // "ego", "other", "shared"; empty: no collision judged
+  std::string responsibility;  // "ego", "other", "shared"; empty: no collision
+  EgoPhase phase = EgoPhase::in_lane;
+  // The description of this finding (failure_mode_details), not the key.
+  std::optional<ContactDirection> direction;  // a collision's
+  std::string other_class;  // "car", "pedestrian", "obstacle", ...; empty: no other actor
   EgoActivity ego_activity = EgoActivity::cruising;
   RoadFeature road_feature = RoadFeature::straight;
   std::optional<BodySide> ego_side, other_side;  // a collision's touching sides
@@ -54,9 +77,15 @@ struct FailureMode {
 
 std::string_view ego_activity_name(EgoActivity activity);
 std::string_view road_feature_name(RoadFeature feature);
+std::string_view failure_event_name(FailureEvent event);
+std::string_view contact_direction_name(ContactDirection direction);
 
-// The mode as one line, fields separated by " | " (the key findings are grouped by).
+// The mode as one line, `atom | event | other | responsibility | phase`, the other as its role,
+// "-" for none (the key findings are grouped by; docs/search.md documents it).
 std::string failure_mode_key(const FailureMode& mode);
+// The rest of what was seen, for a finding's header: "car lead ahead; ego pulling out on a
+// straight; touching ego front, lead rear".
+std::string failure_mode_details(const FailureMode& mode);
 
 // A background-traffic vehicle is named "<flow>.<n>", numbered in spawn order, which depends on
 // the seed; its role is the flow. Scenario actors (whose names have no dot) are their name.
@@ -85,9 +114,10 @@ RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t 
                             RoadFeatureMemo& memo);
 
 // The failure mode of a violated verdict, responsibility left empty for the caller. The other
-// actor: the one the ego first collided with, if it collided, with the touching sides; else the
-// nearest road user (vehicle or pedestrian, centre to centre, within kNearbyActor) at the
-// verdict's time. The ego's activity and road feature: at the collision, else at that time.
+// actor: the one the ego first collided with, if it collided, with the touching sides and its
+// direction; else at the verdict's time the road user it was following (EgoActivity::following),
+// else the nearest (vehicle or pedestrian, centre to centre, within kNearbyActor). The ego's phase,
+// activity and road feature: at the collision, else at that time.
 inline constexpr double kNearbyActor = 50;  // m
 FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict);
 

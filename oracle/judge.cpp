@@ -141,6 +141,19 @@ double window_end(const Formula& eventually, const Trace& trace) {
   return eventually.interval ? std::min(end, eventually.interval->upper) : end;
 }
 
+bool reads_actor_distance(const SpecTerm& term) {
+  if (term.kind == TermKind::signal && term.name == "dis" && term.operands.size() == 2 &&
+      term.operands[0].kind == TermKind::object && term.operands[1].kind == TermKind::object)
+    return true;
+  return std::any_of(term.operands.begin(), term.operands.end(), reads_actor_distance);
+}
+
+// Whether an atom compares the distance between two road users (SpecVerdict::actor_distance).
+bool reads_actor_distance(const Formula& atom) {
+  return std::any_of(atom.terms.begin(), atom.terms.end(),
+                     [](const SpecTerm& term) { return reads_actor_distance(term); });
+}
+
 // A violated conjunction's violated conjuncts, the earliest first, and the verdict's atom and
 // time the first's. A conjunct violated only because the run ended (its robustness were the
 // run to go on is not negative) is left out unless the ego was stuck.
@@ -164,6 +177,7 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
       violated.atom = witness.atom->location;
       violated.atom_text = atom_text(file, violated.atom);
       violated.mode_text = mode_text(file, conjunct, *witness.atom, violated.atom_text);
+      violated.actor_distance = reads_actor_distance(*witness.atom);
     }
     verdict.conjuncts.push_back(std::move(violated));
   }
@@ -176,6 +190,7 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
   verdict.atom = verdict.conjuncts.front().atom;
   verdict.atom_text = verdict.conjuncts.front().atom_text;
   verdict.mode_text = verdict.conjuncts.front().mode_text;
+  verdict.actor_distance = verdict.conjuncts.front().actor_distance;
 }
 
 // One spec's verdict. Throws OracleError when the trace cannot answer it.
@@ -195,6 +210,7 @@ SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace
     verdict.atom = witness.atom->location;
     verdict.atom_text = atom_text(file, verdict.atom);
     verdict.mode_text = mode_text(file, spec.formula, *witness.atom, verdict.atom_text);
+    verdict.actor_distance = reads_actor_distance(*witness.atom);
   }
   if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, verdict);
   return verdict;

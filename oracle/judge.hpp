@@ -39,7 +39,8 @@ struct ViolatedConjunct {
   double time = 0;
   SourceLocation atom;
   std::string atom_text;
-  std::string mode_text;  // what names its failure mode (see SpecVerdict)
+  std::string mode_text;        // what names its failure mode (see SpecVerdict)
+  bool actor_distance = false;  // see SpecVerdict
 };
 
 struct SpecVerdict {
@@ -53,6 +54,9 @@ struct SpecVerdict {
   // What names the failure mode: the atom, or, when a disjunction or implication lies above it
   // (which side gave the value is then happenstance), the highest such subformula as written.
   std::string mode_text;
+  // Whether the responsible atom reads the distance between two road users (`dis(a, b)` of two
+  // trace projections): violated without contact, a near miss (failure_mode.hpp).
+  bool actor_distance = false;
   // What a search minimises: the robustness, or for a conjunction the conjunct guide
   // (search_guide.hpp); negative exactly when the robustness is.
   double guide = 0;

@@ -97,6 +97,32 @@ TEST_F(FuzzCommandTest, ACutInYieldsFindingsWithinTheBudget) {
   EXPECT_NE(run.out.find("finding"), std::string::npos) << run.out;
 }
 
+// A finding's header gives what the mode's key leaves out, and names a dimension whose range sits
+// in an expression (`cut_speed = ego_speed + range(-5, 2)`) by the speed it sets, not by the draw.
+TEST_F(FuzzCommandTest, AFindingsHeaderDescribesItsModeAndShowsTheValuesTheFileSets) {
+  ASSERT_EQ(fuzz(kCutIn, {"--budget", "60", "--seed", "3"}).exit_code, 1);
+  const nlohmann::json summary = this->summary();
+  ASSERT_GE(summary["findings"].size(), 1u);
+  const std::string text = slurp(summary["findings"][0]["file"].get<std::string>());
+  const std::string mode = summary["findings"][0]["mode"].get<std::string>();
+  EXPECT_NE(text.find("failure mode: " + mode + "\n// seen as: car cutter"), std::string::npos)
+      << text.substr(0, 600);
+  const std::size_t speed = text.find("//   cutter.init.speed = ");
+  ASSERT_NE(speed, std::string::npos) << text.substr(0, 1200);
+  const std::string line = text.substr(speed, text.find('\n', speed) - speed);
+  EXPECT_NE(line.find(" m/s, where range(-5, 2) drew "), std::string::npos) << line;
+  EXPECT_NE(line.find("(" + kCutIn + ":14:25)"), std::string::npos) << line;
+  // The speed is the ego's plus the draw, the ego's speed a dimension of its own.
+  const std::size_t ego = text.find("//   ego.init.speed = ");
+  ASSERT_NE(ego, std::string::npos);
+  const double ego_speed = std::stod(text.substr(ego + 22));
+  const double cutter_speed = std::stod(line.substr(25));
+  const double drawn = std::stod(line.substr(line.find(" drew ") + 6));
+  EXPECT_NEAR(cutter_speed, ego_speed + drawn, 1e-9) << line;
+  EXPECT_GE(drawn, -5.0);
+  EXPECT_LE(drawn, 2.0);
+}
+
 TEST_F(FuzzCommandTest, OneFindingPerFailureModeItsMostViolatingEvaluation) {
   // Seed 15: a search in which some mode's first evaluation is later outdone (asserted below).
   ASSERT_EQ(fuzz(kCutIn, {"--budget", "200", "--seed", "15"}).exit_code, 1);

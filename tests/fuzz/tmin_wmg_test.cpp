@@ -193,7 +193,8 @@ TEST_F(WmgTminCommandTest, RemovesThePlantedVehiclesAndWritesWmgSdlThatFailsTheS
   EXPECT_NE(tmin.out.find("removed vehicle Far1\nremoved vehicle Far2\n"), std::string::npos)
       << tmin.out;
   EXPECT_NE(tmin.out.find("actors 3 -> 1,"), std::string::npos) << tmin.out;
-  EXPECT_NE(mode_line(tmin.out).find("collision | car Cutter"), std::string::npos) << tmin.out;
+  EXPECT_NE(mode_line(tmin.out).find("collision | collision | Cutter | other"), std::string::npos)
+      << tmin.out;
   const std::string minimised = test::slurp(out_path);
   // A WMG SDL header, then the level-2 text without the planted vehicles.
   EXPECT_TRUE(minimised.starts_with("# scenfuzz tmin: " + input)) << minimised;

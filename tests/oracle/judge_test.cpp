@@ -140,6 +140,15 @@ TEST(JudgeTest, AViolatedSpecNamesItsAtomAndTime) {
   EXPECT_EQ(moving.atom_text, "ego_state.speed > 1.0");
 }
 
+// A violated distance between two road users is a near miss in the failure mode (failure_mode.hpp);
+// another atom is not, even when it reads the same actors.
+TEST(JudgeTest, AVerdictSaysWhetherItsAtomIsADistanceBetweenRoadUsers) {
+  const JudgedRun run = judge_text(kRearEnd);
+  ASSERT_EQ(run.verdicts.size(), 2u) << run.errors;
+  EXPECT_TRUE(run.verdicts[0].actor_distance);   // dis(ego_state, npc_truth) >= 20.0
+  EXPECT_FALSE(run.verdicts[1].actor_distance);  // ego_state.speed > 1.0
+}
+
 TEST(JudgeTest, WithoutSpecsTheCollisionOracleJudges) {
   // A stopped car 5 m ahead of an ego at 20 m/s: it cannot stop in time.
   const JudgedRun crash = judge_text(R"(

@@ -1,0 +1,44 @@
+// How a finding names the value of each search dimension. A range may sit inside an expression
+// (`speed: 10 + range(-3, 3)`): the dimension's own value is then the range's draw (-1.97), not
+// the value of what the user wrote (the speed, 8.03 m/s). A finding shows the resulting value of
+// the slot the dimension is named after and where it came from: "lead.init.speed = 8.03 m/s, where
+// range(-3, 3) drew -1.97 (base.avu:12:22)".
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include "lang/scenario.hpp"
+#include "lang/source_file.hpp"
+
+namespace scenfuzz {
+
+// Where one dimension's value came from. `value` is the slot's (the expression's) value.
+struct ParameterProvenance {
+  double value = 0;
+  double drawn = 0;
+  std::string range_text;  // the range as written in the file
+  SourceLocation location;
+};
+
+// The provenance of parameter `index` when its slot (the value at the path it is named after) is
+// an expression around it; nullopt when the slot is the range itself (its value is its draw), or
+// the parameter is discrete or a time of day (named by choice or clock time, never in arithmetic).
+std::optional<ParameterProvenance> parameter_provenance(const SourceFile& file,
+                                                        const ScenarioTemplate& scenario,
+                                                        std::span<const double> values,
+                                                        std::size_t index);
+
+// "lead.init.speed = 8.03 m/s, where range(-3, 3) drew -1.97 (base.avu:12:22)".
+std::string provenance_text(const SourceFile& file, const Parameter& parameter,
+                            const ParameterProvenance& provenance);
+
+// A printed concrete AVUnit scenario (print_concrete) with the header line of each dimension in
+// an expression ("//   lead.init.speed = -1.97 m/s") replaced by its provenance_text. Other
+// lines, and the scenario itself, are left as they are.
+std::string with_parameter_provenance(const std::string& concrete, const SourceFile& file,
+                                      const ScenarioTemplate& scenario,
+                                      std::span<const double> values);
+
+}  // namespace scenfuzz
