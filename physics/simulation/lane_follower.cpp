@@ -281,12 +281,7 @@ bool LaneFollower::on_lanes_ahead(const WorldSnapshot& world, std::vector<std::u
   const double lookahead =
       std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
   watch_lanes(*world.occupancy, s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
-  actors.clear();
-  for (LaneIndex lane : watched_) world.occupancy->append_on(lane, actors);
-  const std::vector<std::uint32_t>& loose = world.occupancy->loose();
-  actors.insert(actors.end(), loose.begin(), loose.end());
-  std::sort(actors.begin(), actors.end());
-  actors.erase(std::unique(actors.begin(), actors.end()), actors.end());
+  world.occupancy->gather(watched_, actors);
   return true;
 }
 
