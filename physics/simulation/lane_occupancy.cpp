@@ -27,7 +27,7 @@ double narrowest_width(const std::vector<WidthSample>& samples) {
 
 }  // namespace
 
-LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map) {
+LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map), conflicts_(map) {
   narrowest_.reserve(map.lanes().size());
   for (const Lane& lane : map.lanes())
     narrowest_.emplace_back(narrowest_width(lane.left_width), narrowest_width(lane.right_width));

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
+#include "physics/map/junction_conflicts.hpp"
 #include "physics/map/map_point.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/lane_tracker.hpp"
@@ -61,6 +62,9 @@ class LaneOccupancy {
   const std::vector<LaneIndex>& junction_lanes(std::uint32_t junction) const {
     return junction_lanes_[junction];
   }
+  // The lanes crossing or merging with junction lane `lane` (conflicting_lanes), found once for
+  // every follower of the simulation.
+  const std::vector<LaneIndex>& conflicts_of(LaneIndex lane) const { return conflicts_.of(lane); }
 
  private:
   // The filing, kept out of the const queries' sight: it is a cache of the step's inputs.
@@ -94,6 +98,7 @@ class LaneOccupancy {
   // Of each lane: its narrowest width left and right of the centre line.
   std::vector<std::pair<double, double>> narrowest_;
   std::vector<std::vector<LaneIndex>> junction_lanes_;  // by junction
+  JunctionConflicts conflicts_;
   OccupancyInputs inputs_;
   mutable Filing filing_;
 };
