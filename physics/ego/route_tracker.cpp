@@ -84,7 +84,7 @@ void RouteTracker::update(MapPoint point) {
   auto found = locate(point, 5, 20, 1e9);
   if (found) {
     progress_ = std::max(progress_, found->s);
-    segment_ = path_.segment_at(progress_);
+    segment_ = segment_at_from(path_, progress_, segment_);
   }
 }
 
@@ -128,10 +128,26 @@ std::optional<PathCoordinate> RouteTracker::locate(MapPoint point, double behind
   return locate(point, window(behind, ahead), max_lateral);
 }
 
+// path_.segment_at(s): walking from `hint` when it lies a few metres from s, else searching (a
+// caller with the same `behind` may ask for a window far longer than the last).
+std::size_t RouteTracker::segment_near(double s, std::size_t hint) const {
+  constexpr double kWalk = 8;  // m: a few segments (the path is sampled about every metre)
+  return std::abs(path_.arc_lengths()[hint] - s) <= kWalk ? segment_at_from(path_, s, hint)
+                                                          : path_.segment_at(s);
+}
+
 PathWindow RouteTracker::window(double behind, double ahead) const {
   if (empty()) return {};
-  return {path_.segment_at(std::max(0.0, progress_ - behind)),
-          path_.segment_at(std::min(length(), progress_ + ahead))};
+  const double from = std::max(0.0, progress_ - behind), to = std::min(length(), progress_ + ahead);
+  for (WindowHint& hint : window_hints_)
+    if (hint.behind == behind) {
+      hint.window = {segment_near(from, hint.window.first), segment_near(to, hint.window.last)};
+      return hint.window;
+    }
+  WindowHint& fresh = window_hints_[next_hint_];
+  next_hint_ = (next_hint_ + 1) % window_hints_.size();
+  fresh = {behind, {path_.segment_at(from), path_.segment_at(to)}};
+  return fresh.window;
 }
 
 bool RouteTracker::surely_farther(MapPoint point, PathWindow window, double distance) const {

@@ -4,6 +4,7 @@
 // what a plugin driver is told.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -93,6 +94,8 @@ class RouteTracker {
   bool surely_farther(MapPoint point, PathWindow window, double distance) const;
 
  private:
+  std::size_t segment_near(double s, std::size_t hint) const;
+
   Polyline path_;
   std::vector<RouteFeature> features_;
   std::vector<LaneChangeStretch> lane_changes_;
@@ -105,6 +108,16 @@ class RouteTracker {
   PolylineBoxes boxes_;                        // of runs of path segments, for surely_farther
   std::size_t segment_ = 0;
   double progress_ = 0;
+  // window()'s last answer for each of a few `behind` values (its callers ask with the same ones
+  // at every step, and progress moves by a segment or two): the next walks from it instead of
+  // binary-searching the path (segment_walk.hpp, the same answer). A cache of a const query, so
+  // a tracker is for one thread, as each driver's is.
+  struct WindowHint {
+    double behind = -1;  // none yet
+    PathWindow window;
+  };
+  mutable std::array<WindowHint, 3> window_hints_{};
+  mutable std::size_t next_hint_ = 0;  // the slot a new `behind` takes
 };
 
 }  // namespace scenfuzz

@@ -281,12 +281,7 @@ bool LaneFollower::on_lanes_ahead(const WorldSnapshot& world, std::vector<std::u
   const double lookahead =
       std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
   watch_lanes(*world.occupancy, s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
-  actors.clear();
-  for (LaneIndex lane : watched_) world.occupancy->append_on(lane, actors);
-  const std::vector<std::uint32_t>& loose = world.occupancy->loose();
-  actors.insert(actors.end(), loose.begin(), loose.end());
-  std::sort(actors.begin(), actors.end());
-  actors.erase(std::unique(actors.begin(), actors.end()), actors.end());
+  world.occupancy->gather(watched_, actors);
   return true;
 }
 
@@ -540,7 +535,9 @@ std::optional<LaneIndex> LaneFollower::junction_lane_after(const FeatureAhead& f
   return std::nullopt;
 }
 
-const std::vector<LaneIndex>& LaneFollower::conflicts_of(LaneIndex junction_lane) {
+const std::vector<LaneIndex>& LaneFollower::conflicts_of(const WorldSnapshot& world,
+                                                         LaneIndex junction_lane) {
+  if (world.occupancy != nullptr) return world.occupancy->conflicts_of(junction_lane);
   for (const auto& [lane, conflicts] : conflicts_)
     if (lane == junction_lane) return conflicts;
   std::vector<LaneIndex> conflicts = conflicting_lanes(*map_, junction_lane);
@@ -554,7 +551,7 @@ bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t se
                                     const Feature& feature) {
   auto junction_lane = junction_lane_after(feature.feature);
   if (!junction_lane) return false;
-  const std::vector<LaneIndex>& conflicts = conflicts_of(*junction_lane);
+  const std::vector<LaneIndex>& conflicts = conflicts_of(world, *junction_lane);
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
     if (k == self || world.lanes[k].lane < 0 || !present_in(world, k)) continue;
     if (world.kinds[k] == TraceActorKind::pedestrian || world.kinds[k] == TraceActorKind::obstacle)
@@ -670,7 +667,7 @@ bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32
                         !std::isnan(world.junction_arrivals[self]);
   for (std::size_t segment = stretch.first; segment <= stretch.last; ++segment) {
     const LaneIndex mine = route_.segments[segment].lane;
-    const std::vector<LaneIndex>& conflicts = conflicts_of(mine);
+    const std::vector<LaneIndex>& conflicts = conflicts_of(world, mine);
     const bool first_come = arrivals && !controlled_entry(*map_, mine);
     for (std::uint32_t k = 0; k < world.states.size(); ++k) {
       if (k == self || world.lanes[k].lane < 0 || !present_in(world, k)) continue;

@@ -128,7 +128,8 @@ class LaneFollower {
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
   bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
-  const std::vector<LaneIndex>& conflicts_of(LaneIndex junction_lane);
+  // The simulation's shared answer (LaneOccupancy) when it has one, else this follower's own.
+  const std::vector<LaneIndex>& conflicts_of(const WorldSnapshot& world, LaneIndex junction_lane);
   bool pedestrians_at(const WorldSnapshot& world, const Crosswalk& crosswalk) const;
   // The junction priority rule (docs/simulation.md, "Junctions"): a stop at the entry of the
   // junction ahead while it may not enter it.

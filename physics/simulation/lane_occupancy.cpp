@@ -2,6 +2,7 @@
 #include "physics/simulation/lane_occupancy.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -26,11 +27,12 @@ double narrowest_width(const std::vector<WidthSample>& samples) {
 
 }  // namespace
 
-LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map) {
+LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map), conflicts_(map) {
   narrowest_.reserve(map.lanes().size());
   for (const Lane& lane : map.lanes())
     narrowest_.emplace_back(narrowest_width(lane.left_width), narrowest_width(lane.right_width));
   filing_.first.assign(map.lanes().size(), 0);
+  filing_.mask_slot.assign(map.lanes().size(), 0);
   junction_lanes_.resize(map.junctions().size());
   for (LaneIndex lane = 0; lane < map.lanes().size(); ++lane)
     if (auto junction = map.lane(lane).junction; junction && *junction < junction_lanes_.size())
@@ -46,7 +48,10 @@ void LaneOccupancy::build() const {
   Filing& filing = filing_;
   if (filing.built) return;
   filing.built = true;
-  for (const auto& entry : filing.filed) filing.first[entry.first] = 0;
+  for (const auto& entry : filing.filed) {
+    filing.first[entry.first] = 0;
+    filing.mask_slot[entry.first] = 0;
+  }
   filing.filed.clear();
   filing.loose.clear();
   if (filing.segments.size() != inputs_.states.size())
@@ -62,6 +67,25 @@ void LaneOccupancy::build() const {
   filing.filed.erase(std::unique(filing.filed.begin(), filing.filed.end()), filing.filed.end());
   for (std::size_t i = filing.filed.size(); i-- > 0;)
     filing.first[filing.filed[i].first] = static_cast<std::uint32_t>(i + 1);
+  make_masks();
+}
+
+void LaneOccupancy::make_masks() const {
+  Filing& filing = filing_;
+  const std::size_t words = (inputs_.states.size() + 63) / 64;
+  filing.words = words;
+  filing.loose_mask.assign(words, 0);
+  for (std::uint32_t k : filing.loose) filing.loose_mask[k / 64] |= std::uint64_t{1} << (k % 64);
+  filing.masks.clear();
+  std::uint32_t slots = 0;
+  for (std::size_t i = 0; i < filing.filed.size(); ++i) {
+    const auto [lane, k] = filing.filed[i];
+    if (i == 0 || filing.filed[i - 1].first != lane) {
+      filing.mask_slot[lane] = ++slots;
+      filing.masks.resize(filing.masks.size() + words, 0);
+    }
+    filing.masks[(slots - 1) * words + k / 64] |= std::uint64_t{1} << (k % 64);
+  }
 }
 
 void LaneOccupancy::append_on(LaneIndex lane, std::vector<std::uint32_t>& actors) const {
@@ -71,6 +95,24 @@ void LaneOccupancy::append_on(LaneIndex lane, std::vector<std::uint32_t>& actors
   for (std::size_t i = filing.first[lane] - 1;
        i < filing.filed.size() && filing.filed[i].first == lane; ++i)
     actors.push_back(filing.filed[i].second);
+}
+
+void LaneOccupancy::gather(std::span<const LaneIndex> lanes,
+                           std::vector<std::uint32_t>& actors) const {
+  build();
+  const Filing& filing = filing_;
+  std::vector<std::uint64_t>& sum = filing_.gathered;
+  const std::size_t words = filing.words;
+  sum = filing.loose_mask;
+  for (LaneIndex lane : lanes) {
+    if (lane >= filing.mask_slot.size() || filing.mask_slot[lane] == 0) continue;
+    const std::uint64_t* mask = &filing.masks[(filing.mask_slot[lane] - 1) * words];
+    for (std::size_t w = 0; w < words; ++w) sum[w] |= mask[w];
+  }
+  actors.clear();
+  for (std::size_t w = 0; w < words; ++w)
+    for (std::uint64_t bits = sum[w]; bits != 0; bits &= bits - 1)
+      actors.push_back(static_cast<std::uint32_t>(w * 64 + std::countr_zero(bits)));
 }
 
 const std::vector<std::uint32_t>& LaneOccupancy::loose() const {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
+#include "physics/map/junction_conflicts.hpp"
 #include "physics/map/map_point.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/lane_tracker.hpp"
@@ -51,12 +52,19 @@ class LaneOccupancy {
   void append_on(LaneIndex lane, std::vector<std::uint32_t>& actors) const;
   // Every present actor filed under no lane (ascending).
   const std::vector<std::uint32_t>& loose() const;
+  // Into `actors` (cleared first), ascending: every loose actor and every actor filed under one
+  // of `lanes` (repeats allowed). The same as appending each lane's actors and the loose ones,
+  // sorted and without repeats, from bit masks of the actors instead of a sort.
+  void gather(std::span<const LaneIndex> lanes, std::vector<std::uint32_t>& actors) const;
 
   // Every lane of junction `junction` (ascending): those that cross or merge with one of them
   // (lane_conflicts.hpp) among them, found without testing each pair's centre lines.
   const std::vector<LaneIndex>& junction_lanes(std::uint32_t junction) const {
     return junction_lanes_[junction];
   }
+  // The lanes crossing or merging with junction lane `lane` (conflicting_lanes), found once for
+  // every follower of the simulation.
+  const std::vector<LaneIndex>& conflicts_of(LaneIndex lane) const { return conflicts_.of(lane); }
 
  private:
   // The filing, kept out of the const queries' sight: it is a cache of the step's inputs.
@@ -66,11 +74,21 @@ class LaneOccupancy {
     // set, and reset at the next build).
     std::vector<std::uint32_t> first;
     std::vector<std::uint32_t> loose;
-    std::vector<std::size_t> segments;  // of each actor: its lane's segment at the last build
+    // The same as bit masks of `words` 64-bit words (bit k % 64 of word k / 64 for actor k):
+    // lane l's actors at masks[(mask_slot[l] - 1) * words] on (mask_slot[l] == 0: none, only
+    // filed lanes are set, and reset at the next build), the loose actors at loose_mask.
+    std::size_t words = 0;
+    std::vector<std::uint64_t> masks;
+    std::vector<std::uint32_t> mask_slot;
+    std::vector<std::uint64_t> loose_mask;
+    std::vector<std::uint64_t> gathered;  // gather's sum of masks, kept to reuse its memory
+    std::vector<std::size_t> segments;    // of each actor: its lane's segment at the last build
     bool built = false;
   };
 
   void build() const;
+  // The filing as bit masks of actors (Filing::masks), after build's sort.
+  void make_masks() const;
   // Whether actor k keeps to lane fix.lane now and where predicted; files it if so.
   bool file_on_lanes(std::uint32_t k) const;
   void file_ahead(LaneIndex lane, double reach, std::uint32_t k, int depth) const;
@@ -80,6 +98,7 @@ class LaneOccupancy {
   // Of each lane: its narrowest width left and right of the centre line.
   std::vector<std::pair<double, double>> narrowest_;
   std::vector<std::vector<LaneIndex>> junction_lanes_;  // by junction
+  JunctionConflicts conflicts_;
   OccupancyInputs inputs_;
   mutable Filing filing_;
 };
