@@ -66,6 +66,33 @@ TEST(OvertakingSafetyTest, DoesNotPullOutWhileACarIsAlongsideInThePassingLane) {
       << " and the ego at " << ego.x[out];
 }
 
+// In thick fog (vehicles seen to about 22 m) the ego stands behind a parked car with room to pull
+// out, while a car comes up east_1 from 35 m behind at 16 m/s, unseen at first. Pulling out at
+// once, the ego would put itself in that car's way; indicating first, it sees the car come up
+// (the mirror) and waits for it. The rear car never has to brake harder than the safe-braking
+// limit (2 m/s^2, with a little slack for its own controller).
+TEST(OvertakingSafetyTest, DoesNotPullOutInFrontOfACarComingUpBehindInFog) {
+  auto run = simulate_text(
+      "ego = AV((\"east_0\"->60, , 0), (\"east_0\"->300));\n"
+      "parked = Vehicle((\"east_0\"->77.5, , 0));\n"
+      "behind = Vehicle((\"east_1\"->25, , 16), uniform((\"east_1\"->25, , 16)), "
+      "(\"east_1\"->499));\n"
+      "scenario = CreateScenario{load(\"straight?two_way=0\");\nego;\n{parked, behind};\n{};\n{};\n"
+      "Environment(12:00, {fog: 1.0});\n};\n",
+      lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  EXPECT_GT(closest_approach(trace, 0, 2), 1.0);
+  const TraceActor& behind = trace.actors[2];
+  for (std::size_t i = 0; i < trace.sample_count(); ++i)
+    ASSERT_GT(behind.acceleration[i], -2.5) << "the car behind braked at t = " << trace.time[i];
+  const std::size_t out = first_out_of_lane(trace);
+  ASSERT_LT(out, trace.sample_count()) << "the ego should have passed the parked car";
+  EXPECT_GT(behind.x[out], trace.actors[0].x[out]) << "it pulled out before the car went by";
+}
+
 // From a standstill 5 m behind a parked car (bumper to bumper), east_1 free: the ego pulls out
 // round it (tightly, at walking pace) and never touches it.
 TEST(OvertakingSafetyTest, PullsOutFromFiveMetresBehindAParkedCarWithoutContact) {
