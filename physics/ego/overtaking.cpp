@@ -234,20 +234,25 @@ void start_back(OvertakePlan& plan, double s, double speed, const OvertakingSett
                                speed * std::abs(plan.back_from) / settings.lateral_speed);
 }
 
-// Whether the pull-out `plan` clears the standing blocker `first` (pull_out_sweep.hpp); when its
-// usual aim would clip the blocker's corner, a tight pull-out (full lock at walking pace) is
-// tried before giving up. Far behind the blocker the check is not needed: the pull-out is over
-// long before the ego gets there.
+// Whether the pull-out `plan` clears the standing blocker `first` by the sweep margin
+// (pull_out_sweep.hpp). At walking pace a tight pull-out (full lock) is weighed against the usual
+// aim and the one with more room kept: whichever is chosen, it is the one that was checked, and
+// not one that clears only by the luck of this step's perception noise. Far behind the blocker
+// the check is not needed: the pull-out is over long before the ego gets there.
 bool sweep_clears(const OvertakeContext& context, OvertakePlan& plan, const Blocker& first,
                   const OvertakingSettings& settings) {
   if (first.rear_s - plan.out_end > context.vehicle.length) return true;
-  if (pull_out_clears(context, plan, first, settings.sweep_margin)) return true;
-  if (context.ego.speed >= kWalkingPace) return false;
-  OvertakePlan tight = plan;
-  tight.pull_out_lookahead = settings.tight_lookahead;
-  if (!pull_out_clears(context, tight, first, settings.sweep_margin)) return false;
-  plan = tight;
-  return true;
+  double usual = pull_out_clearance(context, plan, first, settings.sweep_margin);
+  if (context.ego.speed < kWalkingPace) {
+    OvertakePlan tight = plan;
+    tight.pull_out_lookahead = settings.tight_lookahead;
+    double room = pull_out_clearance(context, tight, first, settings.sweep_margin);
+    if (room > usual) {
+      plan = tight;
+      usual = room;
+    }
+  }
+  return usual >= settings.sweep_margin;
 }
 
 }  // namespace

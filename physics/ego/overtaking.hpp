@@ -37,10 +37,13 @@ struct OvertakingSettings {
   // the signal policy gives a lane change, IndicationNotice: 3 s), and the lane is checked
   // again then (the mirror, then the shoulder).
   double indicate_time = 3.0;  // s
+  // s the pass must have been found possible without a break before the ego pulls out: one
+  // step's answer may be the perception noise's luck (a pull-out's margin to a standing car).
+  double steady_time = 0.5;
   // A car behind in the passing lane must not have to brake harder than this for the ego
   // (MOBIL's safe-braking criterion, Kesting, Treiber, Helbing 2007).
   double rear_braking = 2.0;     // m/s^2
-  double sweep_margin = 0.3;     // m the body keeps from a standing blocker while pulling out
+  double sweep_margin = 0.6;     // m the body keeps from a standing blocker while pulling out
   double tight_lookahead = 2.5;  // m: the pure-pursuit aim of a pull-out at full lock
   double return_notice = 1.5;    // s the indicator is on towards its lane before moving back
 };
@@ -70,6 +73,7 @@ struct OvertakePlan {
   // pull out once the indicator has been on long enough and the lane is still free.
   bool indicating = false;
   double indicating_since = 0;
+  double possible_since = -1;  // s: the pass found possible at every step since; -1 not now
   // Active, past what it passes: indicating back since this time (s), the move back to follow
   // after the return notice; negative before.
   double back_indicating_since = -1;

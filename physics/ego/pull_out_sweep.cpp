@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "physics/collision/footprint.hpp"
 #include "physics/ego/pursuit.hpp"
@@ -31,15 +32,16 @@ double free_acceleration(const OvertakeContext& context, double speed) {
 
 }  // namespace
 
-bool pull_out_clears(const OvertakeContext& context, const OvertakePlan& plan,
-                     const Blocker& blocker, double margin) {
+double pull_out_clearance(const OvertakeContext& context, const OvertakePlan& plan,
+                          const Blocker& blocker, double margin) {
   const ActorClass& vehicle = context.vehicle;
   const RouteTracker& route = context.route;
   const Footprint standing = footprint_of(*blocker.object);
   KinematicState state = context.ego;
   double s = route.progress();
+  double least = std::numeric_limits<double>::infinity();
   for (double t = 0; t < kLongestRoll; t += kRollStep) {
-    if (s - vehicle.length / 2 > blocker.front_s + margin) return true;
+    if (s - vehicle.length / 2 > blocker.front_s + margin) return least;
     double lookahead = std::max(context.min_lookahead, context.lookahead_time * state.speed);
     if (plan.pull_out_lookahead > 0 && s < plan.out_end) lookahead = plan.pull_out_lookahead;
     double steer = std::clamp(pursuit_steering(route, plan, s, state, vehicle, lookahead),
@@ -50,9 +52,9 @@ bool pull_out_clears(const OvertakeContext& context, const OvertakePlan& plan,
     // Progress along the path: the travel's component along it (the path is near straight over
     // a pull-out's few metres).
     s += state.speed * kRollStep * std::cos(angle_difference(state.heading, path_heading));
-    if (signed_distance(footprint_of(state, vehicle), standing) < margin) return false;
+    least = std::min(least, signed_distance(footprint_of(state, vehicle), standing));
   }
-  return false;
+  return -std::numeric_limits<double>::infinity();
 }
 
 }  // namespace scenfuzz

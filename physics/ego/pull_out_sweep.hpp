@@ -10,9 +10,10 @@
 
 namespace scenfuzz {
 
-// Whether the ego, following `plan` from its state in `context`, keeps at least `margin` from
-// `blocker` (a standing object) until its rear is past the blocker's front.
-bool pull_out_clears(const OvertakeContext& context, const OvertakePlan& plan,
-                     const Blocker& blocker, double margin);
+// The least distance (m, negative: contact) the ego keeps from `blocker` (a standing object),
+// following `plan` from its state in `context`, until its rear is `margin` past the blocker's
+// front; minus infinity when it does not get past within 20 s.
+double pull_out_clearance(const OvertakeContext& context, const OvertakePlan& plan,
+                          const Blocker& blocker, double margin);
 
 }  // namespace scenfuzz

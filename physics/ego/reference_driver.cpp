@@ -179,6 +179,8 @@ void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
     indicate_then_go(*plan, input.time);
   } else if (!waiting) {
     overtake_ = OvertakePlan{};  // nothing to pass any more: the indicator goes off
+  } else {
+    overtake_.possible_since = -1;  // indicating (if it was), waiting for a gap
   }
   // Standing behind what it means to pass (waiting for a gap, or indicating), it keeps room.
   if (!overtake_.active && (waiting || overtake_.indicating) && in_lane.front().speed < 0.5)
@@ -187,18 +189,24 @@ void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
 
 // Indicate, then move (docs/simulation.md, "Overtaking"): a pass the road and the traffic allow
 // first turns the indicator on towards its lane; only once it has been on for the indicate time,
-// and the lane is (checked again, this step) still free, does the ego pull out. A plan towards
-// another lane starts the wait afresh; one that waits for a gap keeps indicating.
+// and the pass has been found possible at every step of the last steady time (the lane checked
+// again, the pull-out's swept path too), does the ego pull out. A plan towards another lane
+// starts the wait afresh; one that waits for a gap keeps indicating.
 void ReferenceDriver::indicate_then_go(const OvertakePlan& plan, double time) {
+  constexpr double kTolerance = 1e-9;  // s, of the step times' rounding
+  const OvertakingSettings& rules = settings_.overtaking;
   bool same_lane = overtake_.indicating && overtake_.lane == plan.lane;
-  if (same_lane && time - overtake_.indicating_since >= settings_.overtaking.indicate_time - 1e-9) {
+  double since = same_lane ? overtake_.indicating_since : time;
+  double possible = same_lane && overtake_.possible_since >= 0 ? overtake_.possible_since : time;
+  if (time - since >= rules.indicate_time - kTolerance &&
+      time - possible >= rules.steady_time - kTolerance) {
     overtake_ = plan;
     return;
   }
-  double since = same_lane ? overtake_.indicating_since : time;
   overtake_ = OvertakePlan{};
   overtake_.indicating = true;
   overtake_.indicating_since = since;
+  overtake_.possible_since = possible;
   overtake_.lane = plan.lane;
   overtake_.offset = plan.offset;
 }
