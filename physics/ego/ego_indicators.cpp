@@ -4,12 +4,14 @@
 namespace scenfuzz {
 
 VehicleSignals overtake_indicator(const OvertakePlan& plan, double progress) {
-  if (!plan.active) return 0;
+  if (!plan.active && !plan.indicating) return 0;
   const VehicleSignals out =
       plan.offset >= 0 ? vehicle_signal::left_indicator : vehicle_signal::right_indicator;
   const VehicleSignals back =
       plan.offset >= 0 ? vehicle_signal::right_indicator : vehicle_signal::left_indicator;
+  if (!plan.active) return out;  // indicating before it pulls out
   if (progress >= plan.back_begin) return progress < plan.back_end ? back : 0;
+  if (plan.back_indicating_since >= 0) return back;  // before moving back
   return progress < plan.out_end ? out : 0;
 }
 

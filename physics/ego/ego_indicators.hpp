@@ -13,7 +13,8 @@
 namespace scenfuzz {
 
 // The indicator an overtaking plan asks for at path arc length `progress`: towards the passing
-// lane while moving out, back while moving back, none while level with what it passes.
+// lane while indicating before it pulls out and while moving out, back while moving back, none
+// while level with what it passes.
 VehicleSignals overtake_indicator(const OvertakePlan& plan, double progress);
 
 class EgoIndicators {
@@ -24,7 +25,7 @@ class EgoIndicators {
   // progress must not go backwards between calls.
   VehicleSignals at(double progress, double speed, const OvertakePlan& plan) {
     // Inline for the common case, neither overtaking nor anything left to indicate.
-    if (!plan.active && cursor_.next >= stretches_.size()) return 0;
+    if (!plan.active && !plan.indicating && cursor_.next >= stretches_.size()) return 0;
     return look(progress, speed, plan);
   }
 

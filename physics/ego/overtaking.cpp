@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/ego/pull_out_sweep.hpp"
 #include "physics/map/lane_queries.hpp"
 
 namespace scenfuzz {
@@ -16,6 +17,8 @@ constexpr double kStationary = 0.5;      // m/s: a blocker slower than this is s
 constexpr double kTimingStep = 0.1;      // s, of the pass's time integration
 constexpr double kLongestPass = 40.0;    // s: a pass that would take longer is not started
 constexpr double kLaneTolerance = 0.75;  // m the passing lane may wander from its offset
+constexpr double kWalkingPace = 1.5;     // m/s: slower, a pull-out round something standing
+                                         // may be a tight one
 
 double smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);
@@ -190,9 +193,11 @@ bool passing_lane_clear(const OvertakeContext& context, const Candidate& candida
       continue;
     }
     if (ahead < 0) {
+      // The mirror: whoever comes from behind must not have to brake harder than the
+      // safe-braking limit (nor than comfortably) to keep its time gap to the ego.
       double closing = std::max(0.0, along - ego.speed);
-      double behind_room = reach + settings.time_gap * along +
-                           closing * closing / (2 * context.comfortable_acceleration);
+      double braking = std::min(context.comfortable_acceleration, settings.rear_braking);
+      double behind_room = reach + settings.time_gap * along + closing * closing / (2 * braking);
       if (-ahead < behind_room) return false;
     } else {
       if (ahead < reach + settings.time_gap * ego.speed) return false;
@@ -227,6 +232,27 @@ void start_back(OvertakePlan& plan, double s, double speed, const OvertakingSett
   plan.back_begin = s;
   plan.back_end = s + std::max(settings.shortest_move,
                                speed * std::abs(plan.back_from) / settings.lateral_speed);
+}
+
+// Whether the pull-out `plan` clears the standing blocker `first` by the sweep margin
+// (pull_out_sweep.hpp). At walking pace a tight pull-out (full lock) is weighed against the usual
+// aim and the one with more room kept: whichever is chosen, it is the one that was checked, and
+// not one that clears only by the luck of this step's perception noise. Far behind the blocker
+// the check is not needed: the pull-out is over long before the ego gets there.
+bool sweep_clears(const OvertakeContext& context, OvertakePlan& plan, const Blocker& first,
+                  const OvertakingSettings& settings) {
+  if (first.rear_s - plan.out_end > context.vehicle.length) return true;
+  double usual = pull_out_clearance(context, plan, first, settings.sweep_margin);
+  if (context.ego.speed < kWalkingPace) {
+    OvertakePlan tight = plan;
+    tight.pull_out_lookahead = settings.tight_lookahead;
+    double room = pull_out_clearance(context, tight, first, settings.sweep_margin);
+    if (room > usual) {
+      plan = tight;
+      usual = room;
+    }
+  }
+  return usual >= settings.sweep_margin;
 }
 
 }  // namespace
@@ -284,11 +310,13 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
                                ego.speed * std::abs(*offset) / settings.fastest_lateral_speed);
     double length = std::min(usual, 0.9 * room);
     double shortest = quickest;
-    if (length < quickest && ego.speed < 0.1 && standing) {
-      if (std::optional<double> pull_out = standing_pull_out(room, *offset, context.vehicle)) {
-        length = std::min(*pull_out, usual);
-        shortest = length;
-      }
+    bool at_walking_pace = ego.speed < kWalkingPace;
+    if (length < quickest && at_walking_pace && standing) {
+      // The swept-path check below (sweep_clears) decides whether the pull-out is possible;
+      // where the smoothstep's bend bound doubts it, the tight pull-out may still clear.
+      std::optional<double> pull_out = standing_pull_out(room, *offset, context.vehicle);
+      length = pull_out ? std::min(*pull_out, usual) : length;
+      shortest = length;
     }
     if (length < shortest ||
         !passing_lane_clear(context, candidate, cluster, timing, settings, ignored)) {
@@ -305,6 +333,10 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
     for (std::size_t i = 0; i < cluster.count; ++i)
       plan.passing.push_back(
           {blockers[i].object->id, blockers[i].rear_s, blockers[i].front_s, blockers[i].speed});
+    if (standing && !sweep_clears(context, plan, first, settings)) {
+      waiting = true;
+      continue;
+    }
     return plan;
   }
   return std::nullopt;
@@ -342,14 +374,18 @@ void update_overtake(OvertakePlan& plan, const OvertakeContext& context,
     last_front = std::max(last_front, passed.front_s);
     slowest = std::min(slowest, passed.speed);
   }
-  if (plan.oncoming && front < first_rear) {
-    // Not yet level: if the oncoming lane no longer leaves room, give up and go back.
+  // Still mostly in its own lane on the way out (or, into the oncoming lane, not yet level): if
+  // the passing lane no longer leaves room, give up and go back.
+  bool mostly_in_own_lane = progress < plan.out_end &&
+                            std::abs(planned_lateral(plan, progress)) < std::abs(plan.offset) / 2;
+  if ((plan.oncoming && front < first_rear) || (!plan.oncoming && mostly_in_own_lane)) {
     Cluster cluster{first_rear, last_front, slowest, plan.passing.size()};
     PassTiming timing = pass_timing(context, first_rear - front, cluster, plan.offset, settings);
     std::vector<ActorId> ignored;
     for (const auto& passed : plan.passing) ignored.push_back(passed.id);
-    if (!timing.possible || !passing_lane_clear(context, {plan.lane, true, BoundaryType::unknown},
-                                                cluster, timing, settings, ignored)) {
+    Candidate lane{plan.lane, plan.oncoming, BoundaryType::unknown};
+    if (!timing.possible ||
+        !passing_lane_clear(context, lane, cluster, timing, settings, ignored)) {
       start_back(plan, progress, context.ego.speed, settings);
       return;
     }
@@ -367,10 +403,21 @@ void update_overtake(OvertakePlan& plan, const OvertakeContext& context,
     else if (in_the_way && b.rear_s - front < back_length)
       return;  // too close to move back in front of yet
   }
-  bool all_passed = std::all_of(plan.passing.begin(), plan.passing.end(), [&](const auto& p) {
-    return rear - p.front_s >= settings.gap_ahead + settings.time_gap * p.speed;
-  });
-  if (all_passed) start_back(plan, progress, context.ego.speed, settings);
+  // Indicate back first, then move back: the indicator comes on the return notice before the
+  // ego will be far enough past (at its speed now), and the move back waits for the notice
+  // (except in the oncoming lane, whose clear stretch was reckoned without a wait).
+  auto passed_within = [&](double notice) {
+    return std::all_of(plan.passing.begin(), plan.passing.end(), [&](const auto& p) {
+      double closing = std::max(0.0, context.ego.speed - p.speed);
+      return rear + closing * notice - p.front_s >=
+             settings.gap_ahead + settings.time_gap * p.speed;
+    });
+  };
+  if (plan.back_indicating_since < 0 && passed_within(settings.return_notice))
+    plan.back_indicating_since = context.time;
+  if (!passed_within(0)) return;
+  if (plan.oncoming || context.time - plan.back_indicating_since >= settings.return_notice - 1e-9)
+    start_back(plan, progress, context.ego.speed, settings);
 }
 
 }  // namespace scenfuzz

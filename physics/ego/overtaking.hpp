@@ -33,6 +33,19 @@ struct OvertakingSettings {
   double longest_cluster = 60.0;  // m: a longer row of slow objects is a queue, not passed
   double gap_ahead = 5.0;         // m, plus the time gap, kept to others when moving over
   double time_gap = 1.0;          // s
+  // Indicate, then move: the indicator is on this long before the pull-out starts (the notice
+  // the signal policy gives a lane change, IndicationNotice: 3 s), and the lane is checked
+  // again then (the mirror, then the shoulder).
+  double indicate_time = 3.0;  // s
+  // s the pass must have been found possible without a break before the ego pulls out: one
+  // step's answer may be the perception noise's luck (a pull-out's margin to a standing car).
+  double steady_time = 0.5;
+  // A car behind in the passing lane must not have to brake harder than this for the ego
+  // (MOBIL's safe-braking criterion, Kesting, Treiber, Helbing 2007).
+  double rear_braking = 2.0;     // m/s^2
+  double sweep_margin = 0.6;     // m the body keeps from a standing blocker while pulling out
+  double tight_lookahead = 2.5;  // m: the pure-pursuit aim of a pull-out at full lock
+  double return_notice = 1.5;    // s the indicator is on towards its lane before moving back
 };
 
 // An overtaking manoeuvre under way, in path arc length of the ego's centre.
@@ -53,6 +66,17 @@ struct OvertakePlan {
     double speed = 0;
   };
   std::vector<Passed> passing;
+  // m: the pure-pursuit lookahead through the move out (a tight pull-out from close behind
+  // something standing); 0 for the driver's usual one.
+  double pull_out_lookahead = 0;
+  // Not active yet: indicating towards `lane` (at `offset`) since `indicating_since` (s), to
+  // pull out once the indicator has been on long enough and the lane is still free.
+  bool indicating = false;
+  double indicating_since = 0;
+  double possible_since = -1;  // s: the pass found possible at every step since; -1 not now
+  // Active, past what it passes: indicating back since this time (s), the move back to follow
+  // after the return notice; negative before.
+  double back_indicating_since = -1;
 };
 
 // The sideways offset (left positive) the plan puts the ego at, at path arc length s.
@@ -75,7 +99,10 @@ struct OvertakeContext {
   std::span<const WorldObject> objects;
   double desired_speed = 0;  // what the ego would drive on a free road here
   double comfortable_acceleration = 0;
-  double dt = 0.1;  // s since the previous step
+  double dt = 0.1;              // s since the previous step
+  double lookahead_time = 0.8;  // s and m: the driver's pure-pursuit lookahead (pursuit.hpp)
+  double min_lookahead = 5.0;
+  double time = 0;  // s, now
 };
 
 // Whether the driver should start to pass `blockers` (the slow objects in its way, nearest
@@ -85,10 +112,10 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
                                           std::span<const Blocker> blockers,
                                           const OvertakingSettings& settings, bool& waiting);
 
-// Moves a plan on by one step: aborts a pass into the oncoming lane that became unsafe before
-// the ego drew level, starts the move back once the passed objects are far enough behind, and
-// ends the plan once the ego is back. `slow_ahead` are slow objects in the original lane ahead
-// (they must not be cut in front of).
+// Moves a plan on by one step: aborts a pass that became unsafe while the ego is still mostly in
+// its own lane (into the oncoming lane: until it drew level), starts the move back once the passed
+// objects are far enough behind, and ends the plan once the ego is back. `slow_ahead` are slow
+// objects in the original lane ahead (they must not be cut in front of).
 void update_overtake(OvertakePlan& plan, const OvertakeContext& context,
                      std::span<const Blocker> slow_ahead, const OvertakingSettings& settings);
 

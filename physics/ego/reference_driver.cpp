@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/ego/pursuit.hpp"
 #include "physics/ego/sight_distance.hpp"
 #include "physics/map/lane_conflicts.hpp"
 #include "physics/map/lane_queries.hpp"
@@ -111,32 +112,12 @@ double ReferenceDriver::desired_speed(double s) const {
 }
 
 double ReferenceDriver::steering(const KinematicState& ego) const {
-  if (route_.empty()) return 0;
-  // Pure pursuit steers the rear axle onto the arc through the target point.
-  double half_base = vehicle_.wheelbase / 2;
-  MapPoint rear{ego.x - half_base * std::cos(ego.heading),
-                ego.y - half_base * std::sin(ego.heading)};
+  double progress = route_.progress();
   double lookahead = std::max(settings_.min_lookahead, settings_.lookahead_time * ego.speed);
-  double target_s = route_.progress() + lookahead;
-  MapPoint target;
-  if (target_s <= route_.length()) {
-    // Overtaking moves the aim sideways, as the plan has it at the target point.
-    target = route_.path().point_at(target_s);
-    double offset = planned_lateral(overtake_, target_s);
-    double heading = route_.heading_at(target_s);
-    target = {target.x - offset * std::sin(heading), target.y + offset * std::cos(heading)};
-  } else {
-    // Beyond the end, keep aiming along the path's last direction.
-    MapPoint end = route_.path().point_at(route_.length());
-    double heading = route_.heading_at(route_.length());
-    double beyond = target_s - route_.length();
-    target = {end.x + beyond * std::cos(heading), end.y + beyond * std::sin(heading)};
-  }
-  double dx = target.x - rear.x, dy = target.y - rear.y;
-  double reach = std::hypot(dx, dy);
-  if (reach < 1e-6) return 0;
-  double alpha = angle_difference(std::atan2(dy, dx), ego.heading);
-  return std::atan(2 * vehicle_.wheelbase * std::sin(alpha) / reach);
+  // A pull-out from close behind something standing aims nearer, to turn at full lock.
+  if (overtake_.active && overtake_.pull_out_lookahead > 0 && progress < overtake_.out_end)
+    lookahead = overtake_.pull_out_lookahead;
+  return pursuit_steering(route_, overtake_, progress, ego, vehicle_, lookahead);
 }
 
 std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) const {
@@ -181,7 +162,10 @@ void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
                           input.objects,
                           desired_speed(route_.progress()),
                           settings_.comfortable_acceleration,
-                          dt};
+                          dt,
+                          settings_.lookahead_time,
+                          settings_.min_lookahead,
+                          input.time};
   std::vector<Blocker> in_lane = objects_in_lane(input);
   if (overtake_.active) {
     update_overtake(overtake_, context, in_lane, settings_.overtaking);
@@ -190,10 +174,41 @@ void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
   double front_s = route_.progress() + vehicle_.length / 2;
   std::erase_if(in_lane, [&](const Blocker& b) { return b.rear_s <= front_s; });
   bool waiting = false;
-  if (auto plan = plan_overtake(context, in_lane, settings_.overtaking, waiting))
-    overtake_ = *plan;
-  else if (waiting && in_lane.front().speed < 0.5)
+  auto plan = plan_overtake(context, in_lane, settings_.overtaking, waiting);
+  if (plan) {
+    indicate_then_go(*plan, input.time);
+  } else if (!waiting) {
+    overtake_ = OvertakePlan{};  // nothing to pass any more: the indicator goes off
+  } else {
+    overtake_.possible_since = -1;  // indicating (if it was), waiting for a gap
+  }
+  // Standing behind what it means to pass (waiting for a gap, or indicating), it keeps room.
+  if (!overtake_.active && (waiting || overtake_.indicating) && in_lane.front().speed < 0.5)
     waiting_to_pass_ = in_lane.front().object->id;
+}
+
+// Indicate, then move (docs/simulation.md, "Overtaking"): a pass the road and the traffic allow
+// first turns the indicator on towards its lane; only once it has been on for the indicate time,
+// and the pass has been found possible at every step of the last steady time (the lane checked
+// again, the pull-out's swept path too), does the ego pull out. A plan towards another lane
+// starts the wait afresh; one that waits for a gap keeps indicating.
+void ReferenceDriver::indicate_then_go(const OvertakePlan& plan, double time) {
+  constexpr double kTolerance = 1e-9;  // s, of the step times' rounding
+  const OvertakingSettings& rules = settings_.overtaking;
+  bool same_lane = overtake_.indicating && overtake_.lane == plan.lane;
+  double since = same_lane ? overtake_.indicating_since : time;
+  double possible = same_lane && overtake_.possible_since >= 0 ? overtake_.possible_since : time;
+  if (time - since >= rules.indicate_time - kTolerance &&
+      time - possible >= rules.steady_time - kTolerance) {
+    overtake_ = plan;
+    return;
+  }
+  overtake_ = OvertakePlan{};
+  overtake_.indicating = true;
+  overtake_.indicating_since = since;
+  overtake_.possible_since = possible;
+  overtake_.lane = plan.lane;
+  overtake_.offset = plan.offset;
 }
 
 void ReferenceDriver::watch_patience(const DriverInput& input) {

@@ -102,6 +102,7 @@ class ReferenceDriver {
   double steering(const KinematicState& ego) const;
   std::vector<Blocker> objects_in_lane(const DriverInput& input) const;
   void plan_manoeuvre(const DriverInput& input, double dt);
+  void indicate_then_go(const OvertakePlan& plan, double time);
   void watch_patience(const DriverInput& input);
   bool on_own_lane(MapPoint point) const;
   void collect_object_constraints(const DriverInput& input, double front_s);
