@@ -105,8 +105,11 @@ TEST_F(CampaignTminTest, EachNewModeHasItsMinimisedScenarioWhichKeepsTheFailure)
   EXPECT_NE(page.find(">minimised</a>"), std::string::npos);
   EXPECT_NE(page.find(minimised_mode_file(modes.front().record.scenario_file)), std::string::npos);
 
-  // A second run finds known modes again: only new ones are minimised.
-  ASSERT_EQ(run(folder, 2), kExitViolated) << err_.str();
+  // A second run finds known modes again: only new ones are minimised. Whether it also finds a
+  // new mode (exit 1) or none (exit 0) depends on the search, not on what is tested here.
+  const int second = run(folder, 2);
+  ASSERT_TRUE(second == 0 || second == kExitViolated) << second << ": " << err_.str();
+  EXPECT_NE(out_.str().find("still_failing"), std::string::npos) << out_.str();
   opening = CampaignDb::open(folder);
   ASSERT_TRUE(opening.db) << opening.error;
   EXPECT_EQ(minimised_count(folder), opening.db->list_failure_modes().size());
