@@ -10,7 +10,6 @@
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/coverage_summary.hpp"
 #include "fuzz/law_coverage_report.hpp"
-#include "fuzz/parameter_provenance.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "fuzz/search_identity.hpp"
@@ -296,14 +295,6 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
          simulation_flags(options_.simulation) + "\n";
 }
 
-// The concrete scenario of a finding: an AVUnit file's header names each dimension inside an
-// expression by the value of what the user wrote (parameter_provenance.hpp).
-std::string SearchOutputs::concrete_text(std::span<const double> values) const {
-  const std::string printed = print_concrete_scenario(file_, scenario_, values);
-  if (is_wmg_file(file_.path())) return printed;
-  return with_parameter_provenance(printed, file_, scenario_, values);
-}
-
 // The finding's other violations (later specs, and a conjunction's later conjuncts), a line
 // each, in time order.
 std::string SearchOutputs::also_violated_lines(const Finding& finding, const ScenarioRun& run,
@@ -377,8 +368,8 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
   if (finding.ego_failure() && !run.trace->ego_failure->last_observation.empty())
     files.emplace_back(finding_path(finding, ".observation.json"),
                        run.trace->ego_failure->last_observation + "\n");
-  files.emplace_back(scenario_path,
-                     finding_header(finding, run, scenario_path) + concrete_text(run.values));
+  files.emplace_back(scenario_path, finding_header(finding, run, scenario_path) +
+                                        print_concrete_scenario(file_, scenario_, run.values));
   for (const auto& [path, content] : files) {
     failure = write_file_atomically(path, content);
     fatal = !failure.empty();

@@ -12,7 +12,6 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -109,7 +108,6 @@ class SearchOutputs {
   std::string finding_header(const Finding& finding, const ScenarioRun& run,
                              const std::filesystem::path& scenario_path) const;
   void record_collision(const Evaluation& evaluation, std::size_t index);
-  std::string concrete_text(std::span<const double> values) const;
   std::string also_violated_lines(const Finding& finding, const ScenarioRun& run,
                                   const std::string& comment) const;
   void record_design(const EvaluationRecord& record);

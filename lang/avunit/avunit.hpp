@@ -53,7 +53,9 @@ std::string print_formula(const ScenarioTemplate& scenario, const Spec& spec,
                           const Formula& formula);
 
 // The user's own file with every range replaced by the value chosen for its parameter
-// (`parameter_values[i]` for `scenario.parameters[i]`): a concrete, replayable scenario.
+// (`parameter_values[i]` for `scenario.parameters[i]`): a concrete, replayable scenario, after
+// `//` lines naming each dimension's value (one inside an expression by the value of what the
+// user wrote and where its draw came from, lang/parameter_provenance.hpp).
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
                            std::span<const double> parameter_values);
 

@@ -9,6 +9,7 @@
 #include "lang/avunit/traffic_extensions.hpp"
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
+#include "lang/parameter_provenance.hpp"
 #include "lang/walk_values.hpp"
 
 namespace scenfuzz::avunit {
@@ -464,6 +465,20 @@ class Printer {
   std::string out_;
 };
 
+// "ego.init.speed = 12 m/s": a header line of a concrete scenario naming one dimension's value; a
+// dimension inside an expression is named by the value of what the user wrote, and where its
+// draw came from (parameter_provenance.hpp).
+std::string dimension_line(const SourceFile& file, const ScenarioTemplate& scenario,
+                           std::span<const double> values, std::size_t index) {
+  const Parameter& parameter = scenario.parameters[index];
+  if (auto provenance = parameter_provenance(file, scenario, values, index))
+    return provenance_text(file, parameter, *provenance);
+  const bool time = parameter.unit == "time of day";
+  return parameter.name + " = " +
+         (time ? format_time_of_day(values[index]) : format_number(values[index])) +
+         (parameter.unit.empty() || time ? "" : " " + parameter.unit);
+}
+
 }  // namespace
 
 std::string print(const ScenarioTemplate& scenario) { return Printer(scenario).run(); }
@@ -499,15 +514,8 @@ std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scena
     if (first.location.end_offset() <= text.size())
       text.replace(first.location.offset, first.location.length, replacement);
   }
-  for (std::size_t i = 0; i < scenario.parameters.size(); ++i) {
-    const Parameter& parameter = scenario.parameters[i];
-    header +=
-        "//   " + parameter.name + " = " +
-        (parameter.unit == "time of day" ? format_time_of_day(parameter_values[i])
-                                         : format_number(parameter_values[i])) +
-        (parameter.unit.empty() || parameter.unit == "time of day" ? "" : " " + parameter.unit) +
-        "\n";
-  }
+  for (std::size_t i = 0; i < scenario.parameters.size(); ++i)
+    header += "//   " + dimension_line(file, scenario, parameter_values, i) + "\n";
   return header + text;
 }
 

@@ -40,6 +40,9 @@ std::string replace_ranges(std::string text, const std::string& heading,
       text.replace(parameter.location.offset, parameter.location.length,
                    value_text(parameter, parameter_values[it->second]));
   }
+  // Each line names the draw itself: WMG SDL has no arithmetic, so a range stands alone and its
+  // draw, in the file's unit, is the value of what the user wrote. (The IR does wrap it in unit
+  // conversions, oktas / 8, which are not the user's: no parameter_provenance here.)
   std::string header = heading;
   for (std::size_t i = 0; i < scenario.parameters.size(); ++i) {
     const Parameter& parameter = scenario.parameters[i];

@@ -1,7 +1,8 @@
-// How a finding names the value of each search dimension. A range may sit inside an expression
-// (`speed: 10 + range(-3, 3)`): the dimension's own value is then the range's draw (-1.97), not
-// the value of what the user wrote (the speed, 8.03 m/s). A finding shows the resulting value of
-// the slot the dimension is named after and where it came from: "lead.init.speed = 8.03 m/s, where
+// How a concrete scenario's header names the value of a search dimension whose range sits inside
+// an expression (`speed: 10 + range(-3, 3)`): the dimension's own value is the range's draw
+// (-1.97), but the value the user reads is that of what they wrote (the speed, 8.03 m/s). The
+// concrete printers (avunit::print_concrete) name such a dimension by the resulting value of the
+// slot it is named after and where the draw came from: "lead.init.speed = 8.03 m/s, where
 // range(-3, 3) drew -1.97 (base.avu:12:22)".
 #pragma once
 
@@ -18,7 +19,7 @@ namespace scenfuzz {
 struct ParameterProvenance {
   double value = 0;
   double drawn = 0;
-  std::string range_text;  // the range as written in the file
+  std::string range_text;  // the range as written in the file, on one line
   SourceLocation location;
 };
 
@@ -33,12 +34,5 @@ std::optional<ParameterProvenance> parameter_provenance(const SourceFile& file,
 // "lead.init.speed = 8.03 m/s, where range(-3, 3) drew -1.97 (base.avu:12:22)".
 std::string provenance_text(const SourceFile& file, const Parameter& parameter,
                             const ParameterProvenance& provenance);
-
-// A printed concrete AVUnit scenario (print_concrete) with the header line of each dimension in
-// an expression ("//   lead.init.speed = -1.97 m/s") replaced by its provenance_text. Other
-// lines, and the scenario itself, are left as they are.
-std::string with_parameter_provenance(const std::string& concrete, const SourceFile& file,
-                                      const ScenarioTemplate& scenario,
-                                      std::span<const double> values);
 
 }  // namespace scenfuzz

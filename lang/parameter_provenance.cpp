@@ -1,9 +1,11 @@
 // Dimension values named by the slot they sit in (parameter_provenance.hpp).
-#include "fuzz/parameter_provenance.hpp"
+#include "lang/parameter_provenance.hpp"
 
 #include <algorithm>
+#include <string_view>
 #include <vector>
 
+#include "lang/demand.hpp"
 #include "lang/number_format.hpp"
 #include "lang/value.hpp"
 #include "lang/walk_values.hpp"
@@ -27,12 +29,29 @@ std::optional<Value> slot_of(const ScenarioTemplate& scenario, std::size_t index
   return slot;
 }
 
+// The range's text on one line: it is shown in a line comment, which a line break would end
+// (`range(-3,\n 3)` would leave `3)` outside the comment, and the concrete file unreadable).
+std::string one_line(std::string_view text) {
+  std::string line;
+  bool space = false;
+  for (char c : text) {
+    const bool blank = c == ' ' || c == '\t' || c == '\n' || c == '\r';
+    if (blank && !line.empty()) space = true;
+    if (blank) continue;
+    if (space) line += ' ';
+    space = false;
+    line += c;
+  }
+  return line;
+}
+
 }  // namespace
 
 std::optional<ParameterProvenance> parameter_provenance(const SourceFile& file,
                                                         const ScenarioTemplate& scenario,
                                                         std::span<const double> values,
                                                         std::size_t index) {
+  SCENFUZZ_DEMAND(values.size() == scenario.parameters.size() && index < values.size());
   const Parameter& parameter = scenario.parameters[index];
   if (parameter.kind == ParameterKind::discrete || parameter.unit == "time of day") return {};
   const std::optional<Value> slot = slot_of(scenario, index);
@@ -42,8 +61,8 @@ std::optional<ParameterProvenance> parameter_provenance(const SourceFile& file,
   provenance.drawn = values[index];
   provenance.location = parameter.location;
   if (parameter.location.end_offset() <= file.text().size())
-    provenance.range_text =
-        file.text().substr(parameter.location.offset, parameter.location.length);
+    provenance.range_text = one_line(
+        std::string_view(file.text()).substr(parameter.location.offset, parameter.location.length));
   return provenance;
 }
 
@@ -56,42 +75,6 @@ std::string provenance_text(const SourceFile& file, const Parameter& parameter,
   if (provenance.location.known())
     text += " (" + file.path() + ":" + std::to_string(provenance.location.line) + ":" +
             std::to_string(provenance.location.column) + ")";
-  return text;
-}
-
-namespace {
-
-// Where the header's dimension lines ("//   name = value") end: the user's text follows, which may
-// hold lines that look like them.
-std::size_t header_end(const std::string& text) {
-  std::size_t at = text.find('\n');
-  while (at != std::string::npos && text.compare(at + 1, 5, "//   ") == 0)
-    at = text.find('\n', at + 1);
-  return at == std::string::npos ? text.size() : at;
-}
-
-}  // namespace
-
-std::string with_parameter_provenance(const std::string& concrete, const SourceFile& file,
-                                      const ScenarioTemplate& scenario,
-                                      std::span<const double> values) {
-  std::string text = concrete;
-  std::size_t from = 0, end_of_header = header_end(text);
-  // The header lists the dimensions in order: search on from the previous one.
-  for (std::size_t i = 0; i < scenario.parameters.size() && i < values.size(); ++i) {
-    const Parameter& parameter = scenario.parameters[i];
-    const std::size_t at = text.find("\n//   " + parameter.name + " = ", from);
-    if (at == std::string::npos || at >= end_of_header) break;
-    const std::size_t begin = at + 6, end = text.find('\n', begin);
-    from = end;
-    const std::optional<ParameterProvenance> provenance =
-        parameter_provenance(file, scenario, values, i);
-    if (!provenance || end == std::string::npos) continue;
-    const std::string line = provenance_text(file, parameter, *provenance);
-    text.replace(begin, end - begin, line);
-    end_of_header = end_of_header + line.size() - (end - begin);
-    from = begin + line.size();
-  }
   return text;
 }
 
