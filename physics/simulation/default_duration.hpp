@@ -39,7 +39,8 @@ double route_time_at_limits(const RoadMap& map, const LaneRoute& route,
                             double max_speed);
 
 // Seconds the ego may have to wait along `route`: kJunctionWait for each junction it passes
-// through and for each of `obstacles` (their positions) inside one of its lanes, and the red and
+// through and for each of `obstacles` (positions of obstacles and of vehicles at their start, which
+// it may follow and pass) inside one of its lanes, and the red and
 // amber time of each planned light that controls one of its lanes.
 double route_waits(const RoadMap& map, const LaneRoute& route,
                    std::span<const MapPoint> obstacles = {});

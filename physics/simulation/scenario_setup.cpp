@@ -517,6 +517,28 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
   return scripted;
 }
 
+// Where the scenario's vehicles (cyclists included) start, placed with their messages discarded:
+// they are placed again, and reported, when they are prepared. A vehicle starting on the ego's
+// route is one it may follow and pass, so the default duration allows it a wait.
+std::vector<MapPoint> vehicle_starts(const Context& context) {
+  Diagnostics discarded;
+  Context quiet{context.scenario,
+                context.values,
+                context.map,
+                context.seed,
+                discarded,
+                context.ego_pose,
+                context.initial_headings,
+                context.initial_poses,
+                context.actor,
+                context.pedestrian,
+                context.duration};
+  std::vector<MapPoint> starts;
+  for (const Actor& actor : context.scenario.vehicles)
+    if (auto pose = place_state_unchecked(quiet, actor.initial)) starts.push_back(pose->position);
+  return starts;
+}
+
 BodyGeometry obstacle_geometry(Context& context, const Obstacle& obstacle) {
   // Without a shape, an obstacle is a 1 m cube: about a pallet or a large box on the road.
   if (!obstacle.shape) return {BodyShape::box, 1, 1, 1};
@@ -701,6 +723,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     std::vector<MapPoint> in_the_way;
     for (const StaticObstacle& obstacle : setup.obstacles)
       in_the_way.push_back(obstacle.pose.position);
+    for (const MapPoint& start : vehicle_starts(context)) in_the_way.push_back(start);
     context.duration = default_duration(
         scenario.specs,
         route_time_at_limits(map, setup.ego_route, setup.speed_limits, setup.ego_body.max_speed),
