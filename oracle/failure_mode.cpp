@@ -198,7 +198,10 @@ std::string_view contact_direction_name(ContactDirection direction) {
 std::string failure_mode_key(const FailureMode& mode) {
   std::string key = mode.atom;
   key += " | " + std::string(failure_event_name(mode.event));
-  key += " | " + (mode.other_role.empty() ? std::string("-") : mode.other_role);
+  // A rule of the ego's own driving (its speed, lamps, indicators) is broken whoever is near: the
+  // road user named then is incidental, so it describes the finding but does not split it.
+  const bool incidental = mode.event == FailureEvent::rule || mode.other_role.empty();
+  key += " | " + (incidental ? std::string("-") : mode.other_role);
   key += " | " + (mode.responsibility.empty() ? std::string("-") : mode.responsibility);
   key += " | " + std::string(ego_phase_name(mode.phase));
   return key;

@@ -81,7 +81,7 @@ std::string_view failure_event_name(FailureEvent event);
 std::string_view contact_direction_name(ContactDirection direction);
 
 // The mode as one line, `atom | event | other | responsibility | phase`, the other as its role,
-// "-" for none (the key findings are grouped by; docs/search.md documents it).
+// "-" for none and for a rule event (the key findings are grouped by; docs/search.md documents it).
 std::string failure_mode_key(const FailureMode& mode);
 // The rest of what was seen, for a finding's header: "car lead ahead; ego pulling out on a
 // straight; touching ego front, lead rear".

@@ -187,6 +187,26 @@ TEST(FailureModeTest, TheKeyTellsModesApartByEveryKeyField) {
   EXPECT_EQ(failure_mode_key(spec), "dist(ego, npc1) > 2 | rule | - | - | in lane");
 }
 
+// A rule of the ego's own driving broken near npc1 in one run and near npc3 in the next (the law
+// corpus's `direction == left -> speed <= 30` gave one mode per nearby car) is one failure; a
+// near miss or a collision is with someone, and stays apart by whom.
+TEST(FailureModeTest, ARuleBrokenNearAnotherRoadUserIsOneMode) {
+  FailureMode near_one;
+  near_one.atom = "spec1: (direction == left) -> (speed <= 30)";
+  near_one.event = FailureEvent::rule;
+  near_one.other_class = "car";
+  near_one.other_role = "npc1";
+  near_one.phase = EgoPhase::leaving_lane;
+  FailureMode near_three = near_one;
+  near_three.other_role = "npc3";
+  EXPECT_EQ(failure_mode_key(near_one), failure_mode_key(near_three));
+  EXPECT_NE(failure_mode_details(near_one), failure_mode_details(near_three));
+  for (FailureEvent event : {FailureEvent::near_miss, FailureEvent::collision}) {
+    near_one.event = near_three.event = event;
+    EXPECT_NE(failure_mode_key(near_one), failure_mode_key(near_three));
+  }
+}
+
 // The ego waits behind `lead` in east_0, creeping at 0.5 m/s from `creeps_from` (none when it
 // is 30 or more), then from 3 s pulls out to its left (heading `heading` rad) and clips the lead's
 // rear at 4 s; from `changes_lane_at` on, the trace has it on east_1 already. The collision's
@@ -278,8 +298,9 @@ TEST(FailureModeTest, DifferentFailuresWithTheSameActorAreDifferentModes) {
   jerk.name = "comfort";
   jerk.atom_text = "acc(ego, (0, 0)) <= 4";
   jerk.actor_distance = false;
+  EXPECT_EQ(describe_failure(missed, map, jerk).other_role, "lead");
   EXPECT_EQ(failure_mode_key(describe_failure(missed, map, jerk)),
-            "comfort: acc(ego, (0, 0)) <= 4 | rule | lead | - | leaving lane");
+            "comfort: acc(ego, (0, 0)) <= 4 | rule | - | - | leaving lane");
   SpecVerdict stuck = near;
   stuck.ending = VerdictEnding::stuck;
   EXPECT_EQ(failure_mode_key(describe_failure(missed, map, stuck)),
@@ -342,8 +363,10 @@ TEST(FailureModeTest, AViolationWithoutCollisionNamesTheNearestRoadUser) {
   verdict.atom_text = "dist(ego, ped) > 5";
   verdict.robustness = -1;
   verdict.time = 2.0;  // the ego at x = 20
+  EXPECT_EQ(describe_failure(trace, map, verdict).other_role, "ped");
+  verdict.actor_distance = true;  // a near miss is keyed by whom
   EXPECT_EQ(failure_mode_key(describe_failure(trace, map, verdict)),
-            "keep_clear: dist(ego, ped) > 5 | rule | ped | - | in lane");
+            "keep_clear: dist(ego, ped) > 5 | near miss | ped | - | in lane");
 }
 
 // Two runs of one hard-braking violation named npc1 or npc2 by which was nearer at that moment;
@@ -363,8 +386,7 @@ TEST(FailureModeTest, AViolationWithoutCollisionNamesTheRoadUserTheEgoFollowsFir
   verdict.atom_text = "acc(ego, (0, 0)) <= 4";
   verdict.robustness = -1;
   verdict.time = 2.0;  // the ego at x = 20: `beside` 3.6 m away, `lead` 15 m ahead
-  EXPECT_EQ(failure_mode_key(describe_failure(trace, map, verdict)),
-            "comfort: acc(ego, (0, 0)) <= 4 | rule | lead | - | in lane");
+  EXPECT_EQ(describe_failure(trace, map, verdict).other_role, "lead");
 }
 
 TEST(FailureModeTest, SampleAtTimeRoundsAndClamps) {
