@@ -286,6 +286,9 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
   auto here = context.route.lane_at(progress);
   if (!here) return std::nullopt;
   bool standing = cluster.speed < kStationary;
+  // A blocker crawling at walking pace is swept as if standing where it is: it only moves away
+  // during the pull-out, so the check errs on the safe side (a 0.6 m/s car was clipped unchecked).
+  bool crawling = cluster.speed < kWalkingPace;
   std::vector<ActorId> ignored = passed_ids(blockers, cluster.count);
 
   for (const Candidate& candidate : candidates(context.map.lane(here->lane), standing)) {
@@ -311,7 +314,7 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
     double length = std::min(usual, 0.9 * room);
     double shortest = quickest;
     bool at_walking_pace = ego.speed < kWalkingPace;
-    if (length < quickest && at_walking_pace && standing) {
+    if (length < quickest && at_walking_pace && crawling) {
       // The swept-path check below (sweep_clears) decides whether the pull-out is possible;
       // where the smoothstep's bend bound doubts it, the tight pull-out may still clear.
       std::optional<double> pull_out = standing_pull_out(room, *offset, context.vehicle);
@@ -333,7 +336,7 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
     for (std::size_t i = 0; i < cluster.count; ++i)
       plan.passing.push_back(
           {blockers[i].object->id, blockers[i].rear_s, blockers[i].front_s, blockers[i].speed});
-    if (standing && !sweep_clears(context, plan, first, settings)) {
+    if (crawling && !sweep_clears(context, plan, first, settings)) {
       waiting = true;
       continue;
     }

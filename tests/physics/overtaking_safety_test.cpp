@@ -108,6 +108,25 @@ TEST(OvertakingSafetyTest, PullsOutFromFiveMetresBehindAParkedCarWithoutContact)
   EXPECT_GT(closest_approach(trace, 0, 1), 0.2);
 }
 
+// A car crawling at 0.6 m/s (faster than standing, slower than walking pace) is swept as if it
+// stood: the ego, crawling up behind it, pulled out round it unchecked and clipped its rear
+// corner (a law-corpus finding on san_francisco, following_slow).
+TEST(OvertakingSafetyTest, PullsOutRoundACarCrawlingAtWalkingPaceWithoutContact) {
+  for (const char* start : {"28.0", "30.0", "32.0"}) {
+    auto run =
+        simulate_text(two_lane_scenario("crawler",
+                                        "ego = AV((\"east_0\"->20, , 0), (\"east_0\"->200));\n"
+                                        "crawler = Vehicle((\"east_0\"->" +
+                                            std::string(start) + ", , 0.6));\n"),
+                      lasting(90));
+    ASSERT_TRUE(run.trace) << run.errors;
+    const Trace& trace = *run.trace;
+    EXPECT_TRUE(trace.collisions.empty()) << start;
+    EXPECT_EQ(trace.end, EndReason::target_reached) << start;
+    EXPECT_GT(closest_approach(trace, 0, 1), 0.2) << start;
+  }
+}
+
 // Indicate, then move: the left indicator is on for at least 2.5 s (the rule is 3 s) before the
 // ego's centre leaves its lane, and the right one comes on before it moves back.
 TEST(OvertakingSafetyTest, IndicatesBeforeItsCentreLeavesItsLane) {
