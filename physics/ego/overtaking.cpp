@@ -18,6 +18,7 @@ constexpr double kTimingStep = 0.1;      // s, of the pass's time integration
 constexpr double kLongestPass = 40.0;    // s: a pass that would take longer is not started
 constexpr double kLaneTolerance = 0.75;  // m the passing lane may wander from its offset
 constexpr double kWalkingPace = 1.5;     // m/s: slower, a pull-out round something standing
+constexpr double kHardlyOut = 0.3;       // m: a pull-out given up before this is simply dropped
                                          // may be a tight one
 
 double smoothstep(double x) {
@@ -389,7 +390,12 @@ void update_overtake(OvertakePlan& plan, const OvertakeContext& context,
     Candidate lane{plan.lane, plan.oncoming, BoundaryType::unknown};
     if (!timing.possible ||
         !passing_lane_clear(context, lane, cluster, timing, settings, ignored)) {
-      start_back(plan, progress, context.ego.speed, settings);
+      // Hardly out yet, there is no way back to drive: a move back planned from a standstill
+      // behind the blocker would wait for progress the blocker forbids, indicating for ever.
+      if (std::abs(planned_lateral(plan, progress)) < kHardlyOut)
+        plan = OvertakePlan{};
+      else
+        start_back(plan, progress, context.ego.speed, settings);
       return;
     }
   }

@@ -127,6 +127,27 @@ TEST(OvertakingSafetyTest, PullsOutRoundACarCrawlingAtWalkingPaceWithoutContact)
   }
 }
 
+// Stopped behind a crate with traffic in the passing lane, the ego began a pull-out, gave it up
+// for a car coming up behind before it had moved out, and then stood indicating right for ever,
+// waiting to drive a move back it never needed (a corpus finding, stationary_obstacle_in_lane).
+TEST(OvertakingSafetyTest, APullOutGivenUpBeforeMovingOutIsDroppedNotDrivenBack) {
+  auto run = simulate_text(
+      "ego = AV((\"east_0\"->47.3, , 15.97), (\"east_0\"->420));\n"
+      "wreck = Obstacle(\"east_0\"->297.56, (box, 4.5, 1.9, 1.5));\n"
+      "crate = Obstacle(\"east_0\"->289.56, (box, 1.2, 1.0, 0.8));\n"
+      "npc1 = Vehicle((\"east_1\"->118.02, , 10.51), uniform((\"east_1\"->118.02, , 10.51)), "
+      "(\"east_1\"->495));\n"
+      "npc2 = Vehicle((\"east_1\"->17.27, , 10.51), uniform((\"east_1\"->17.27, , 10.51)), "
+      "(\"east_1\"->470), (\"Truck\", red));\n"
+      "scenario = CreateScenario{load(\"straight\");\nego;\n{npc1, npc2};\n{};\n"
+      "{wreck, crate};\n};\n",
+      lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  for (const auto& collision : trace.collisions) EXPECT_NE(collision.first, 0u);
+}
+
 // Indicate, then move: the left indicator is on for at least 2.5 s (the rule is 3 s) before the
 // ego's centre leaves its lane, and the right one comes on before it moves back.
 TEST(OvertakingSafetyTest, IndicatesBeforeItsCentreLeavesItsLane) {
