@@ -17,7 +17,6 @@ constexpr double kStationary = 0.5;      // m/s: a blocker slower than this is s
 constexpr double kTimingStep = 0.1;      // s, of the pass's time integration
 constexpr double kLongestPass = 40.0;    // s: a pass that would take longer is not started
 constexpr double kLaneTolerance = 0.75;  // m the passing lane may wander from its offset
-constexpr double kWalkingPace = 1.5;     // m/s: slower, a pull-out round something standing
 constexpr double kHardlyOut = 0.3;       // m: a pull-out given up before this is simply dropped
                                          // may be a tight one
 

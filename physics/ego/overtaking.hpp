@@ -19,6 +19,10 @@
 
 namespace scenfuzz {
 
+// m/s: below it a blocker is swept as if standing and kept room behind, and the ego itself may
+// pull out at full lock.
+inline constexpr double kWalkingPace = 1.5;
+
 struct OvertakingSettings {
   bool enabled = true;
   double lateral_speed = 1.0;               // m/s, mean sideways speed of a lane change

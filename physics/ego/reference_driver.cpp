@@ -182,10 +182,10 @@ void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
   } else {
     overtake_.possible_since = -1;  // indicating (if it was), waiting for a gap
   }
-  // Behind what it means to pass (waiting for a gap, or indicating), standing or crawling at
-  // walking pace (1.5 m/s, as overtaking.cpp sweeps it), it keeps room: a crawler then draws away
-  // until the pull-out clears it.
-  if (!overtake_.active && (waiting || overtake_.indicating) && in_lane.front().speed < 1.5)
+  // Behind what it means to pass (waiting for a gap, or indicating), standing or crawling below
+  // walking pace, it keeps room: a crawler then draws away until the pull-out clears it.
+  if (!overtake_.active && (waiting || overtake_.indicating) &&
+      in_lane.front().speed < kWalkingPace)
     waiting_to_pass_ = in_lane.front().object->id;
 }
 
