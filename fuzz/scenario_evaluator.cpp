@@ -66,9 +66,11 @@ bool is_finding(const EgoFailure& failure) {
 std::string failure_mode_signature(const ScenarioRun& run) {
   const std::vector<std::size_t> order = violation_order(run.verdicts);
   if (order.empty() || !run.trace || !run.map) return "";
-  FailureMode mode = describe_failure(*run.trace, *run.map, run.verdicts[order.front()]);
-  if (!run.responsibilities.empty())
-    mode.responsibility = responsibility_name(run.responsibilities.front().responsibility);
+  const CollisionResponsibility* first =
+      run.responsibilities.empty() ? nullptr : &run.responsibilities.front();
+  FailureMode mode = describe_failure(*run.trace, *run.map, run.verdicts[order.front()],
+                                      first ? first->danger_began : std::nullopt);
+  if (first) mode.responsibility = responsibility_name(first->responsibility);
   return failure_mode_key(mode);
 }
 

@@ -350,7 +350,8 @@ FailureEvent failure_event(const Trace& trace, const SpecVerdict& verdict) {
 
 }  // namespace
 
-FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict) {
+FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict,
+                             std::optional<std::size_t> phase_sample) {
   FailureMode mode;
   if (verdict.name == kNoCollisionSpec)
     mode.atom = "collision";
@@ -379,7 +380,7 @@ FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecV
     mode.other_role = actor_role(trace.actors[*other]);
   }
   mode.event = failure_event(trace, verdict);
-  mode.phase = ego_phase_at(trace, map, at);
+  mode.phase = ego_phase_at(trace, map, std::min(phase_sample.value_or(at), at));
   mode.ego_activity = ego_activity_at(trace, map, at);
   mode.road_feature = road_feature_at(trace, map, at);
   return mode;

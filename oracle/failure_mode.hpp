@@ -116,10 +116,12 @@ RoadFeature road_feature_at(const Trace& trace, const RoadMap& map, std::size_t 
 // The failure mode of a violated verdict, responsibility left empty for the caller. The other
 // actor: the one the ego first collided with, if it collided, with the touching sides and its
 // direction; else at the verdict's time the road user it was following (EgoActivity::following),
-// else the nearest (vehicle or pedestrian, centre to centre, within kNearbyActor). The ego's phase,
-// activity and road feature: at the collision, else at that time.
+// else the nearest (vehicle or pedestrian, centre to centre, within kNearbyActor). The ego's
+// activity and road feature: at the collision, else at that time; its phase there too, or at
+// `phase_sample` when given (CollisionResponsibility::danger_began: when the danger began).
 inline constexpr double kNearbyActor = 50;  // m
-FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict);
+FailureMode describe_failure(const Trace& trace, const RoadMap& map, const SpecVerdict& verdict,
+                             std::optional<std::size_t> phase_sample = std::nullopt);
 
 // The violated verdicts' indices, the earliest in time first (ties in file order): a finding
 // names them in this order and its mode is the first's, so a crash is never reported as the

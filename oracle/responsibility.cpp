@@ -44,8 +44,10 @@ constexpr double kAtLimit = 0.95;
 constexpr double kEntryLead = 0.1;
 
 struct Verdict {
+  Verdict(Responsibility r, std::string why) : responsibility(r), reason(std::move(why)) {}
   Responsibility responsibility = Responsibility::ego;
   std::string reason;
+  std::optional<std::size_t> danger_began;  // CollisionResponsibility's; rss_rule sets it
 };
 
 std::string tenths(double value) { return format_number(std::round(value * 10) / 10); }
@@ -515,9 +517,8 @@ std::string other_fault_text(const Trace& trace, const ResponseViolation& v,
   return "";
 }
 
-Verdict rss_rule(const Trace& trace, const RoadMap& map, ActorId other, std::size_t k,
-                 const CollisionTriage& t, const RssParameters& rss) {
-  const BlameTime blame = rss_blame_time(trace, map, other, k, rss);
+Verdict rss_verdict(const Trace& trace, const RoadMap& map, ActorId other, std::size_t k,
+                    const CollisionTriage& t, const BlameTime& blame, const RssParameters& rss) {
   const std::vector<ResponseViolation> faults =
       rss_improper_responses(trace, map, other, blame, k, rss);
   const std::string other_name = described(trace.actors[other]);
@@ -544,6 +545,14 @@ Verdict rss_rule(const Trace& trace, const RoadMap& map, ActorId other, std::siz
                                               safe_distance_at_entry(trace, *t.entry, rss), rss) +
                                        "; the ego responded as RSS requires"};
   return {Responsibility::other, "the ego responded as RSS requires to " + other_name};
+}
+
+Verdict rss_rule(const Trace& trace, const RoadMap& map, ActorId other, std::size_t k,
+                 const CollisionTriage& t, const RssParameters& rss) {
+  const BlameTime blame = rss_blame_time(trace, map, other, k, rss);
+  Verdict verdict = rss_verdict(trace, map, other, k, t, blame, rss);
+  if (blame.which == RssCase::lateral) verdict.danger_began = blame.sample;
+  return verdict;
 }
 
 Verdict decide(const Trace& trace, const RoadMap& map, const Collision& collision, ActorId other,
@@ -595,6 +604,7 @@ CollisionResponsibility collision_responsibility(const Trace& trace, const RoadM
   Verdict verdict = decide(trace, map, collision, other, k, result.triage, rss);
   result.responsibility = verdict.responsibility;
   result.reason = std::move(verdict.reason);
+  result.danger_began = verdict.danger_began;
   return result;
 }
 

@@ -44,6 +44,10 @@ struct CollisionResponsibility {
   Responsibility responsibility = Responsibility::ego;
   std::string reason;  // one sentence, no final full stop
   CollisionTriage triage;
+  // When the danger began with a sideways move (RSS's lateral case): that sample. A lane change
+  // that ends in a collision seconds later is one failure whether the impact comes while the ego
+  // is still leaving its lane or after it settled, so its phase is read here (failure_mode.hpp).
+  std::optional<std::size_t> danger_began;
 };
 
 // The responsibility for collision `index` of `trace`, which must involve the ego. `map` is the

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "oracle/ego_phase.hpp"
+#include "oracle/failure_mode.hpp"
 #include "oracle/implausible_motion.hpp"
 #include "oracle/judge.hpp"
 #include "oracle/rss_distances.hpp"
@@ -148,6 +150,7 @@ TEST(ResponsibilityTest, ACarRearEndingTheEgoThatBrakesGentlyIsAtFault) {
   const CollisionResponsibility r = judge(trace, map);
   EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
   EXPECT_EQ(r.reason, "hit from behind by a car that braked at 0 m/s^2 where RSS owes 4 m/s^2");
+  EXPECT_FALSE(r.danger_began);  // a danger along the lane: the phase is read at impact
   EXPECT_FALSE(r.triage.ego_stationary);
   EXPECT_FALSE(r.triage.ego_braking_at_limit);
 }
@@ -213,6 +216,18 @@ TEST(ResponsibilityTest, ACarThatNeverBrakesLongAfterTheEgoChangedLaneInFrontSha
   EXPECT_EQ(r.reason.rfind("changed lane ", 0), 0u) << r.reason;
   EXPECT_NE(r.reason.find("hit from behind by a car that braked at 0 m/s^2"), std::string::npos)
       << r.reason;
+  // The failure is the lane change, seconds before the impact in the lane: its phase is read
+  // when the danger began, so a run whose impact comes sooner is the same mode.
+  ASSERT_TRUE(r.danger_began);
+  EXPECT_LT(trace.time[*r.danger_began], 4.0);
+  EXPECT_EQ(ego_phase_at(trace, map, *r.danger_began), EgoPhase::leaving_lane);
+  EXPECT_EQ(ego_phase_at(trace, map, trace.sample_count() - 1), EgoPhase::in_lane);
+  SpecVerdict verdict;
+  verdict.name = kNoCollisionSpec;
+  verdict.robustness = -0.5;
+  verdict.time = trace.time.back();
+  EXPECT_EQ(describe_failure(trace, map, verdict).phase, EgoPhase::in_lane);
+  EXPECT_EQ(describe_failure(trace, map, verdict, r.danger_began).phase, EgoPhase::leaving_lane);
 }
 
 TEST(ResponsibilityTest, BothChangingLaneIntoEachOtherShareIt) {
