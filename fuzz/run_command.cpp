@@ -17,6 +17,7 @@
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_language.hpp"
 #include "lang/number_format.hpp"
+#include "lang/parameter_provenance.hpp"
 #include "oracle/judge.hpp"
 #include "oracle/responsibility.hpp"
 #include "oracle/robustness.hpp"
@@ -394,7 +395,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   out << "map " << trace.map_name << ", seed " << trace.seed << ", dt " << format_number(trace.dt)
       << " s\n";
   for (std::size_t i = 0; i < space.dimensions.size(); ++i)
-    out << "  " << space.dimensions[i].name << " = " << format_number(values[i]) << "\n";
+    out << "  " << parameter_value_text(file, scenario, values, i) << "\n";
   double simulated = trace.time.empty() ? 0.0 : trace.time.back();
   out << "simulated " << format_number(std::round(simulated * 1000) / 1000)
       << " s, ended: " << end_reason_name(trace.end) << "\n";

@@ -78,4 +78,15 @@ std::string provenance_text(const SourceFile& file, const Parameter& parameter,
   return text;
 }
 
+std::string parameter_value_text(const SourceFile& file, const ScenarioTemplate& scenario,
+                                 std::span<const double> values, std::size_t index) {
+  const Parameter& parameter = scenario.parameters[index];
+  if (auto provenance = parameter_provenance(file, scenario, values, index))
+    return provenance_text(file, parameter, *provenance);
+  const bool time = parameter.unit == "time of day";
+  return parameter.name + " = " +
+         (time ? format_time_of_day(values[index]) : format_number(values[index])) +
+         (parameter.unit.empty() || time ? "" : " " + parameter.unit);
+}
+
 }  // namespace scenfuzz

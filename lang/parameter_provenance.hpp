@@ -35,4 +35,9 @@ std::optional<ParameterProvenance> parameter_provenance(const SourceFile& file,
 std::string provenance_text(const SourceFile& file, const Parameter& parameter,
                             const ParameterProvenance& provenance);
 
+// How parameter `index` at `values` is named to a user (a concrete scenario's header, `run`'s
+// report): "ego.init.speed = 12 m/s", or provenance_text when its range sits in an expression.
+std::string parameter_value_text(const SourceFile& file, const ScenarioTemplate& scenario,
+                                 std::span<const double> values, std::size_t index);
+
 }  // namespace scenfuzz

@@ -465,20 +465,6 @@ class Printer {
   std::string out_;
 };
 
-// "ego.init.speed = 12 m/s": a header line of a concrete scenario naming one dimension's value; a
-// dimension inside an expression is named by the value of what the user wrote, and where its
-// draw came from (parameter_provenance.hpp).
-std::string dimension_line(const SourceFile& file, const ScenarioTemplate& scenario,
-                           std::span<const double> values, std::size_t index) {
-  const Parameter& parameter = scenario.parameters[index];
-  if (auto provenance = parameter_provenance(file, scenario, values, index))
-    return provenance_text(file, parameter, *provenance);
-  const bool time = parameter.unit == "time of day";
-  return parameter.name + " = " +
-         (time ? format_time_of_day(values[index]) : format_number(values[index])) +
-         (parameter.unit.empty() || time ? "" : " " + parameter.unit);
-}
-
 }  // namespace
 
 std::string print(const ScenarioTemplate& scenario) { return Printer(scenario).run(); }
@@ -515,7 +501,7 @@ std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scena
       text.replace(first.location.offset, first.location.length, replacement);
   }
   for (std::size_t i = 0; i < scenario.parameters.size(); ++i)
-    header += "//   " + dimension_line(file, scenario, parameter_values, i) + "\n";
+    header += "//   " + parameter_value_text(file, scenario, parameter_values, i) + "\n";
   return header + text;
 }
 

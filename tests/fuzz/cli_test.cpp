@@ -563,6 +563,12 @@ TEST_F(CliRunTest, RunsALogicalScenarioAtTheMiddleAndWritesItsOutputs) {
   EXPECT_NE(run.out.find("spec spec1: robustness -"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("violated by 'dis_car >= 3.0' ("), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("map straight"), std::string::npos) << run.out;
+  // The report names the point as the concrete scenario's header does: by the value of what the
+  // file writes, not by the draw of a range inside it.
+  EXPECT_NE(run.out.find("\n  car.waypoint[0].position.x = 150 m, where range(-30, 30) & "
+                         "(-1.0, 0.0) drew 0 ("),
+            std::string::npos)
+      << run.out;
   EXPECT_NE(run.out.find("simulated "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("ego reached its target: "), std::string::npos) << run.out;
   for (const char* name : {"trace.csv", "trace.json", "trace.svg", "scenario.avu"})
