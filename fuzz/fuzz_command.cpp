@@ -31,6 +31,7 @@
 #include "lang/avunit/avunit.hpp"
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/actor_interaction.hpp"
 #include "oracle/robustness.hpp"
 #include "oracle/trace_audit.hpp"
 #include "sampler/mutation_space.hpp"
@@ -106,6 +107,27 @@ bool check_setup(const FuzzCommandOptions& options, const ScenarioFile& input,
                        "the scenario's duration of " + format_number(*probe.duration) + " s");
   if (problem) err << "scenfuzz: error: " << *problem << "\n";
   return !problem;
+}
+
+// Simulates the search's first point (a concrete seed's values, else the centre of the space) once:
+// actors that never come near the ego's path there, a layout read otherwise than the author meant,
+// are warned of before the budget is spent on a space where nothing can fail.
+void warn_if_actors_never_interact(const ScenarioEvaluator& evaluator, std::uint64_t seed,
+                                   std::ostream& err) {
+  const std::vector<double> point = evaluator.start_point().value_or(
+      std::vector<double>(evaluator.space().dimensions.size(), 0.5));
+  ScenarioRun run;
+  try {
+    run = evaluator.run(point, seed);
+  } catch (const OracleError&) {
+    return;  // a spec the traces cannot answer: the search stops with the reason
+  }
+  if (!run.trace) return;
+  const std::string warning = no_interaction_warning(*run.trace, actor_approaches(*run.trace));
+  if (!warning.empty())
+    err << "scenfuzz: warning: at "
+        << (evaluator.start_point() ? "the seed's values" : "the centre of the space") << ", "
+        << warning << "\n";
 }
 
 std::string finding_line(const Finding& finding) {
@@ -326,6 +348,7 @@ int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream&
   std::optional<SearchOptions> search = search_options(options, *evaluator, err);
   if (!search) return kExitUsage;
   if (!check_setup(options, *input, *evaluator, err)) return kExitUsage;
+  warn_if_actors_never_interact(*evaluator, options.seed, err);
 
   const std::vector<std::string> objectives = evaluator->objectives();
   ProgressReport progress(options, out, err);

@@ -18,6 +18,7 @@
 #include "fuzz/scenario_language.hpp"
 #include "lang/number_format.hpp"
 #include "lang/parameter_provenance.hpp"
+#include "oracle/actor_interaction.hpp"
 #include "oracle/judge.hpp"
 #include "oracle/responsibility.hpp"
 #include "oracle/robustness.hpp"
@@ -207,6 +208,14 @@ std::string describe_audit_issue(const AuditIssue& issue) {
   return who + std::string(audit_kind_name(issue.kind));
 }
 
+// Whether the actors came near the ego's path, and the nearest each came (actor_interaction.hpp).
+nlohmann::json interaction_json(const Trace& trace, const std::vector<ActorApproach>& approaches) {
+  nlohmann::json nearest = nlohmann::json::array();
+  for (const ActorApproach& a : approaches)
+    nearest.push_back({{"actor", trace.actors[a.actor].name}, {"gap", a.gap}, {"time", a.time}});
+  return {{"actors_interact", actors_interact(approaches)}, {"nearest_to_ego_path", nearest}};
+}
+
 nlohmann::json audit_json(const TraceAudit& audit) {
   nlohmann::json issues = nlohmann::json::array();
   for (const AuditIssue& issue : audit.issues) {
@@ -346,6 +355,9 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   // What the simulated world did that no real road user does: not a finding, but a reason to
   // doubt one (docs/oracle.md, "Trace audit").
   const TraceAudit audit = audit_trace(trace, *map);
+  const std::vector<ActorApproach> approaches = actor_approaches(trace);
+  if (const std::string warning = no_interaction_warning(trace, approaches); !warning.empty())
+    err << "scenfuzz: warning: " << warning << "\n";
 
   std::vector<std::string> written;
   if (!options.out_dir.empty()) {
@@ -389,6 +401,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
     nlohmann::json summary = summary_json(trace, space, values, responsibilities, written);
     summary["specs"] = verdicts_json(file, verdicts);
     summary["audit"] = audit_json(audit);
+    summary["interaction"] = interaction_json(trace, approaches);
     out << summary.dump(2) << "\n";
     return exit_code;
   }

@@ -617,6 +617,47 @@ TEST_F(CliRunTest, JsonSummary) {
   EXPECT_EQ(summary["files"].size(), 4u);
 }
 
+// Issue 24: a file whose actors never come near the ego (here a car three lanes away) cannot fail
+// whatever the search tries; run and the search say so instead of reporting "0 findings" as a pass.
+TEST_F(CliRunTest, ActorsThatNeverComeNearTheEgoAreWarnedOf) {
+  const std::string text = R"(ego_vehicle = AV(("east_0"->20, , 10), ("east_0"->200));
+npc = Vehicle(("east_3"->30, , NPC_SPEED));
+scenario = CreateScenario{load("straight?lanes=4"); ego_vehicle; {npc}; {}; {};};
+Trace trace = EXE(scenario);
+)";
+  auto with_speed = [&](const std::string& speed) {
+    std::string file = text;
+    file.replace(file.find("NPC_SPEED"), 9, speed);
+    return file;
+  };
+  const std::string far = write("far.avu", with_speed("10"));
+  const Outcome run = scenfuzz({"run", far, "--out", (dir_ / "o").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("warning: the scenario's actors never come within 3 m of the ego's "
+                         "path (nearest: npc 7 m at 0 s)"),
+            std::string::npos)
+      << run.err;
+  const Outcome json = scenfuzz({"run", far, "--json"});
+  const auto summary = nlohmann::json::parse(json.out);
+  EXPECT_EQ(summary["interaction"]["actors_interact"], false);
+  EXPECT_EQ(summary["interaction"]["nearest_to_ego_path"][0]["actor"], "npc");
+
+  const std::string logical = write("far_logical.avu", with_speed("range(5, 15)"));
+  const Outcome search = scenfuzz({"--budget", "4", logical, "--out", (dir_ / "search").string()});
+  ASSERT_EQ(search.exit_code, 0) << search.err;
+  EXPECT_NE(search.err.find("warning: at the centre of the space, the scenario's actors never "
+                            "come within 3 m"),
+            std::string::npos)
+      << search.err;
+
+  // The same car in the ego's own lane ahead: no warning.
+  std::string near = with_speed("10");
+  near.replace(near.find("east_3"), 6, "east_0");
+  const Outcome near_run =
+      scenfuzz({"run", write("near.avu", near), "--out", (dir_ / "n").string()});
+  EXPECT_EQ(near_run.err.find("never come within"), std::string::npos) << near_run.err;
+}
+
 TEST_F(CliRunTest, ALogicalScenarioNeedsAPoint) {
   const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu")});
   EXPECT_EQ(run.exit_code, 2);
