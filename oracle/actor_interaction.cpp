@@ -15,11 +15,14 @@ namespace {
 
 constexpr double kPathSpacing = 1.0;  // m between the thinned path's points
 constexpr std::size_t kListed = 8;    // actors a warning names, the nearest first
+constexpr double kHeadingOnFor = 3;   // s of the ego's last speed and heading added to its path
 
 // Half the diagonal of the body: the radius of the circle around it, so that a car crossing the
 // path nose first counts its length.
 double outer_radius(const TraceActor& actor) { return 0.5 * std::hypot(actor.length, actor.width); }
 
+// The ego's trajectory, and where it was heading when the run ended: a run that an end condition
+// stops just before the ego reaches a pedestrian crossing ahead of it did bring them together.
 std::vector<MapPoint> ego_path(const TraceActor& ego) {
   std::vector<MapPoint> path;
   for (std::size_t i = 0; i < ego.x.size(); ++i) {
@@ -27,6 +30,11 @@ std::vector<MapPoint> ego_path(const TraceActor& ego) {
     if (path.empty() || distance(path.back(), p) >= kPathSpacing || i + 1 == ego.x.size())
       path.push_back(p);
   }
+  const std::size_t last = ego.x.size() - 1;
+  const double ahead = kHeadingOnFor * ego.speed[last];
+  if (ahead > 0)
+    path.push_back({ego.x[last] + ahead * std::cos(ego.heading[last]),
+                    ego.y[last] + ahead * std::sin(ego.heading[last])});
   return path;
 }
 

@@ -16,7 +16,7 @@ namespace scenfuzz {
 inline constexpr double kInteractionReach = 3.0;
 
 // The nearest an actor's body came to the ego's path (the ground the ego's body covered over the
-// run, wherever the ego was then), and when.
+// run, whenever it covered it, and the 3 s ahead of it at its last speed and heading), and when.
 struct ActorApproach {
   ActorId actor = kEgo;
   double gap = 0;   // m between the bodies' outer circles and the path; 0 when they overlap
