@@ -6,6 +6,7 @@
 #include <array>
 #include <string>
 
+#include "lang/wmg/junction_arms.hpp"
 #include "lang/wmg/scenario_translation.hpp"
 
 namespace scenfuzz::wmg {
@@ -181,36 +182,18 @@ std::optional<JunctionMap> junction_map(const Junction& junction) {
   return std::nullopt;
 }
 
-// The crossroads' and T-junction's `angle`: how far counter-clockwise from the west arm (the
-// first road) the south arm (the second) lies. The generated crossing road is straight, so
-// neighbouring arms meet alternately at that angle (R1/R2, R3/R4) and at its supplement (R2/R3,
-// R4/R1); the first written pair of neighbouring arms, in either direction, gives it. Pairs of
-// opposite arms (straight on) say nothing about it.
-void add_crossing_angle(const Junction& junction, std::size_t arms,
+// The generator's `angle` (counter-clockwise from the west arm to the south arm) from the stated
+// pair the arm layout chose, or its supplement.
+void add_crossing_angle(const Junction& junction, const ArmLayout& layout,
                         const std::vector<Value>& angles, Translation& translation) {
-  auto arm_of = [&junction](const Identifier& road) {
-    auto found =
-        std::find_if(junction.connected_roads.begin(), junction.connected_roads.end(),
-                     [&road](const Identifier& connected) { return connected.name == road.name; });
-    return static_cast<std::size_t>(found - junction.connected_roads.begin());
-  };
-  for (std::size_t i = 0; i < junction.angle_pairs.size() && i < angles.size(); ++i) {
-    const std::size_t from = arm_of(junction.angle_pairs[i].from);
-    const std::size_t to = arm_of(junction.angle_pairs[i].to);
-    if (from >= junction.connected_roads.size() || to >= junction.connected_roads.size()) continue;
-    const std::size_t low = std::min(from, to);
-    const std::size_t high = std::max(from, to);
-    const bool wraps_round = low == 0 && high == arms - 1 && arms == 4;
-    if (high - low != 1 && !wraps_round) continue;
-    const SourceLocation where = junction.angles[i].location;
-    const bool supplement = low % 2 == 1 || wraps_round;
-    add_map_parameter(
-        translation, "angle",
-        supplement ? binary_value(ValueOp::subtract, constant_value(180.0, where), angles[i], where)
-                   : angles[i],
-        where);
-    return;
-  }
+  if (!layout.angle_pair || *layout.angle_pair >= angles.size()) return;
+  const std::size_t k = *layout.angle_pair;
+  const SourceLocation where = junction.angles[k].location;
+  add_map_parameter(translation, "angle",
+                    layout.supplement ? binary_value(ValueOp::subtract,
+                                                     constant_value(180.0, where), angles[k], where)
+                                      : angles[k],
+                    where);
 }
 
 void translate_junction(const Junction& junction, const std::vector<Road>& roads,
@@ -247,8 +230,9 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
                                       "' has none to become");
     return;
   }
-  // The arms in the order the contract gives the connected roads.
-  static constexpr std::array<const char*, 4> kArms = {"west", "south", "east", "north"};
+  const std::optional<ArmLayout> layout =
+      lay_out_arms(junction, map->name, translation.diagnostics);
+  if (!layout) return;
   int lanes = 0;
   for (std::size_t i = 0; i < junction.connected_roads.size(); ++i) {
     const Identifier& id = junction.connected_roads[i];
@@ -263,7 +247,7 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
     }
     const int road_lanes = map->name == "roundabout" ? 1 : traffic_lane_count(*road);
     lanes = std::max(lanes, traffic_lane_count(*road));
-    declare_lanes(*road, std::string(kArms[i]) + "_in_", road_lanes, translation);
+    declare_lanes(*road, layout->arms[i] + "_in_", road_lanes, translation);
   }
   for (const Road& road : roads)
     if (!translation.roads.contains(road.id.name))
@@ -285,7 +269,7 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
     add_map_parameter(translation, "ring_radius", *ring_radius,
                       junction.dimensions.diameter->location);
   // The roundabout's arms are a quarter turn apart whatever the file says.
-  if (!roundabout) add_crossing_angle(junction, map->arms, angles, translation);
+  if (!roundabout) add_crossing_angle(junction, *layout, angles, translation);
 
   // The generated junction has one signal per approach, `light_<arm>`, with its own signal plan:
   // a light placed on a road (or one of its lanes) is that arm's signal. No TrafficLightSetting is
@@ -305,7 +289,7 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
       }
       if (placement.lane)
         translation.lane_id(LaneName{placement.road, *placement.lane, placement.location});
-      translation.traffic_lights[placement.light.name] = std::string("light_") + kArms[arm];
+      translation.traffic_lights[placement.light.name] = "light_" + layout->arms[arm];
     }
   }
 }

@@ -21,24 +21,7 @@ namespace {
 
 using test::expect_spans;
 using test::Parts;
-
-// A road with `lanes` traffic lanes, the given geometry lines, length and lane width.
-std::string road_text(const std::string& id, int lanes, const std::string& geometry,
-                      const std::string& tail, const std::string& start = "START",
-                      const std::string& end = "END", const std::string& speed = "100") {
-  std::string lane_list;
-  for (int k = 1; k <= lanes; ++k) lane_list += (k > 1 ? ", " : "") + id + ".L" + std::to_string(k);
-  return id + ": " + start + "\nRoad type [Motorway] as [" + id +
-         "] with zone as [N/A] AND speed limit of [" + speed +
-         "]\nin a [Rural] environment with Number of lanes [" + std::to_string(lanes) + "] as [" +
-         lane_list +
-         "]\nRoad traffic direction [Left-handed] Lane type [Traffic lane] Lane markings [Solid "
-         "line]\n" +
-         geometry +
-         " Vertical road geometry [Level plane]\nTransverse road geometry [Divided] Road banking "
-         "angle [Level Plane]\nwith [No] roadside feature\n" +
-         tail + "\n" + end + "\n";
-}
+using test::road_text;
 
 std::string straight_road(int lanes = 2,
                           const std::string& tail = "Length [200 to 400] AND Lane width [3.5]") {
