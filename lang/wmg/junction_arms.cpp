@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 #include "lang/number_format.hpp"
@@ -165,9 +166,63 @@ ArmLayout round_the_ring(const Junction& junction, const std::vector<ArmDirectio
   return layout;
 }
 
+// An actor on road `actor` placed in a sector of the reference on road `reference`: where the
+// actor's arm must lie as the reference drives in on its own.
+struct SideHint {
+  std::size_t reference = 0, actor = 0;  // connected-road indices
+  RelativeLocation sector = RelativeLocation::front;
+};
+
+std::vector<SideHint> side_hints(const Junction& junction, const Initialisation& initialisation) {
+  std::map<std::string, std::string> road_of;  // actor -> the road of its initial lane
+  road_of[initialisation.first.actor.name] = initialisation.first.lane.road.name;
+  std::vector<SideHint> hints;
+  for (const RelativeActorInit& init : initialisation.relative) {
+    road_of[init.actor.name] = init.lane.road.name;
+    const auto reference = road_of.find(init.reference.name);
+    if (reference == road_of.end()) continue;
+    const std::size_t a = road_index(junction, Identifier{reference->second, {}});
+    const std::size_t b = road_index(junction, Identifier{init.lane.road.name, {}});
+    const std::size_t roads = junction.connected_roads.size();
+    if (a < roads && b < roads && a != b) hints.push_back({a, b, init.relative_position.value});
+  }
+  return hints;
+}
+
+// Whether the actor's arm lies in its sector of the reference driving in on its own arm, with the
+// generator's angle at `angle`: straight across for F, to the left for the *L sectors, to the
+// right for the *R ones (R alone, behind on its own road, never names another arm).
+bool on_named_side(const ArmDirection& reference, const ArmDirection& actor, double angle,
+                   RelativeLocation sector) {
+  const double heading = reference.c0 + reference.c1 * angle + 180;  // driving in
+  double turn = std::fmod(actor.c0 + actor.c1 * angle - heading, 360);
+  if (turn > 180) turn -= 360;
+  if (turn <= -180) turn += 360;
+  switch (sector) {
+    case RelativeLocation::front: return std::abs(turn) < 45;
+    case RelativeLocation::front_side_left:
+    case RelativeLocation::side_left:
+    case RelativeLocation::rear_side_left: return turn > 0 && turn < 180;
+    case RelativeLocation::front_side_right:
+    case RelativeLocation::side_right:
+    case RelativeLocation::rear_side_right: return turn < 0 && turn > -180;
+    case RelativeLocation::rear: return false;
+  }
+  return false;
+}
+
+std::size_t hints_kept(const std::vector<SideHint>& hints, const std::vector<ArmDirection>& arms,
+                       const std::vector<std::size_t>& chosen, const Interval& angle) {
+  const double middle = (angle.low + angle.high) / 2;
+  return static_cast<std::size_t>(std::count_if(hints.begin(), hints.end(), [&](const SideHint& h) {
+    return on_named_side(arms[chosen[h.reference]], arms[chosen[h.actor]], middle, h.sector);
+  }));
+}
+
 }  // namespace
 
 std::optional<ArmLayout> lay_out_arms(const Junction& junction, const std::string& map_name,
+                                      const Initialisation& initialisation,
                                       Diagnostics& diagnostics) {
   if (!names_known_roads(junction, diagnostics)) return std::nullopt;
   const std::vector<ArmDirection> arms = generator_arms(map_name);
@@ -176,18 +231,28 @@ std::optional<ArmLayout> lay_out_arms(const Junction& junction, const std::strin
   // Arrangements of `roads` of the arms, in lexicographic order of the arm indices: the first is
   // the old reading (the first road west, the second south, ...), kept where the angles allow it.
   if (map_name == "roundabout") return round_the_ring(junction, arms, diagnostics);
+  const std::vector<SideHint> hints = side_hints(junction, initialisation);
+  std::optional<std::vector<std::size_t>> best;
+  std::size_t best_kept = 0;
   std::vector<std::size_t> order(arms.size());
   std::iota(order.begin(), order.end(), 0);
   do {
-    const std::vector<std::size_t> chosen(order.begin(),
-                                          order.begin() + static_cast<std::ptrdiff_t>(roads));
+    std::vector<std::size_t> chosen(order.begin(),
+                                    order.begin() + static_cast<std::ptrdiff_t>(roads));
     Interval angle;
     if (!fits(junction, arms, chosen, angle)) continue;
-    ArmLayout layout;
-    for (std::size_t i : chosen) layout.arms.push_back(arms[i].name);
-    choose_angle_pair(junction, arms, chosen, layout);
-    return layout;
+    const std::size_t kept = hints_kept(hints, arms, chosen, angle);
+    if (!best || kept > best_kept) {
+      best = std::move(chosen);
+      best_kept = kept;
+    }
   } while (std::next_permutation(order.begin(), order.end()));
+  if (best) {
+    ArmLayout layout;
+    for (std::size_t i : *best) layout.arms.push_back(arms[i].name);
+    choose_angle_pair(junction, arms, *best, layout);
+    return layout;
+  }
   const SourceLocation where =
       junction.angles.empty() ? junction.location : junction.angles.front().location;
   diagnostics.error(where, conflict_message(junction, map_name));

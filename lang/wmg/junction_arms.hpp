@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lang/diagnostic.hpp"
+#include "lang/wmg/dynamic_syntax.hpp"
 #include "lang/wmg/scenery_syntax.hpp"
 
 namespace scenfuzz::wmg {
@@ -24,11 +25,15 @@ struct ArmLayout {
 };
 
 // The arms of `map_name`'s generator ("crossroads", "t_junction", "roundabout") for the junction's
-// connected roads. The first assignment in the generator's arm order (west, south, east, north
-// for the first, second, ... road) under which every stated angle range can hold; nullopt after an
-// error at the angles naming the conflict, or at a pair or lane connection naming a road the
-// junction does not connect.
+// connected roads. Of the assignments under which every stated angle range can hold, the one that
+// puts the most actors of `initialisation` placed relative to another on another of the
+// junction's roads on the side their sector names (FSR: to the right of the reference as it
+// drives towards the junction, F: ahead across it, ...), the first in the generator's arm order
+// (west, south, east, north for the first, second, ... road) among equals; nullopt after an error
+// at the angles naming the conflict, or at a pair or lane connection naming a road the junction
+// does not connect.
 std::optional<ArmLayout> lay_out_arms(const Junction& junction, const std::string& map_name,
+                                      const Initialisation& initialisation,
                                       Diagnostics& diagnostics);
 
 }  // namespace scenfuzz::wmg

@@ -91,7 +91,7 @@ ScenarioTemplate translate_level2(const Level2File& file, Diagnostics& diagnosti
     translation.scenario.npc_behaviour =
         file.header.npc_behaviour->value == NpcBehaviourWord::scripted ? NpcBehaviour::scripted
                                                                        : NpcBehaviour::reactive;
-  translate_scenery(file.scenery, translation);
+  translate_scenery(file.scenery, file.dynamics.initialisation, translation);
   // Lanes and actors the dynamics name are checked against the scenery; with no usable map, the
   // same lane would be reported at every use.
   if (!diagnostics.has_errors()) translate_dynamics(file.dynamics, translation);

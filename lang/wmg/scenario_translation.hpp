@@ -49,7 +49,10 @@ struct Translation {
 };
 
 // The scenery: the built-in map, its parameters, the lane naming, the junction's traffic lights.
-void translate_scenery(const Scenery& scenery, Translation& translation);
+// `initialisation` says where actors stand relative to each other, which places a junction's
+// roads among its arms where the angles leave a choice (junction_arms.hpp).
+void translate_scenery(const Scenery& scenery, const Initialisation& initialisation,
+                       Translation& translation);
 // Initialisation, manoeuvre sequences, timers and end conditions: the actors and their motion.
 void translate_dynamics(const Dynamics& dynamics, Translation& translation);
 // Weather, time of day, light and connectivity.

@@ -197,7 +197,7 @@ void add_crossing_angle(const Junction& junction, const ArmLayout& layout,
 }
 
 void translate_junction(const Junction& junction, const std::vector<Road>& roads,
-                        Translation& translation) {
+                        const Initialisation& initialisation, Translation& translation) {
   const std::string prefix = junction.id.name + ".";
   translation.elements.insert(junction.id.name);
   std::vector<Value> angles;
@@ -231,7 +231,7 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
     return;
   }
   const std::optional<ArmLayout> layout =
-      lay_out_arms(junction, map->name, translation.diagnostics);
+      lay_out_arms(junction, map->name, initialisation, translation.diagnostics);
   if (!layout) return;
   int lanes = 0;
   for (std::size_t i = 0; i < junction.connected_roads.size(); ++i) {
@@ -296,7 +296,8 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
 
 }  // namespace
 
-void translate_scenery(const Scenery& scenery, Translation& translation) {
+void translate_scenery(const Scenery& scenery, const Initialisation& initialisation,
+                       Translation& translation) {
   MapReference& map = translation.scenario.map;
   map.location = scenery.location;
   if (scenery.roads.empty()) {
@@ -325,7 +326,7 @@ void translate_scenery(const Scenery& scenery, Translation& translation) {
     translate_single_road(first, translation);
     return;
   }
-  translate_junction(scenery.junctions.front(), scenery.roads, translation);
+  translate_junction(scenery.junctions.front(), scenery.roads, initialisation, translation);
 }
 
 }  // namespace scenfuzz::wmg

@@ -19,7 +19,8 @@ using test::road_text;
 // [pairs] [angles]", and the ego in R3.L1.
 std::string junction_file(const std::string& type, const std::string& connected,
                           const std::string& pairs, const std::string& angles,
-                          const std::string& lane_connections = "R3.L1 -> R1.L1") {
+                          const std::string& lane_connections = "R3.L1 -> R1.L1",
+                          const std::string& car_sector = "FSL") {
   std::string roads;
   for (int r = 1; r <= 3; ++r) {
     const std::string id = "R" + std::to_string(r);
@@ -36,8 +37,9 @@ std::string junction_file(const std::string& type, const std::string& connected,
                  "]\nDimensions [Width: 10, Depth: 10]\n");
   parts.dynamics =
       "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R3.L1]\nAND Vehicle [Car] in [R1.L1] with a "
-      "[Longitudinal] offset of [30] AND at relative position [FSL] with relative heading angle "
-      "[90] to [Ego]\n"
+      "[Longitudinal] offset of [30] AND at relative position [" +
+      car_sector +
+      "] with relative heading angle [90] to [Ego]\n"
       "WHEN: [Ego] is [Going Ahead]\nDO: AUTO\nEND\n";
   return parts.text();
 }
@@ -94,6 +96,25 @@ TEST(WmgJunctionArmsTest, TheLayoutDoesNotDependOnTheOrderThingsAreWrittenIn) {
     EXPECT_EQ(t.ego_lane, "south_in_0") << text;  // R3 is the stem in every one
     EXPECT_NE(t.car_lane, "south_in_0") << text;
   }
+}
+
+TEST(WmgJunctionArmsTest, WhereTheAnglesLeaveAChoiceActorsStandOnTheSideTheirSectorNames) {
+  // The issue's car on R1 "at relative position [FSR]" to the ego on the stem R3: R1 is the arm
+  // on the ego's right as it drives in (east), R2 the other end of the through road.
+  const std::string pairs = "R1 -> R2, R2 -> R3";
+  const std::string angles = "170 to 190, 80 to 100";
+  const Layout right =
+      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R1.L1", "FSR"));
+  EXPECT_EQ(right.ego_lane, "south_in_0");
+  EXPECT_EQ(right.car_lane, "east_in_0");
+  const Layout left =
+      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R1.L1", "SL"));
+  EXPECT_EQ(left.car_lane, "west_in_0");
+  // The angles come first: a car "ahead" on a road the angles put beside the stem stays there.
+  const Layout ahead =
+      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R1.L1", "F"));
+  EXPECT_EQ(ahead.ego_lane, "south_in_0");
+  EXPECT_EQ(ahead.car_lane, "west_in_0");
 }
 
 TEST(WmgJunctionArmsTest, TheStemsAngleWithEitherEndOfTheThroughRoadSetsTheMap) {
