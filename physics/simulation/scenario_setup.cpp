@@ -106,6 +106,23 @@ std::optional<MapPose> with_heading(Context& context, const State& state, MapPos
   return pose;
 }
 
+// A vehicle placed on a lane with a heading that runs against the lane's direction (a relative
+// heading read from the wrong side, say) would start across or against its own lane: it takes the
+// lane's direction, with a warning. A pedestrian crosses as asked.
+void keep_to_lane(Context& context, const Heading& written, double lane_heading, MapPose& pose) {
+  constexpr double kAgainstTheLane = std::numbers::pi / 2;
+  const double off = std::abs(angle_difference(pose.heading, lane_heading));
+  if (!(off > kAgainstTheLane)) return;
+  constexpr double kDegrees = 180 / std::numbers::pi;
+  context.diagnostics.warning(
+      written.location,
+      context.actor + "'s heading (" + format_number(std::round(pose.heading * kDegrees)) +
+          " deg) runs " + format_number(std::round(off * kDegrees)) +
+          " deg against the direction of the lane it is placed on (" +
+          format_number(std::round(lane_heading * kDegrees)) + " deg); it takes the lane's");
+  pose.heading = lane_heading;
+}
+
 // A state's pose: its position, and its heading (the lane's direction when it gives none).
 std::optional<MapPose> place_state_unchecked(Context& context, const State& state) {
   if (state.position.kind == PositionKind::relative) {
@@ -126,6 +143,7 @@ std::optional<MapPose> place_state_unchecked(Context& context, const State& stat
     double lane_heading = pose->heading;
     auto turned = with_heading(context, state, *pose);
     if (turned && !state.heading->relative_to) turned->heading += lane_heading;
+    if (turned && !context.pedestrian) keep_to_lane(context, *state.heading, lane_heading, *turned);
     return turned;
   }
   auto placed = place_position(context.map, state.position, context.values, context.ego_pose,

@@ -13,8 +13,10 @@
 
 #include "lang/source_file.hpp"
 #include "lang/wmg/wmg.hpp"
+#include "physics/map/lane_queries.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/map_source.hpp"
+#include "physics/simulation/scenario_setup.hpp"
 #include "tests/lang/wmg_test_files.hpp"
 #include "tests/support/parameter_points.hpp"
 
@@ -129,6 +131,43 @@ TEST(WmgJunctionMaps, TheSampledAngleTurnsTheTJunctionsSideRoad) {
   ASSERT_TRUE(side_road);
   EXPECT_NEAR(heading_degrees(map.lane(*side_road).centre_line, 0), 83, 1e-9);
   EXPECT_EQ(map.stop_sign_count(), 1u);
+}
+
+// Issue 24: a vehicle whose relative heading runs against the lane it is placed on (here -90 to
+// the ego driving north on the stem: east-bound, on the east arm's west-bound in lane) would start
+// backwards in its lane; it takes the lane's direction, and the file is told. A pedestrian crosses
+// as written.
+TEST(WmgJunctionMaps, AVehicleHeadedAgainstItsLaneTakesTheLanesDirectionWithAWarning) {
+  std::string text = junction_file("T-Junction", 3, "[R1 -> R2, R2 -> R3]\n[170 to 190, 80 to 100]",
+                                   "Width: 10, Depth: 10");
+  const std::string dynamics = wmg::test::Parts{}.dynamics;
+  ASSERT_NE(text.find(dynamics), std::string::npos);
+  text.replace(text.find(dynamics), dynamics.size(),
+               "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R3.L1]\n"
+               "AND Vehicle [Car] in [R1.L1] with a [Longitudinal] offset of [10] AND at relative "
+               "position [FSR] with relative heading angle [-90] to [Ego]\n"
+               "AND Pedestrian [Walker] in [R3.L2] with a [Longitudinal] offset of [10] AND at "
+               "relative position [FSL] with relative heading angle [-90] to [Ego]\n"
+               "WHEN: [Ego] is [Going Ahead]\nDO: AUTO\nEND\n");
+  wmg::ParseResult result = parse_ok(text);
+  const std::vector<double> values = midpoint(result.scenario);
+  const RoadMap map = map_at(result.scenario, values);
+  Diagnostics diagnostics;
+  const auto setup = prepare_simulation(result.scenario, values, map, 1, diagnostics);
+  ASSERT_TRUE(setup) << format_diagnostics(SourceFile("t.sdl", text), diagnostics);
+  ASSERT_EQ(setup->actors.size(), 2u);
+  const KinematicState car = setup->actors[0].trajectory.state_at(0);
+  const auto lane = project_to_lane(map, {car.x, car.y}, car.heading);
+  ASSERT_TRUE(lane);
+  EXPECT_EQ(map.lane(lane->lane).id, "east_in_0");  // FSR of the ego on the stem
+  EXPECT_NEAR(car.heading, map.lane(lane->lane).centre_line.heading_at(lane->s), 1e-9);
+  const std::string told = format_diagnostics(SourceFile("t.sdl", text), diagnostics);
+  EXPECT_NE(told.find("warning: Car's heading (0 deg) runs 180 deg against the direction of the "
+                      "lane it is placed on (180 deg); it takes the lane's"),
+            std::string::npos)
+      << told;
+  EXPECT_EQ(told.find("Walker's heading"), std::string::npos) << told;
+  EXPECT_NEAR(setup->actors[1].trajectory.state_at(0).heading, 0, 1e-9);  // north - 90
 }
 
 TEST(WmgJunctionMaps, EveryRoundaboutTypeBuildsOverItsDefaultDiameters) {
