@@ -218,8 +218,12 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
 
   const std::optional<JunctionMap> map = junction_map(junction);
   if (!map) {
-    translation.diagnostics.error(junction.type.location, "junction type '" + junction.type.text +
-                                                              "' has no map generator yet");
+    translation.diagnostics.error(
+        junction.type.location,
+        "junction type '" + junction.type.text +
+            "' has no map generator yet (there are generators for Crossroads, T-Junction and the "
+            "Mini, Compact, Normal and Large roundabouts; a Y-junction's fork, a staggered "
+            "junction's two offset T-junctions and a double roundabout are not built)");
     return;
   }
   translation.scenario.map.name = map->name;

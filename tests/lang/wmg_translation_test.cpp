@@ -339,6 +339,17 @@ TEST(WmgTranslationTest, JunctionTypeWithoutGeneratorIsAnErrorAtTheType) {
             std::string::npos)
       << first_error_message(result);
   EXPECT_EQ(first_error(result), position_of(text, "Y-Junction"));
+  // It names what is built, and a staggered junction is told the same.
+  EXPECT_NE(first_error_message(result).find("there are generators for Crossroads, T-Junction"),
+            std::string::npos);
+  Parts staggered;
+  staggered.scenery = crossroads_scenery("Staggered");
+  const ParseResult offset = parse_text(staggered.text());
+  EXPECT_NE(first_error_message(offset).find("junction type 'Staggered' has no map generator yet"),
+            std::string::npos)
+      << first_error_message(offset);
+  EXPECT_NE(first_error_message(offset).find("staggered junction's two offset T-junctions"),
+            std::string::npos);
 }
 
 TEST(WmgTranslationTest, TwoRoadsWithoutAJunctionAreAnError) {
