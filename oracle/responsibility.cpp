@@ -183,6 +183,17 @@ Verdict map_fault(const Trace& trace, const RoadMap& map, ActorId culprit, Actor
   return verdict;
 }
 
+// "drove into the ego, in its path from 1.2 s before impact": the one who had to give way, moving,
+// ran into the one with the way while that one was in its path; empty when it did not.
+std::string drove_into_text(const Trace& trace, const RoadMap& map, ActorId yielder,
+                            ActorId with_way, std::size_t k) {
+  const std::optional<PathEntry> entry =
+      lasting_entry(trace, path_entry(trace, map, yielder, with_way, k), k);
+  if (!entry || trace.actors[yielder].speed[k] <= kStandstillSpeed) return "";
+  return "drove into " + std::string(with_way == kEgo ? "the ego" : "it") + ", in its path " +
+         (entry->from_start ? "from the start" : "from " + before_impact(trace, entry->sample, k));
+}
+
 // Priority between turning and oncoming traffic: the one turning left gives way. It did not when
 // it came into the other's path, or stopped in it, within the other's safe distance; otherwise the
 // later rules decide.
@@ -190,10 +201,18 @@ std::optional<Verdict> turn_rule(const Trace& trace, const RoadMap& map, ActorId
                                  std::size_t first, std::size_t k, const RssParameters& rss) {
   const std::optional<TurnPriority> priority = turn_priority(trace, map, other, first, k);
   if (!priority) return std::nullopt;
-  // Even a nose put into the other's lane only at impact is the turner's.
+  // Even a nose put into the other's lane only at impact is the turner's; so is driving on into
+  // the one with the way while it crosses the turner's path (the turner hits its side or rear).
   const std::optional<PathIntrusion> intrusion =
       path_intrusion(trace, map, priority->priority, priority->yielder, k, rss);
-  if (!intrusion || !intrusion->unsafe()) return std::nullopt;
+  std::string how;
+  if (intrusion) {
+    if (!intrusion->unsafe()) return std::nullopt;
+    how = intrusion_text(trace, *intrusion, k);
+  } else {
+    how = drove_into_text(trace, map, priority->yielder, priority->priority, k);
+    if (how.empty()) return std::nullopt;
+  }
   const bool u_turn = map.lane(priority->yielder_lane).turn == LaneTurn::u_turn;
   const std::string way = map.lane(priority->priority_lane).turn == LaneTurn::right
                               ? " turning right"
@@ -202,8 +221,7 @@ std::optional<Verdict> turn_rule(const Trace& trace, const RoadMap& map, ActorId
                                ? "an oncoming " + described(trace.actors[other]).substr(2)
                                : std::string("the oncoming ego");
   const std::string what = std::string(u_turn ? "made a U-turn" : "turned left") +
-                           " without giving way to " + whom + way + ": " +
-                           intrusion_text(trace, *intrusion, k);
+                           " without giving way to " + whom + way + ": " + how;
   return map_fault(trace, map, priority->yielder, other, k, what, rss);
 }
 
@@ -223,11 +241,8 @@ std::optional<Verdict> right_rule(const Trace& trace, const RoadMap& map, ActorI
     if (!intrusion->unsafe()) return std::nullopt;
     how = intrusion_text(trace, *intrusion, k);
   } else {
-    const std::optional<PathEntry> entry =
-        lasting_entry(trace, path_entry(trace, map, yielder, with_way, k), k);
-    if (!entry || trace.actors[yielder].speed[k] <= kStandstillSpeed) return std::nullopt;
-    how = "drove into " + std::string(with_way == kEgo ? "the ego" : "it") + ", in its path " +
-          (entry->from_start ? "from the start" : "from " + before_impact(trace, entry->sample, k));
+    how = drove_into_text(trace, map, yielder, with_way, k);
+    if (how.empty()) return std::nullopt;
   }
   const std::string whom = yielder == kEgo ? described(trace.actors[other]) : "the ego";
   return map_fault(trace, map, yielder, other, k,

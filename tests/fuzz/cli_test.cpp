@@ -658,6 +658,22 @@ Trace trace = EXE(scenario);
   EXPECT_EQ(near_run.err.find("never come within"), std::string::npos) << near_run.err;
 }
 
+// A concrete point of corpora/wmg/oblique_crossroads.sdl that a search reported as the ego's
+// fault ("left the car no room to stop"): an oncoming car turning left on the same green drove
+// into the rear corner of the ego going straight, after the ego had crossed its path. The turner
+// gives way, also when it is the one that runs into the other.
+TEST_F(CliRunTest, AnOncomingLeftTurnerDrivingIntoTheEgoGoingStraightIsAtFault) {
+  const fs::path file = fs::path(SCENFUZZ_TEST_DATA_DIR) / "left_turner_into_ego.sdl";
+  const Outcome run = scenfuzz(
+      {"run", file.string(), "--seed", "17355421776818998961", "--out", (dir_ / "o").string()});
+  ASSERT_NE(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.out.find("collision at "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("responsibility: other: the other turned left without giving way to the "
+                         "oncoming ego going straight: drove into the ego, in its path from "),
+            std::string::npos)
+      << run.out;
+}
+
 TEST_F(CliRunTest, ALogicalScenarioNeedsAPoint) {
   const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu")});
   EXPECT_EQ(run.exit_code, 2);
