@@ -111,7 +111,9 @@ void declare_map(CLI::App& app, Action& action) {
       "built-in maps");
   map->add_option("MAP", options->name,
                   "A built-in map (crossroads, straight?lanes=3&length=400, ...), the name of an "
-                  "Apollo map folder on the map search path (san_francisco), or a map file")
+                  "Apollo map folder on the map search path (san_francisco), a map file, or a "
+                  "scenario file (.avu, .scenest, .sdl): the map it builds at the centre of its "
+                  "space, and which arm each road of a WMG scenery became")
       ->type_name("");
   map->add_option("--map-path", options->map_paths,
                   "Folder to look for Apollo maps in (<DIR>/<name>/base_map.bin or .txt); "

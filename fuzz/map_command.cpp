@@ -1,5 +1,7 @@
 // `scenfuzz map NAME|FILE`: what a map holds (summary, JSON) and what it looks like (SVG), so a
 // user can find lane ids before writing them into a scenario; `--list` shows the built-in maps.
+// Given a scenario file, the map it builds at the centre of its space, and which of the map's
+// roads each road of a WMG scenery became.
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -11,6 +13,7 @@
 #include "lang/number_format.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/map/map_svg.hpp"
+#include "sampler/parameter_space.hpp"
 
 namespace scenfuzz {
 
@@ -129,6 +132,34 @@ void print_builtin_maps(std::ostream& out) {
   }
 }
 
+bool is_scenario_path(const std::string& name) {
+  for (const char* extension : {".avu", ".scenest", ".sdl"})
+    if (name.ends_with(extension)) return true;
+  return false;
+}
+
+// The map a scenario file builds at the centre of its space, with the notes it keeps on it (a
+// WMG scenery's roads and the arms they became); nullopt after an error on `err`.
+std::optional<RoadMap> scenario_map(const MapCommandOptions& options, std::vector<Attribute>& notes,
+                                    std::ostream& err) {
+  const std::optional<ScenarioFile> input = read_scenario(options.name, "draw", err);
+  if (!input) return std::nullopt;
+  const ParameterSpace space = parameter_space(input->scenario);
+  const std::vector<double> values =
+      decode(space, std::vector<double>(space.dimensions.size(), 0.5));
+  notes = input->scenario.map.attributes;
+  return load_scenario_map(input->scenario.map,
+                           map_search_path({options.map_paths.begin(), options.map_paths.end()}),
+                           values);
+}
+
+void print_roads(const std::vector<Attribute>& notes, std::ostream& out) {
+  for (const Attribute& note : notes)
+    if (note.key.starts_with("road "))
+      out << note.key << (note.key.size() < 12 ? std::string(12 - note.key.size(), ' ') : " ")
+          << note.value << "\n";
+}
+
 }  // namespace
 
 int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& err) {
@@ -141,9 +172,15 @@ int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& e
     return kExitUsage;
   }
   std::optional<RoadMap> map;
+  std::vector<Attribute> notes;
   try {
-    map.emplace(load_map(options.name,
-                         map_search_path({options.map_paths.begin(), options.map_paths.end()})));
+    if (is_scenario_path(options.name)) {
+      map = scenario_map(options, notes, err);
+      if (!map) return kExitBadInput;
+    } else {
+      map.emplace(load_map(options.name,
+                           map_search_path({options.map_paths.begin(), options.map_paths.end()})));
+    }
   } catch (const MapError& error) {
     // Messages about a file already read `file:line:column: error: ...`.
     std::string_view message = error.what();
@@ -161,10 +198,12 @@ int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& e
       return kExitBadInput;
     }
   }
-  if (options.json)
+  if (options.json) {
     out << map_json(*map).dump(2) << "\n";
-  else
+  } else {
     print_summary(*map, out);
+    print_roads(notes, out);
+  }
   return kExitSuccess;
 }
 

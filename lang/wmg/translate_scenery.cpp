@@ -164,6 +164,8 @@ void translate_single_road(const Road& road, Translation& translation) {
   if (!curved) add_map_parameter(translation, "two_way", constant_value(0.0), road.location);
   add_road_map_parameters(road, translate_road_values(road, translation), true, translation);
   declare_lanes(road, curved ? "fwd_" : "east_", lanes, translation);
+  translation.scenario.map.attributes.push_back(Attribute{
+      "road " + road.id.name, curved ? "the road (fwd_*)" : "the road (east_*)", road.id.location});
 }
 
 struct JunctionMap {
@@ -252,6 +254,12 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
     const int road_lanes = map->name == "roundabout" ? 1 : traffic_lane_count(*road);
     lanes = std::max(lanes, traffic_lane_count(*road));
     declare_lanes(*road, layout->arms[i] + "_in_", road_lanes, translation);
+    // Which arm each road became, for `scenfuzz map FILE` to say.
+    translation.scenario.map.attributes.push_back(Attribute{"road " + id.name,
+                                                            "the " + layout->arms[i] + " arm (" +
+                                                                layout->arms[i] + "_in_*, " +
+                                                                layout->arms[i] + "_out_*)",
+                                                            id.location});
   }
   for (const Road& road : roads)
     if (!translation.roads.contains(road.id.name))

@@ -674,6 +674,24 @@ TEST_F(CliRunTest, AnOncomingLeftTurnerDrivingIntoTheEgoGoingStraightIsAtFault) 
       << run.out;
 }
 
+// Issue 24: `scenfuzz map FILE` draws the map a scenario builds, and says which arm each road of a
+// WMG scenery became (the stem R3 of corpora/wmg/give_way_t_junction.sdl is the south arm).
+TEST_F(CliRunTest, MapOfAScenarioFileSaysWhichArmEachRoadBecame) {
+  const fs::path file =
+      fs::path(corpus_file("x")).parent_path().parent_path() / "wmg" / "give_way_t_junction.sdl";
+  const Outcome map =
+      scenfuzz({"map", file.string(), "--svg", (dir_ / "scenery.svg").string(), "--labels"});
+  ASSERT_EQ(map.exit_code, 0) << map.err;
+  EXPECT_NE(map.out.find("map         t_junction"), std::string::npos) << map.out;
+  EXPECT_NE(map.out.find("road R3     the south arm (south_in_*, south_out_*)"), std::string::npos)
+      << map.out;
+  EXPECT_NE(map.out.find("road R1     the west arm"), std::string::npos) << map.out;
+  EXPECT_TRUE(slurp(dir_ / "scenery.svg").ends_with("</svg>\n"));
+  const Outcome broken = scenfuzz({"map", write("broken.sdl", "VERSION: 1.0\nnonsense\n")});
+  EXPECT_EQ(broken.exit_code, 2);
+  EXPECT_NE(broken.err.find("broken.sdl:"), std::string::npos) << broken.err;
+}
+
 TEST_F(CliRunTest, ALogicalScenarioNeedsAPoint) {
   const Outcome run = scenfuzz({"run", corpus_file("stationary_obstacle_in_lane.avu")});
   EXPECT_EQ(run.exit_code, 2);

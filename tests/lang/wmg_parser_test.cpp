@@ -641,14 +641,15 @@ std::vector<std::filesystem::path> level2_corpus() {
   return files;
 }
 
-TEST(WmgCorpus, HasTheSixScenariosAndEachParsesWithoutDiagnostics) {
+TEST(WmgCorpus, HasTheNineScenariosAndEachParsesWithoutDiagnostics) {
   std::vector<std::filesystem::path> files = level2_corpus();
   std::vector<std::string> names;
   for (const auto& path : files) names.push_back(path.filename().string());
   EXPECT_EQ(names,
-            (std::vector<std::string>{"cut_in.sdl", "cut_out.sdl", "lead_vehicle_decelerating.sdl",
-                                      "pedestrian_crossing.sdl", "signalised_junction.sdl",
-                                      "stationary_obstacle.sdl"}));
+            (std::vector<std::string>{"cut_in.sdl", "cut_out.sdl", "give_way_t_junction.sdl",
+                                      "lead_vehicle_decelerating.sdl", "oblique_crossroads.sdl",
+                                      "pedestrian_crossing.sdl", "side_road_pull_out.sdl",
+                                      "signalised_junction.sdl", "stationary_obstacle.sdl"}));
   for (const auto& path : files) {
     SCOPED_TRACE(path.string());
     SourceFile file = scenfuzz::test::load(path);
