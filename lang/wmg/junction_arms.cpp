@@ -190,20 +190,22 @@ std::vector<SideHint> side_hints(const Junction& junction, const Initialisation&
 }
 
 // Whether the actor's arm lies in its sector of the reference driving in on its own arm, with the
-// generator's angle at `angle`: straight across for F, to the left for the *L sectors, to the
-// right for the *R ones (R alone, behind on its own road, never names another arm).
+// generator's angle at `angle`: straight across for F, to the left for SL and RSL, to the left or
+// across for FSL (and the same on the right), never for R (behind, on the reference's own road).
 bool on_named_side(const ArmDirection& reference, const ArmDirection& actor, double angle,
                    RelativeLocation sector) {
   const double heading = reference.c0 + reference.c1 * angle + 180;  // driving in
   double turn = std::fmod(actor.c0 + actor.c1 * angle - heading, 360);
   if (turn > 180) turn -= 360;
   if (turn <= -180) turn += 360;
+  constexpr double kAcross = 45;  // degrees either side of straight on that are "across"
   switch (sector) {
-    case RelativeLocation::front: return std::abs(turn) < 45;
-    case RelativeLocation::front_side_left:
+    case RelativeLocation::front: return std::abs(turn) < kAcross;
+    // Ahead and to one side: that side's arm, or the one across (ahead, a little to that side).
+    case RelativeLocation::front_side_left: return turn > -kAcross && turn < 180;
+    case RelativeLocation::front_side_right: return turn < kAcross && turn > -180;
     case RelativeLocation::side_left:
     case RelativeLocation::rear_side_left: return turn > 0 && turn < 180;
-    case RelativeLocation::front_side_right:
     case RelativeLocation::side_right:
     case RelativeLocation::rear_side_right: return turn < 0 && turn > -180;
     case RelativeLocation::rear: return false;
