@@ -19,6 +19,7 @@
 
 #include "lang/demand.hpp"
 #include "physics/collision/body_sweep.hpp"
+#include "physics/collision/turned_reach.hpp"
 
 namespace scenfuzz {
 
@@ -293,8 +294,13 @@ void CollisionWorld::set_pose(BodyId body, const MapPose& pose) {
   Impl::Body& moving = impl_->bodies[body];
   SCENFUZZ_DEMAND(!moving.is_static && "a static body keeps the pose it was added with");
   check_pose(pose);
-  if (pose.heading != moving.pose.heading)
-    moving.reach = reach_of(footprint_of(moving.geometry, pose));
+  // A disc's reach does not turn; a box's is bounded without libm's sincos (turned_reach.hpp):
+  // the sweep box only selects candidates for FCL, so a hair wider changes no contact.
+  if (pose.heading != moving.pose.heading && !is_round(moving.geometry.shape)) {
+    const TurnedReach bound =
+        turned_reach_bound(moving.geometry.length / 2, moving.geometry.width / 2, pose.heading);
+    moving.reach = {bound.x, bound.y};
+  }
   moving.pose = pose;
   moving.placed = false;
   impl_->sweep.move(body, sweep_box_around(pose.position, moving.reach));

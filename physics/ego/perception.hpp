@@ -7,11 +7,11 @@
 #pragma once
 
 #include <cstdint>
-#include <random>
 #include <span>
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
+#include "physics/ego/xoshiro256.hpp"
 #include "physics/trace/trace.hpp"
 
 namespace scenfuzz {
@@ -67,7 +67,7 @@ class Perception {
 
  private:
   PerceptionSettings settings_;
-  std::mt19937_64 random_;
+  Xoshiro256 random_;
   double dt_;
   // What the sensors sampled at one step: the ego's pose then and the true objects, by id.
   struct Snapshot {

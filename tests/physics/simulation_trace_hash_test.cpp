@@ -8,6 +8,8 @@
 // Both san_francisco runs were pinned again when lane followers began to follow their leader along
 // the lanes between scans (the gap by lane position, not by searching the path): their gaps, and
 // so their motion, changed by millimetres (docs/performance.md, "Following along the lanes").
+// All three were pinned again when perception noise came from xoshiro256** and the ziggurat
+// instead of mt19937_64 and the polar method: other noise values of the same distributions.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -124,7 +126,7 @@ Pinned run_benchmark(const std::string& name) {
 TEST(SimulationTraceHashTest, TenActorCrossroadsTraceIsUnchanged) {
   Pinned run = run_benchmark("crossroads_10_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
-  EXPECT_EQ(run.hash, 0x4d434c05b76e8923ull) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0x37295c5ea6d68926ull) << std::hex << run.hash;
 }
 
 TEST(SimulationTraceHashTest, ThirtyActorSanFranciscoTraceIsUnchanged) {
@@ -132,7 +134,7 @@ TEST(SimulationTraceHashTest, ThirtyActorSanFranciscoTraceIsUnchanged) {
   Pinned run = run_benchmark("san_francisco_30_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
   EXPECT_EQ(run.trace.collisions.size(), 1u);  // a random walker into a standing car
-  EXPECT_EQ(run.hash, 0x1a699de116749a7eull) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0x855081683a46b381ull) << std::hex << run.hash;
 }
 
 TEST(SimulationTraceHashTest, HundredActorSanFranciscoTraceIsUnchanged) {
@@ -140,7 +142,7 @@ TEST(SimulationTraceHashTest, HundredActorSanFranciscoTraceIsUnchanged) {
   Pinned run = run_benchmark("san_francisco_100_actors.avu");
   EXPECT_EQ(run.trace.sample_count(), 601u);
   EXPECT_EQ(run.trace.collisions.size(), 0u);
-  EXPECT_EQ(run.hash, 0xc13d18292c35c47aull) << std::hex << run.hash;
+  EXPECT_EQ(run.hash, 0x0b9ba9fb4b04c197ull) << std::hex << run.hash;
 }
 
 // The hash sees a single bit: a trace that differs in one sample's last ulp hashes differently.
