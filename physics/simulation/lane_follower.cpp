@@ -515,7 +515,11 @@ void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t sel
       case FeatureKind::crosswalk:
         // Looked at once a scan, as the actors are (find_leader).
         if (scanning_)
-          feature.occupied = pedestrians_at(world, map_->crosswalks()[feature.feature.index]);
+          feature.occupied =
+              world.occupancy != nullptr
+                  ? world.occupancy->walkers_at(feature.feature.index, settings_.walking_speed,
+                                                settings_.crosswalk_clearance)
+                  : pedestrians_at(world, map_->crosswalks()[feature.feature.index]);
         if (gap >= full_stop && feature.occupied) {
           line.reason = FollowerReason::pedestrian;
           stops.push_back(line);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/map/polygon.hpp"
 #include "physics/map/segment_walk.hpp"
 #include "physics/simulation/predicted_points.hpp"
 
@@ -33,6 +34,7 @@ LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map), conflicts_(map) {
     narrowest_.emplace_back(narrowest_width(lane.left_width), narrowest_width(lane.right_width));
   filing_.first.assign(map.lanes().size(), 0);
   filing_.mask_slot.assign(map.lanes().size(), 0);
+  walkers_.answers.assign(map.crosswalks().size(), 0);
   junction_lanes_.resize(map.junctions().size());
   for (LaneIndex lane = 0; lane < map.lanes().size(); ++lane)
     if (auto junction = map.lane(lane).junction; junction && *junction < junction_lanes_.size())
@@ -42,6 +44,38 @@ LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map), conflicts_(map) {
 void LaneOccupancy::set_step(const OccupancyInputs& inputs) {
   inputs_ = inputs;
   filing_.built = false;
+  for (std::uint32_t crosswalk : walkers_.asked) walkers_.answers[crosswalk] = 0;
+  walkers_.asked.clear();
+}
+
+bool LaneOccupancy::walkers_at(std::uint32_t crosswalk, double walking_speed,
+                               double clearance) const {
+  Walkers& walkers = walkers_;
+  if (walkers.asked.empty()) {
+    walkers.walking_speed = walking_speed;
+    walkers.clearance = clearance;
+  }
+  if (walking_speed != walkers.walking_speed || clearance != walkers.clearance)
+    return any_walker_at(crosswalk, walking_speed, clearance);
+  std::uint8_t& answer = walkers.answers[crosswalk];
+  if (answer == 0) {
+    answer = any_walker_at(crosswalk, walking_speed, clearance) ? 2 : 1;
+    walkers.asked.push_back(crosswalk);
+  }
+  return answer == 2;
+}
+
+bool LaneOccupancy::any_walker_at(std::uint32_t crosswalk, double walking_speed,
+                                  double clearance) const {
+  const std::vector<MapPoint>& outline = map_->crosswalks()[crosswalk].outline;
+  for (std::size_t k = 0; k < inputs_.states.size(); ++k) {
+    if (inputs_.kinds[k] != TraceActorKind::pedestrian) continue;
+    if (!inputs_.present.empty() && inputs_.present[k] == 0) continue;
+    const KinematicState& walker = inputs_.states[k];
+    if (walker.speed >= walking_speed && near_polygon({walker.x, walker.y}, outline, clearance))
+      return true;
+  }
+  return false;
 }
 
 void LaneOccupancy::build() const {

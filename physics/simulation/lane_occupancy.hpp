@@ -66,6 +66,11 @@ class LaneOccupancy {
   // every follower of the simulation.
   const std::vector<LaneIndex>& conflicts_of(LaneIndex lane) const { return conflicts_.of(lane); }
 
+  // Whether a present pedestrian at least `walking_speed` fast is within `clearance` of the
+  // outline of crosswalk `crosswalk` (RoadMap::crosswalks()): the lane followers' crosswalk
+  // test, answered once per step for all of them (each asked of every pedestrian before).
+  bool walkers_at(std::uint32_t crosswalk, double walking_speed, double clearance) const;
+
  private:
   // The filing, kept out of the const queries' sight: it is a cache of the step's inputs.
   struct Filing {
@@ -86,7 +91,16 @@ class LaneOccupancy {
     bool built = false;
   };
 
+  // walkers_at's answers this step, by crosswalk, for one walking speed and clearance (the
+  // followers' settings; another pair is answered without keeping it).
+  struct Walkers {
+    std::vector<std::uint8_t> answers;  // 0: not asked this step, 1: none, 2: some
+    std::vector<std::uint32_t> asked;   // the crosswalks answered, to reset at the next step
+    double walking_speed = -1, clearance = -1;
+  };
+
   void build() const;
+  bool any_walker_at(std::uint32_t crosswalk, double walking_speed, double clearance) const;
   // The filing as bit masks of actors (Filing::masks), after build's sort.
   void make_masks() const;
   // Whether actor k keeps to lane fix.lane now and where predicted; files it if so.
@@ -101,6 +115,7 @@ class LaneOccupancy {
   JunctionConflicts conflicts_;
   OccupancyInputs inputs_;
   mutable Filing filing_;
+  mutable Walkers walkers_;
 };
 
 }  // namespace scenfuzz
