@@ -10,12 +10,17 @@ namespace scenfuzz {
 
 void MotionFilter::update(std::span<const WorldObject> objects, double dt) {
   double weight = std::clamp(dt / time_constant_, 0.0, 1.0);
-  std::vector<Track> next;
+  std::vector<Track>& next = spare_;  // last step's tracks' memory: no allocation per step
+  next.clear();
   next.reserve(objects.size());
   auto old = tracks_.begin();
   for (const WorldObject& object : objects) {
     double velocity = object.reversing ? -object.speed : object.speed;
-    double vx = velocity * std::cos(object.heading), vy = velocity * std::sin(object.heading);
+    // Standing (perception clamps noisy speeds at 0): no sine and cosine for a zero vector. Only
+    // the sign of a zero could differ, and speed() reads magnitudes only.
+    const bool still = velocity == 0 && std::isfinite(object.heading);
+    double vx = still ? 0.0 : velocity * std::cos(object.heading);
+    double vy = still ? 0.0 : velocity * std::sin(object.heading);
     while (old != tracks_.end() && old->id < object.id) ++old;
     if (old != tracks_.end() && old->id == object.id) {
       vx = old->vx + weight * (vx - old->vx);
@@ -23,7 +28,7 @@ void MotionFilter::update(std::span<const WorldObject> objects, double dt) {
     }
     next.push_back({object.id, vx, vy});
   }
-  tracks_ = std::move(next);
+  std::swap(tracks_, next);
 }
 
 double MotionFilter::speed(ActorId id) const {

@@ -28,6 +28,7 @@ class MotionFilter {
   };
   double time_constant_;
   std::vector<Track> tracks_;  // sorted by id
+  std::vector<Track> spare_;   // the previous tracks' storage, refilled by the next update
 };
 
 }  // namespace scenfuzz
