@@ -265,7 +265,7 @@ TEST_F(OutputJournalTest, AFileSizeLimitStopsTheSearchWithTheFileNamed) {
 TEST_F(OutputJournalTest, AFullDiskStopsTheSearchWithTheFileNamed) {
   const fs::path mount = dir_ / "small";
   fs::create_directories(mount);
-  if (::geteuid() != 0 || ::mount("tmpfs", mount.c_str(), "tmpfs", 0, "size=96k") != 0)
+  if (::geteuid() != 0 || ::mount("tmpfs", mount.c_str(), "tmpfs", 0, "size=192k") != 0)
     GTEST_SKIP() << "needs root to mount a small tmpfs (AFileSizeLimit... covers the same path)";
   const fs::path out = mount / "out";
   const Outcome run = scenfuzz(search_args(out, "2"));
