@@ -1,10 +1,12 @@
-// Priority traffic at a stop or yield sign (priority_traffic.hpp): each vehicle near the ego is
-// found on its lane, and followed along the lanes ahead of it (a few successors, as far as it
-// drives within the critical gap) to where they first meet a lane of the conflict set.
+// Priority traffic at a stop or yield sign (priority_traffic.hpp): each moving vehicle near the
+// ego is found on its lane, and followed along it and the lanes ahead of it (a few successors, as
+// far as it drives within the critical gap) to where the ego's path meets them.
 #include "physics/ego/priority_traffic.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 
 #include "physics/map/lane_queries.hpp"
 
@@ -13,14 +15,58 @@ namespace {
 
 constexpr int kLanesAhead = 4;  // successors followed from the vehicle's own lane
 
-bool conflicting(const std::vector<LaneIndex>& conflicts, LaneIndex lane) {
-  return std::binary_search(conflicts.begin(), conflicts.end(), lane);
+// Arc length along `line` of its first proper crossing with `other`.
+std::optional<double> first_crossing(const Polyline& line, const Polyline& other) {
+  const auto& p = line.points();
+  const auto& q = other.points();
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+    const MapPoint a = p[i], b = p[i + 1];
+    for (std::size_t j = 0; j + 1 < q.size(); ++j) {
+      const MapPoint c = q[j], d = q[j + 1];
+      const double r_x = b.x - a.x, r_y = b.y - a.y, s_x = d.x - c.x, s_y = d.y - c.y;
+      const double denominator = r_x * s_y - r_y * s_x;
+      if (denominator == 0) continue;
+      const double t = ((c.x - a.x) * s_y - (c.y - a.y) * s_x) / denominator;
+      const double u = ((c.x - a.x) * r_y - (c.y - a.y) * r_x) / denominator;
+      if (t > 0 && t < 1 && u > 0 && u < 1)
+        return line.arc_lengths()[i] + t * (line.arc_lengths()[i + 1] - line.arc_lengths()[i]);
+    }
+  }
+  return std::nullopt;
 }
 
-// Metres along the lanes from `s` on `lane` to the start of the nearest lane in `conflicts`
-// within `reach`, or infinity.
-double distance_to_conflict(const RoadMap& map, const std::vector<LaneIndex>& conflicts,
-                            LaneIndex lane, double s, double reach) {
+// Whether traffic on `lane` gives way itself: a stop or yield sign on it or on a lane leading into
+// it (another minor approach, another roundabout entry). It has no priority over the ego.
+bool yields(const RoadMap& map, LaneIndex lane) {
+  auto signed_lane = [&](LaneIndex l) {
+    for (const LaneFeature& feature : map.lane(l).features)
+      if (feature.kind == FeatureKind::stop_sign || feature.kind == FeatureKind::yield_sign)
+        return true;
+    return false;
+  };
+  if (signed_lane(lane)) return true;
+  const Lane& here = map.lane(lane);
+  return std::any_of(here.predecessors.begin(), here.predecessors.end(),
+                     [&](LaneIndex before) { return before != lane && signed_lane(before); });
+}
+
+bool runs_into_itself(const Lane& lane, LaneIndex index) {
+  return std::find(lane.successors.begin(), lane.successors.end(), index) != lane.successors.end();
+}
+
+// Metres the vehicle at `s` on `lane` has to drive to `point` on the same lane (negative: past it).
+double ahead_on_lane(const RoadMap& map, LaneIndex lane, double s, double point,
+                     double body_length) {
+  double ahead = point - s;
+  if (ahead < -body_length && runs_into_itself(map.lane(lane), lane))
+    ahead += map.lane(lane).length();
+  return ahead;
+}
+
+// Metres along the lanes from `s` on `lane` to the start of the nearest following lane with a
+// conflict point, within `reach`, or infinity.
+double distance_to_point(const RoadMap& map, std::span<const ConflictPoint> points, LaneIndex lane,
+                         double s, double reach) {
   double best = std::numeric_limits<double>::infinity();
   struct Step {
     LaneIndex lane;
@@ -33,11 +79,17 @@ double distance_to_conflict(const RoadMap& map, const std::vector<LaneIndex>& co
     open.pop_back();
     if (step.to_end >= best || step.to_end > reach) continue;
     for (LaneIndex next : map.lane(step.lane).successors) {
-      if (conflicting(conflicts, next)) {
-        best = std::min(best, step.to_end);
-      } else if (step.depth + 1 < kLanesAhead) {
+      if (next == step.lane || yields(map, next)) continue;
+      // To the start of the conflicting lane, not to the point on it: a vehicle coming into the
+      // junction behind the ego's merge still catches up with an ego that pulls out slowly.
+      bool found = false;
+      for (const ConflictPoint& point : points)
+        if (point.lane == next) {
+          best = std::min(best, step.to_end);
+          found = true;
+        }
+      if (!found && step.depth + 1 < kLanesAhead)
         open.push_back({next, step.to_end + map.lane(next).length(), step.depth + 1});
-      }
     }
   }
   return best;
@@ -45,20 +97,54 @@ double distance_to_conflict(const RoadMap& map, const std::vector<LaneIndex>& co
 
 }  // namespace
 
-bool priority_traffic(const RoadMap& map, const std::vector<LaneIndex>& conflicts,
+std::vector<ConflictPoint> conflict_points(const RoadMap& map, std::span<const LaneIndex> own,
+                                           std::span<const LaneIndex> conflicts) {
+  std::vector<ConflictPoint> points;
+  for (LaneIndex other : conflicts) {
+    const Polyline& line = map.lane(other).centre_line;
+    for (LaneIndex mine : own) {
+      const Polyline& path = map.lane(mine).centre_line;
+      const std::optional<double> crossing = first_crossing(line, path);
+      points.push_back({other, crossing ? *crossing : line.project(path.points().back()).s});
+    }
+  }
+  return points;
+}
+
+bool short_of_conflict(const RoadMap& map, std::span<const ConflictPoint> points, LaneIndex lane,
+                       double s, double length) {
+  bool any = false;
+  for (const ConflictPoint& point : points) {
+    if (point.lane != lane) continue;
+    any = true;
+    if (ahead_on_lane(map, lane, s, point.s, length) >= -length) return true;
+  }
+  return !any;
+}
+
+bool priority_traffic(const RoadMap& map, std::span<const ConflictPoint> points,
                       std::span<const WorldObject> objects, MapPoint ego,
                       const PriorityTrafficSettings& settings) {
-  if (conflicts.empty()) return false;
+  if (points.empty()) return false;
   for (const WorldObject& object : objects) {
     if (object.kind != TraceActorKind::vehicle) continue;  // cyclists are vehicles here
     const double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > settings.watch * settings.watch) continue;
     const auto on = project_to_lane(map, {object.x, object.y}, object.heading);
     if (!on || !on->inside) continue;
-    if (conflicting(conflicts, on->lane)) return true;  // in the junction, across the ego's way
+    // One standing or crawling, at its own line or on the point, is first come, first go: what
+    // stands in the ego's path stops it anyway (its object constraints), and waiting on it could
+    // last for ever.
     if (object.speed < settings.moving_speed || object.reversing) continue;
+    if (yields(map, on->lane)) continue;
     const double reach = settings.critical_gap * object.speed;
-    if (distance_to_conflict(map, conflicts, on->lane, on->s, reach) < reach) return true;
+    for (const ConflictPoint& point : points) {
+      if (point.lane != on->lane) continue;
+      const double ahead = ahead_on_lane(map, on->lane, on->s, point.s, object.length);
+      // On the point (within its length either side), or coming and soon there.
+      if (std::abs(ahead) <= object.length || (ahead > 0 && ahead < reach)) return true;
+    }
+    if (distance_to_point(map, points, on->lane, on->s, reach) < reach) return true;
   }
   return false;
 }

@@ -16,14 +16,35 @@
 namespace scenfuzz {
 
 struct PriorityTrafficSettings {
-  double critical_gap = 6.5;  // s until a vehicle with the way reaches a conflicting lane
+  double critical_gap = 6.5;  // s until a vehicle with the way reaches the ego's path
   double moving_speed = 1.0;  // m/s: slower, a vehicle waits at its own line (first come, first go)
   double watch = 100;         // m from the ego within which vehicles are looked at
 };
 
-// Whether the ego, about to enter the junction lanes whose conflicting lanes are `conflicts`
-// (ascending, as conflicting_lanes gives them), must still give way to one of `objects`.
-bool priority_traffic(const RoadMap& map, const std::vector<LaneIndex>& conflicts,
+// Where the ego's path meets a conflicting lane: `s` along that lane.
+struct ConflictPoint {
+  LaneIndex lane = 0;
+  double s = 0;
+};
+
+// Where lanes `own` (the ego's junction lanes) meet each of `conflicts` (conflicting_lanes):
+// where a centre line crosses one of them, or, merging, where one of them ends on it (a roundabout
+// entry joins its ring part way round).
+std::vector<ConflictPoint> conflict_points(const RoadMap& map, std::span<const LaneIndex> own,
+                                           std::span<const LaneIndex> conflicts);
+
+// Whether the ego must still give way to one of `objects`: a moving vehicle on a conflicting lane
+// within a body length of a conflict point, or short of it and reaching it within the critical
+// gap (a lane that runs round into itself, a roundabout's ring, counts the way round), or one on a
+// lane leading there that reaches that conflicting lane within it. Traffic that gives way itself
+// (a stop or yield sign on its lane or one leading into it) has no priority over the ego. A vehicle
+// past the point has gone; a standing one is first come, first go.
+// Whether a vehicle of `length` at `s` on `lane` is short of, or still on, one of the conflict
+// points on that lane (a lane without one counts as short of it): not yet past the ego's path.
+bool short_of_conflict(const RoadMap& map, std::span<const ConflictPoint> points, LaneIndex lane,
+                       double s, double length);
+
+bool priority_traffic(const RoadMap& map, std::span<const ConflictPoint> points,
                       std::span<const WorldObject> objects, MapPoint ego,
                       const PriorityTrafficSettings& settings = {});
 

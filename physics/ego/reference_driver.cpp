@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/ego/priority_traffic.hpp"
 #include "physics/ego/pursuit.hpp"
 #include "physics/ego/sight_distance.hpp"
 #include "physics/map/lane_conflicts.hpp"
@@ -352,9 +353,11 @@ void ReferenceDriver::collect_feature_constraints(const DriverInput& input, doub
       }
       case FeatureKind::stop_sign: {
         if (stop_sign_served_[i]) break;
+        // Stood long enough, it goes once the traffic with the way leaves it a gap.
         if (to_line < settings_.stop_line_gap + 3 && ego.speed < kStoppedSpeed) {
           if (stopped_since_ < 0) stopped_since_ = input.time;
-          if (input.time - stopped_since_ >= settings_.stop_sign_wait) {
+          if (input.time - stopped_since_ >= settings_.stop_sign_wait &&
+              !must_give_way(input, feature.s, settings_.stop_critical_gap)) {
             stop_sign_served_[i] = true;
             stopped_since_ = -1;
             break;
@@ -364,7 +367,16 @@ void ReferenceDriver::collect_feature_constraints(const DriverInput& input, doub
             {to_line, settings_.stop_line_gap, 0, false, DriverReason::stop_sign});
         break;
       }
-      case FeatureKind::yield_sign: break;
+      case FeatureKind::yield_sign: {
+        // Near enough to see the junction, it slows to stop at the line while traffic with the way
+        // is in or near it; once it can no longer stop there, it goes on.
+        constexpr double kYieldNotice = 40;  // m before the line
+        if (to_line > kYieldNotice || to_line < full_stop) break;
+        if (must_give_way(input, feature.s, settings_.yield_critical_gap))
+          constraints_.push_back(
+              {to_line, settings_.stop_line_gap, 0, false, DriverReason::give_way});
+        break;
+      }
       case FeatureKind::crosswalk: {
         if (to_line < full_stop) break;  // too late to stop before it: clear it instead
         // Pedestrians walking in or at the crosswalk stop the ego; ones standing there only
@@ -454,8 +466,7 @@ bool ReferenceDriver::box_blocked(const JunctionStretch& stretch, double front_s
   return false;
 }
 
-bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionStretch& stretch) {
-  constexpr double kJunctionWatch = 60;  // m from the ego within which the junction lies
+const std::vector<LaneIndex>& ReferenceDriver::stretch_conflicts(const JunctionStretch& stretch) {
   if (conflicts_entry_ != stretch.entry) {
     conflicts_entry_ = stretch.entry;
     conflicts_.clear();
@@ -464,9 +475,30 @@ bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionSt
       conflicts_.insert(conflicts_.end(), more.begin(), more.end());
     }
     std::sort(conflicts_.begin(), conflicts_.end());
-    // Vehicles up to 20 m long near the outline are covered (the test below).
+    conflicts_.erase(std::unique(conflicts_.begin(), conflicts_.end()), conflicts_.end());
+    std::vector<LaneIndex> own;
+    for (std::size_t k = stretch.first; k <= stretch.last; ++k)
+      own.push_back(route_.segments()[k].lane);
+    conflict_points_ = conflict_points(map_, own, conflicts_);
+    // Vehicles up to 20 m long near the outline are covered (crossing_inside's test).
     junction_lanes_ = junction_neighbourhood(map_, stretch.junction, 10);
   }
+  return conflicts_;
+}
+
+bool ReferenceDriver::must_give_way(const DriverInput& input, double line, double critical_gap) {
+  const auto stretch = route_.junction_ahead(line);
+  if (!stretch) return false;
+  PriorityTrafficSettings priority;
+  priority.critical_gap = critical_gap;
+  stretch_conflicts(*stretch);
+  return priority_traffic(map_, conflict_points_, input.objects, {input.ego.x, input.ego.y},
+                          priority);
+}
+
+bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionStretch& stretch) {
+  constexpr double kJunctionWatch = 60;  // m from the ego within which the junction lies
+  stretch_conflicts(stretch);
   const auto& outline = map_.junctions()[stretch.junction].outline;
   for (const WorldObject& object : input.objects) {
     if (object.kind != TraceActorKind::vehicle) continue;
@@ -481,7 +513,10 @@ bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionSt
     auto on = covers(junction_lanes_, at) && std::isfinite(object.heading)
                   ? lane_containing(map_, junction_lanes_, at, object.heading)
                   : project_to_lane(map_, at, object.heading);
-    if (on && on->inside && std::binary_search(conflicts_.begin(), conflicts_.end(), on->lane))
+    // On a lane across the ego's and not yet past where they meet (a roundabout's ring is one
+    // lane: a car that has gone by the ego's entry no longer holds it).
+    if (on && on->inside && std::binary_search(conflicts_.begin(), conflicts_.end(), on->lane) &&
+        short_of_conflict(map_, conflict_points_, on->lane, on->s, object.length))
       return true;
   }
   return false;

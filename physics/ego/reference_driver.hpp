@@ -20,6 +20,7 @@
 #include "physics/ego/motion_filter.hpp"
 #include "physics/ego/overtaking.hpp"
 #include "physics/ego/perception.hpp"
+#include "physics/ego/priority_traffic.hpp"
 #include "physics/ego/route_tracker.hpp"
 #include "physics/ego/sight_distance.hpp"
 #include "physics/map/lane_neighbourhood.hpp"
@@ -45,11 +46,15 @@ struct DriverSettings {
   double standing_speed = 0.4;     // m/s: a pedestrian slower than this (smoothed) is standing
   double pedestrian_patience = 5;  // s held by standing pedestrians before creeping on
   double junction_patience = 5;    // s held at a junction's entry before going on carefully
-  double creeping_speed = 1.5;     // m/s past standing pedestrians after that
-  SightSettings sight;             // the speed limit of what it can see
-  LeftTurnGapSettings left_turn;   // gap acceptance turning left across oncoming traffic
-  double sight_braking = 4.0;      // m/s^2 at most when it finds itself faster than that limit
-                                   // (starting in fog, say): firm, not full
+  // Giving way at signs (priority_traffic.hpp): the least time until a vehicle with the way
+  // reaches the ego's path that it pulls out in front of, after a stop and at a yield sign.
+  double stop_critical_gap = 6.5;   // s, HCM's two-way-stop critical headway going straight
+  double yield_critical_gap = 5.0;  // s, HCM's roundabout entry critical headway, about
+  double creeping_speed = 1.5;      // m/s past standing pedestrians after that
+  SightSettings sight;              // the speed limit of what it can see
+  LeftTurnGapSettings left_turn;    // gap acceptance turning left across oncoming traffic
+  double sight_braking = 4.0;       // m/s^2 at most when it finds itself faster than that limit
+                                    // (starting in fog, say): firm, not full
   OvertakingSettings overtaking;
 };
 
@@ -112,6 +117,11 @@ class ReferenceDriver {
   void hold_at_junction(const DriverInput& input, double front_s);
   bool box_blocked(const JunctionStretch& stretch, double front_s) const;
   bool crossing_inside(const DriverInput& input, const JunctionStretch& stretch);
+  // The lanes crossing or merging with the stretch's junction lanes (kept in conflicts_).
+  const std::vector<LaneIndex>& stretch_conflicts(const JunctionStretch& stretch);
+  // Whether, at the stop or yield line at route distance `line`, a vehicle with the way is in or
+  // within `critical_gap` of the junction lanes beyond it.
+  bool must_give_way(const DriverInput& input, double line, double critical_gap);
   void add_crossing_pedestrian(const WorldObject& object, double ego_speed, double gap,
                                double clearance, double lateral_speed, double along_speed);
   double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
@@ -141,7 +151,8 @@ class ReferenceDriver {
   // junction stretch it last looked at, and since when the ego stands held at its entry.
   double conflicts_entry_ = -1;
   std::vector<LaneIndex> conflicts_;
-  LaneNeighbourhood junction_lanes_;  // the lane segments around that stretch's junction
+  std::vector<ConflictPoint> conflict_points_;  // where the stretch's lanes meet them
+  LaneNeighbourhood junction_lanes_;            // the lane segments around that stretch's junction
   double held_since_junction_ = -1;
   double released_entry_ = -1;
   double next_glance_ = 0;        // s: when crossing_inside is looked at again

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "physics/map/builtin_maps.hpp"
@@ -18,7 +19,10 @@ class PriorityTrafficTest : public ::testing::Test {
  protected:
   PriorityTrafficTest()
       : map_(build_road_map(generate_builtin_map("t_junction", {}))),
-        conflicts_(conflicting_lanes(map_, lane("south_east_0"))) {}
+        conflicts_(conflicting_lanes(map_, lane("south_east_0"))) {
+    const std::vector<LaneIndex> own{lane("south_east_0")};
+    points_ = conflict_points(map_, own, conflicts_);
+  }
 
   LaneIndex lane(const char* id) const { return *map_.find_lane(id); }
 
@@ -41,11 +45,12 @@ class PriorityTrafficTest : public ::testing::Test {
 
   bool must_wait(const WorldObject& car) const {
     const MapPoint ego = map_.lane(lane("south_in_0")).centre_line.points().back();
-    return priority_traffic(map_, conflicts_, std::vector<WorldObject>{car}, ego);
+    return priority_traffic(map_, points_, std::vector<WorldObject>{car}, ego);
   }
 
   RoadMap map_;
   std::vector<LaneIndex> conflicts_;
+  std::vector<ConflictPoint> points_;
 };
 
 TEST_F(PriorityTrafficTest, ACarFromTheLeftWithinTheCriticalGapIsGivenWay) {
@@ -59,8 +64,54 @@ TEST_F(PriorityTrafficTest, ACarFromTheLeftWithinTheCriticalGapIsGivenWay) {
   EXPECT_FALSE(must_wait(car_on("west_in_0", 10, 0)));
 }
 
-TEST_F(PriorityTrafficTest, ACarInsideTheJunctionOnACrossingLaneIsGivenWay) {
-  EXPECT_TRUE(must_wait(car_on("west_east_0", 5, 0.5)));
+TEST_F(PriorityTrafficTest, ACarInTheJunctionIsGivenWayUntilItIsPastTheEgosPath) {
+  // On the through lane, before the point where the right turn joins it: given way.
+  const double length = map_.lane(lane("west_east_0")).length();
+  EXPECT_TRUE(must_wait(car_on("west_east_0", length - 1, 5)));
+  // Past it, by more than a car's length: gone.
+  const MapPoint end = map_.lane(lane("south_east_0")).centre_line.points().back();
+  const double join = map_.lane(lane("west_east_0")).centre_line.project(end).s;
+  ASSERT_LT(join + 6, length + 20);  // the join may lie on the next lane: then past the end
+  if (join + 6 < length) {
+    EXPECT_FALSE(must_wait(car_on("west_east_0", length - join - 6, 5)));
+  } else {
+    EXPECT_FALSE(must_wait(car_on("east_out_0", map_.lane(lane("east_out_0")).length() - 10, 5)));
+  }
+}
+
+// The roundabout's ring is one lane running round into itself: a car on it is given way only while
+// it comes round towards the ego's entry, not once it has gone by (it waited for the whole ring).
+TEST(PriorityTrafficRingTest, ACarOnTheRingIsGivenWayOnlyComingRoundToTheEntry) {
+  const RoadMap map = build_road_map(generate_builtin_map("roundabout", {}));
+  const LaneIndex entry = *map.find_lane("south_entry");
+  const LaneIndex ring = *map.find_lane("ring_0");
+  const std::vector<LaneIndex> conflicts = conflicting_lanes(map, entry);
+  const std::vector<LaneIndex> own{entry};
+  const std::vector<ConflictPoint> points = conflict_points(map, own, conflicts);
+  double join = -1;
+  for (const ConflictPoint& point : points)
+    if (point.lane == ring) join = point.s;
+  ASSERT_GE(join, 0);
+  const Polyline& line = map.lane(ring).centre_line;
+  const double length = line.length();
+  auto car_at = [&](double s) {
+    s = std::fmod(s + length, length);
+    WorldObject car;
+    car.id = 1;
+    car.kind = TraceActorKind::vehicle;
+    const MapPoint p = line.point_at(s);
+    car.x = p.x;
+    car.y = p.y;
+    car.heading = line.heading_at(s);
+    car.speed = 6;
+    car.length = 4.6;
+    car.width = 1.9;
+    return std::vector<WorldObject>{car};
+  };
+  const MapPoint ego = map.lane(entry).centre_line.points().front();
+  EXPECT_TRUE(priority_traffic(map, points, car_at(join - 20), ego));   // 3.3 s away
+  EXPECT_FALSE(priority_traffic(map, points, car_at(join + 20), ego));  // gone by
+  EXPECT_FALSE(priority_traffic(map, points, car_at(join - 50), ego));  // 8.3 s away
 }
 
 TEST_F(PriorityTrafficTest, TrafficOnTheFarHalfDoesNotHoldARightTurn) {
