@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/ego/constant_acceleration_heuristic.hpp"
 #include "physics/ego/priority_traffic.hpp"
 #include "physics/ego/pursuit.hpp"
 #include "physics/ego/sight_distance.hpp"
@@ -557,7 +558,10 @@ double ReferenceDriver::idm_acceleration(double speed, double desired,
   double approach = speed * (speed - constraint.lead_speed) / (2 * std::sqrt(a * b));
   double wanted_gap = constraint.clearance + std::max(0.0, speed * settings_.time_gap + approach);
   double gap = std::max(constraint.gap, 0.01);
-  return a * (1 - fourth_power(speed / desired) - (wanted_gap / gap) * (wanted_gap / gap));
+  const double idm =
+      a * (1 - fourth_power(speed / desired) - (wanted_gap / gap) * (wanted_gap / gap));
+  if (!constraint.is_object || constraint.lead_speed < kStoppedSpeed) return idm;
+  return with_constant_acceleration_heuristic(idm, speed, constraint.lead_speed, gap, b);
 }
 
 VehicleControl ReferenceDriver::step(const DriverInput& input) {

@@ -124,8 +124,8 @@ TEST_F(FuzzCommandTest, AFindingsHeaderDescribesItsModeAndShowsTheValuesTheFileS
 }
 
 TEST_F(FuzzCommandTest, OneFindingPerFailureModeItsMostViolatingEvaluation) {
-  // Seed 22: a search in which some mode's first evaluation is later outdone (asserted below).
-  ASSERT_EQ(fuzz(kCutIn, {"--budget", "200", "--seed", "22"}).exit_code, 1);
+  // Seed 1: a search in which some mode's first evaluation is later outdone (asserted below).
+  ASSERT_EQ(fuzz(kCutIn, {"--budget", "200", "--seed", "1"}).exit_code, 1);
   const nlohmann::json summary = this->summary();
   // The journal's evaluations by failure mode: how many, and the most violating (the earliest
   // among equals).
