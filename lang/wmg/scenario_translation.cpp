@@ -61,6 +61,16 @@ std::optional<std::string> Translation::lane_id(const LaneName& lane) {
   return road->second.lane_prefix + std::to_string(number - 1);
 }
 
+std::vector<std::string> RoadLanes::map_lanes() const {
+  std::vector<std::string> lanes;
+  for (int k = 0; k < traffic_lanes; ++k) lanes.push_back(lane_prefix + std::to_string(k));
+  if (lane_prefix.ends_with("_in_")) {
+    const std::string out = lane_prefix.substr(0, lane_prefix.size() - 3) + "out_";
+    for (int k = 0; k < traffic_lanes; ++k) lanes.push_back(out + std::to_string(k));
+  }
+  return lanes;
+}
+
 bool Translation::check_actor(const Identifier& actor) {
   if (actors.contains(actor.name)) return true;
   diagnostics.error(actor.location,
@@ -94,7 +104,10 @@ ScenarioTemplate translate_level2(const Level2File& file, Diagnostics& diagnosti
   translate_scenery(file.scenery, file.dynamics.initialisation, translation);
   // Lanes and actors the dynamics name are checked against the scenery; with no usable map, the
   // same lane would be reported at every use.
-  if (!diagnostics.has_errors()) translate_dynamics(file.dynamics, translation);
+  if (!diagnostics.has_errors()) {
+    translate_dynamics(file.dynamics, translation);
+    choose_first_green(file.dynamics, translation);
+  }
   translate_environment(file.environment, translation);
   if (file.traffic && !diagnostics.has_errors()) translate_traffic(*file.traffic, translation);
   return std::move(translation.scenario);

@@ -20,6 +20,9 @@ struct RoadLanes {
   std::string lane_prefix;         // lane k is `<lane_prefix><k-1>`: "east_", "fwd_", "west_in_"
   int traffic_lanes = 0;           // lanes L1..Ln the map generates for this road
   std::set<std::string> declared;  // lane names written in "Number of lanes [n] as [...]"
+
+  // Every lane the map generates for the road: a junction arm's in and out lanes.
+  std::vector<std::string> map_lanes() const;
 };
 
 // One translation in progress: the template being built, its diagnostics, and the names the
@@ -57,6 +60,9 @@ void translate_scenery(const Scenery& scenery, const Initialisation& initialisat
 void translate_dynamics(const Dynamics& dynamics, Translation& translation);
 // Weather, time of day, light and connectivity.
 void translate_environment(const Environment& environment, Translation& translation);
+// A signalised crossroads' first green: the approach of the first light a WHEN names green (the
+// crossing one for red), else the ego's.
+void choose_first_green(const Dynamics& dynamics, Translation& translation);
 // Background traffic flows.
 void translate_traffic(const TrafficModel& traffic, Translation& translation);
 

@@ -370,6 +370,7 @@ MapDescription generate_crossroads(const MapParameters& parameters) {
   const double yellow = parameters.value("yellow");
   const double all_red = parameters.value("all_red");
   const bool with_crosswalks = parameters.flag("crosswalks");
+  const bool east_west_first = parameters.flag("east_west_first");
   const std::vector<Arm> arms =
       junction_arms(parameters, layout, {"north", "east", "south", "west"});
 
@@ -378,8 +379,8 @@ MapDescription generate_crossroads(const MapParameters& parameters) {
       {kJunctionId, outline_round(layout, {&arm_named(arms, "south"), &arm_named(arms, "east"),
                                            &arm_named(arms, "north"), &arm_named(arms, "west")})});
   for (const Arm& arm : arms) {
-    // North and south go first; east and west half a cycle later.
-    bool east_west = arm.name == "east" || arm.name == "west";
+    // North and south go first, east and west half a cycle later; or the other way round.
+    const bool east_west = arm.name == "east" || arm.name == "west";
     TrafficLightDescription light;
     light.id = "light_" + arm.name;
     double head_distance = arm.start + kStopLineBeforeBox;
@@ -387,16 +388,16 @@ MapDescription generate_crossroads(const MapParameters& parameters) {
                    (layout.road_half_width() + kPavementWidth / 2) * inbound_right(arm)};
     light.stop_lines = {stop_line(layout, arm)};
     light.lanes = in_lanes_at_stop_line(layout, arm);
-    light.plan = traffic_plan(green, yellow, all_red, east_west);
+    light.plan = traffic_plan(green, yellow, all_red, east_west != east_west_first);
     map.traffic_lights.push_back(std::move(light));
   }
   if (with_crosswalks) {
     for (const Arm& arm : arms) {
       // A crosswalk across the east or west arm is walked north-south, beside the north-south
       // traffic, and shares its green.
-      bool walked_north_south = arm.name == "east" || arm.name == "west";
+      const bool walked_north_south = arm.name == "east" || arm.name == "west";
       CrosswalkDescription crossing = crosswalk(layout, arm);
-      crossing.walk_plan = walk_plan(green, yellow, all_red, !walked_north_south);
+      crossing.walk_plan = walk_plan(green, yellow, all_red, walked_north_south == east_west_first);
       map.crosswalks.push_back(std::move(crossing));
     }
   }

@@ -91,6 +91,9 @@ std::vector<RegisteredMap> make_registry() {
                     {"all_red", 2, 0, 10, "s",
                      "all signals red between one direction's yellow and the "
                      "other's green"},
+                    {"east_west_first", 0, 0, 1, "",
+                     "1: the west and east arms have the first green, 0: the south and north "
+                     "arms"},
                     crosswalks_parameter()}},
                   builtin::generate_crossroads});
   maps.push_back(

@@ -218,6 +218,61 @@ TEST(WmgTranslationTest, CrossroadsNamesArmsWestSouthEastNorthAndItsLightsByArm)
   EXPECT_EQ(when.terms[1].name, "green");
 }
 
+// The file gives no signal timing: the approach of the first light a WHEN names green has the
+// first green (the crossing one for red), else the ego's (the crossroads map's
+// `east_west_first`; TL1 is on R1, the west arm; TL3 on R3, the east arm).
+TEST(WmgTranslationTest, TheFirstGreenGoesToTheLightAWhenNamesGreenElseToTheEgosApproach) {
+  struct Case {
+    std::string ego_lane, when;
+    double east_west_first;
+  };
+  for (const Case& c : std::vector<Case>{{"R2.L1", "[TL1] is [Green]", 1},
+                                         {"R1.L1", "[TL3] is [Red]", 0},
+                                         {"R1.L1", "[TL3] is [Amber]", 1},
+                                         {"R1.L1", "[Ego] is [Going Ahead]", 1},
+                                         {"R2.L1", "[Ego] is [Going Ahead]", 0}}) {
+    SCOPED_TRACE(c.ego_lane + ", " + c.when);
+    Parts parts;
+    parts.scenery = crossroads_scenery();
+    parts.dynamics = "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [" + c.ego_lane +
+                     "]\nWHEN: " + c.when + "\nDO: AUTO\nEND\n";
+    ParseResult result = parse_ok(parts.text());
+    const NamedValue* first = map_parameter(result.scenario, "east_west_first");
+    ASSERT_NE(first, nullptr);
+    EXPECT_EQ(at(first->value, {}), c.east_west_first);
+  }
+}
+
+// `[Walk_Cross] [R2, ...]`: the phase carries every lane the map generates for R2 (the south
+// arm); a road the scenery does not have is an error at its name.
+TEST(WmgTranslationTest, APhaseNamingARoadCarriesThatRoadsLanes) {
+  Parts parts;
+  parts.scenery = crossroads_scenery();
+  const std::string dynamics =
+      "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R1.L1]\n"
+      "AND Pedestrian [Walker] in [R1.P1] with a [Longitudinal] offset of [30] AND at relative "
+      "position [FSR] with relative heading angle [90] to [Ego]\n"
+      "WHEN: [Ego] is [Going Ahead]\nDO: [Walker] PHASE 1: [Walk_Cross] [ROAD, 5, 2] [Ego: 20, "
+      "FSR]\nEND\n";
+  parts.dynamics = dynamics;
+  parts.dynamics.replace(parts.dynamics.find("ROAD"), 4, "R2");
+  ParseResult result = parse_ok(parts.text());
+  ASSERT_EQ(result.scenario.pedestrians.size(), 1u);
+  EXPECT_EQ(result.scenario.pedestrians[0].motion.phases.at(0).road_lanes,
+            (std::vector<std::string>{"south_in_0", "south_in_1", "south_out_0", "south_out_1"}));
+
+  parts.dynamics = dynamics;
+  parts.dynamics.replace(parts.dynamics.find("ROAD"), 4, "R9");
+  const std::string text = parts.text();
+  ParseResult unknown = parse_text(text);
+  EXPECT_FALSE(unknown.ok());
+  EXPECT_NE(first_error_message(unknown).find("the phase names road 'R9', which is not in the "
+                                              "scenery"),
+            std::string::npos)
+      << first_error_message(unknown);
+  EXPECT_EQ(first_error(unknown), position_of(text, "R9, 5"));
+}
+
 TEST(WmgTranslationTest, TheFirstPairsAngleTurnsTheCrossingRoadAndStaysASearchDimension) {
   Parts parts;
   parts.scenery = crossroads_scenery();
