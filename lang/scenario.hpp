@@ -82,10 +82,12 @@ struct ActorType {
 // One phase of a manoeuvre sequence (WMG SDL, accident event chains): what the actor does, with
 // its arguments, when it starts and while it lasts.
 struct ManoeuvrePhase {
-  std::string manoeuvre;  // e.g. "Drive_CutIn", "turn_left", "stop"
+  std::string manoeuvre;               // e.g. "Drive_CutIn", "turn_left", "stop"
   std::vector<NamedValue> parameters;  // docs/wmg-semantics.md: speed, duration, gap
   std::string reference;               // the actor the manoeuvre is relative to, if any
   std::string relative_location;       // WMG sector F, FSR, SR, RSR, R, RSL, SL, FSL
+  // The lanes of the road the phase names (WMG `[Walk_Cross] [R3, ...]`): what a crossing crosses.
+  std::vector<std::string> road_lanes;
   std::optional<Formula> start_when;
   std::optional<Formula> continue_while;
   bool critical = false;
@@ -267,8 +269,8 @@ struct ScenarioTemplate {
   std::optional<Value> duration;  // seconds
   // As the file sets it; unset means reactive unless the command line says otherwise.
   std::optional<NpcBehaviour> npc_behaviour;
-  std::string trace_name;         // the trace variable the specs are asserted on
-  std::string scenario_name;      // the variable the scenario was bound to
+  std::string trace_name;     // the trace variable the specs are asserted on
+  std::string scenario_name;  // the variable the scenario was bound to
 
   bool operator==(const ScenarioTemplate&) const = default;
 };

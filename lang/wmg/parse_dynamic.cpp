@@ -287,6 +287,9 @@ AgentParameters parse_agent_parameters(Cursor& cursor) {
   SourceLocation first = cursor.expect(kOpen, "before the agent parameters").location;
   if (cursor.at(TokenKind::minus)) {
     cursor.take();
+  } else if (cursor.at_road_id()) {
+    // A road: the one a crossing crosses (docs/wmg-semantics.md, "Manoeuvre phases").
+    parameters.agent = cursor.road_id("the agent");
   } else {
     parameters.agent = cursor.id("the agent (or '-' for none)");
   }

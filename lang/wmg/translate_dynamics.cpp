@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "lang/wmg/parser_cursor.hpp"
 #include "lang/wmg/scenario_translation.hpp"
 
 namespace scenfuzz::wmg {
@@ -134,6 +135,16 @@ scenfuzz::ManoeuvrePhase translate_phase(const wmg::ManoeuvrePhase& phase, const
                  phase.relative.distance.location});
   if (translation.check_actor(phase.relative.reference))
     result.reference = phase.relative.reference.name;
+  // A road named in the agent parameters is the one a crossing crosses.
+  if (phase.agent.agent && detail::is_road_id(phase.agent.agent->name)) {
+    const auto road = translation.roads.find(phase.agent.agent->name);
+    if (road != translation.roads.end())
+      result.road_lanes = road->second.map_lanes();
+    else
+      translation.diagnostics.error(
+          phase.agent.agent->location,
+          "the phase names road '" + phase.agent.agent->name + "', which is not in the scenery");
+  }
   result.relative_location = sector_text(phase.relative.relative_location.value);
   if (phase.while_constraint)
     result.continue_while =

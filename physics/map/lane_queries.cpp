@@ -78,6 +78,18 @@ std::optional<LaneProjection> project_to_lane(const RoadMap& map, MapPoint point
   return make_projection(map, nearest.lane, centre_line.project_to_segment(point, nearest.segment));
 }
 
+std::optional<LaneProjection> project_onto_lanes(const RoadMap& map, MapPoint point,
+                                                 std::span<const LaneIndex> lanes) {
+  if (!std::isfinite(point.x) || !std::isfinite(point.y)) return std::nullopt;
+  std::optional<LaneProjection> nearest;
+  for (LaneIndex lane : lanes) {
+    LaneProjection candidate =
+        make_projection(map, lane, map.lane(lane).centre_line.project(point));
+    if (!nearest || candidate.distance < nearest->distance) nearest = candidate;
+  }
+  return nearest;
+}
+
 std::optional<LaneProjection> project_to_lane(const RoadMap& map, MapPoint point, double heading) {
   if (!std::isfinite(heading)) return project_to_lane(map, point);
   std::optional<LaneProjection> nearest = project_to_lane(map, point);

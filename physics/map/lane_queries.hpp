@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 
 #include "physics/map/road_map.hpp"
 
@@ -49,6 +50,10 @@ std::optional<LaneProjection> project_to_lane(const RoadMap& map, MapPoint point
 // As above, but where lanes overlap (junctions, merges) prefers, among the lanes that contain the
 // point, the one whose direction is closest to `heading`. A point in no lane gets the nearest.
 std::optional<LaneProjection> project_to_lane(const RoadMap& map, MapPoint point, double heading);
+
+// The nearest of `lanes` to `point`; nullopt when `lanes` is empty or the point not finite.
+std::optional<LaneProjection> project_onto_lanes(const RoadMap& map, MapPoint point,
+                                                 std::span<const LaneIndex> lanes);
 
 // A lane change from `from` to `to` is allowed when `to` is a forward neighbour of `from`, the
 // boundary between them is not solid (dotted, or unknown as built-in maps and some Apollo maps

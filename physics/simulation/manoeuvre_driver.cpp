@@ -211,9 +211,12 @@ void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self
       break;
     case MotionPrimitive::walk: walk_heading_ = state_.heading; break;
     case MotionPrimitive::walk_cross: {
-      // Across the nearest lane: from a pavement, towards the road; standing in a lane (WMG SDL
-      // places pavement walkers in the kerb-side lane), towards the side with more road.
-      auto lane = project_to_lane(*map_, {state_.x, state_.y});
+      // Across the nearest lane of the road the phase names, else the nearest lane: from a
+      // pavement, towards the road; standing in a lane (WMG SDL places pavement walkers in the
+      // kerb-side lane), towards the side with more road.
+      const MapPoint here{state_.x, state_.y};
+      auto lane = phase.road_lanes.empty() ? project_to_lane(*map_, here)
+                                           : project_onto_lanes(*map_, here, phase.road_lanes);
       if (!lane) break;
       const Lane& nearest = map_->lane(lane->lane);
       bool left = lane->lateral < 0;

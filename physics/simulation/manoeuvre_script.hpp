@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
+#include "physics/map/road_map.hpp"
 #include "physics/simulation/manoeuvre_trigger.hpp"
 
 namespace scenfuzz {
@@ -52,10 +53,11 @@ bool reverses(MotionPrimitive primitive);
 struct PhaseMotion {
   std::string manoeuvre;  // as written, for messages
   PrimitiveChoice choice;
-  std::optional<double> speed;     // m/s
-  std::optional<double> duration;  // s
-  std::optional<double> gap;       // m, front bumper of the reference to this actor's rear
-  std::uint32_t reference = 0;     // actor id; the ego when the phase names none
+  std::optional<double> speed;        // m/s
+  std::optional<double> duration;     // s
+  std::optional<double> gap;          // m, front bumper of the reference to this actor's rear
+  std::uint32_t reference = 0;        // actor id; the ego when the phase names none
+  std::vector<LaneIndex> road_lanes;  // the road a crossing crosses; empty: the nearest lane's
   std::optional<TriggerCondition> start_when;
   std::optional<TriggerCondition> continue_while;
 };

@@ -137,7 +137,7 @@ std::optional<MapPose> place_state_unchecked(Context& context, const State& stat
       return std::nullopt;
     }
     auto pose = place_relative(context.map, position, context.values, reference->second,
-                               context.actor, context.diagnostics);
+                               context.pedestrian, context.actor, context.diagnostics);
     if (!pose || !state.heading) return pose;
     // The position is taken along the lane, and so is a heading measured from nothing else.
     double lane_heading = pose->heading;
@@ -397,6 +397,16 @@ std::optional<ManoeuvreScript> manoeuvre_script(Context& context, const Actor& a
         continue;
       }
       *slot = value;
+    }
+    for (const std::string& id : phase.road_lanes) {
+      if (const auto lane = context.map.find_lane(id)) {
+        motion.road_lanes.push_back(*lane);
+        continue;
+      }
+      context.diagnostics.error(location, actor.name + "'s '" + phase.manoeuvre + "' names lane '" +
+                                              id + "', which map '" + context.map.name() +
+                                              "' does not have");
+      ok = false;
     }
     bool turn = choice->primitive == MotionPrimitive::turn_left ||
                 choice->primitive == MotionPrimitive::turn_right;

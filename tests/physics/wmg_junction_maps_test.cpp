@@ -17,6 +17,7 @@
 #include "physics/map/lane_route.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/simulation/scenario_setup.hpp"
+#include "physics/simulation/simulation.hpp"
 #include "tests/lang/wmg_test_files.hpp"
 #include "tests/support/parameter_points.hpp"
 
@@ -168,6 +169,43 @@ TEST(WmgJunctionMaps, AVehicleHeadedAgainstItsLaneTakesTheLanesDirectionWithAWar
       << told;
   EXPECT_EQ(told.find("Walker's heading"), std::string::npos) << told;
   EXPECT_NEAR(setup->actors[1].trajectory.state_at(0).heading, 0, 1e-9);  // north - 90
+}
+
+// Issue 24: `[Walk_Cross] [R3, ...]` crosses the road it names. A walker on the T's west arm,
+// short of the junction, crosses the arm it stands on when the phase names the ego; named R3
+// (the stem, running north-south), it walks east, across the stem's lanes.
+TEST(WmgJunctionMaps, AWalkCrossCrossesTheRoadItNames) {
+  const std::string scenery = junction_file(
+      "T-Junction", 3, "[R1 -> R2, R2 -> R3]\n[170 to 190, 80 to 100]", "Width: 10, Depth: 10");
+  const std::string dynamics = wmg::test::Parts{}.dynamics;
+  for (const std::string target : {"Ego", "R3"}) {
+    SCOPED_TRACE(target);
+    std::string text = scenery;
+    text.replace(text.find(dynamics), dynamics.size(),
+                 "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R1.L1]\n"
+                 "AND Pedestrian [Walker] in [R1.L1] with a [Longitudinal] offset of [40] AND at "
+                 "relative position [F] with relative heading angle [0] to [Ego]\n"
+                 "WHEN: [Ego] is [Going Ahead]\nDO: [Walker]\n"
+                 "PHASE 1: [Walk_Cross] [" +
+                     target + ", 5, 20] [Ego: 10, F]\nEND\n");
+    wmg::ParseResult result = parse_ok(text);
+    const std::vector<double> values = midpoint(result.scenario);
+    const RoadMap map = map_at(result.scenario, values);
+    Diagnostics diagnostics;
+    const auto setup = prepare_simulation(result.scenario, values, map, 1, diagnostics);
+    ASSERT_TRUE(setup) << format_diagnostics(SourceFile("t.sdl", text), diagnostics);
+    SimulationOptions options;
+    options.duration = 3;
+    const Trace trace = simulate(map, *setup, options);
+    const TraceActor& walker = trace.actors[*trace.find_actor("Walker")];
+    const double heading = walker.heading.back() * 180 / std::numbers::pi;
+    if (target == "Ego") {
+      EXPECT_NEAR(heading, 90, 1) << "north, across the west arm it stands on";
+    } else {
+      EXPECT_NEAR(heading, 0, 1) << "east, towards the stem it names";
+      EXPECT_GT(walker.x.back(), walker.x.front() + 3);
+    }
+  }
 }
 
 TEST(WmgJunctionMaps, EveryRoundaboutTypeBuildsOverItsDefaultDiameters) {
