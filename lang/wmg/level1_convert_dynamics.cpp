@@ -18,6 +18,11 @@ LaneName lane_of(const ActorPlan& actor, SourceLocation where = {}) {
   return LaneName{id(actor.road, where), id(actor.lane, where), where};
 }
 
+bool on_the_left(RelativeLocation location) {
+  return location == RelativeLocation::front_side_left || location == RelativeLocation::side_left ||
+         location == RelativeLocation::rear_side_left;
+}
+
 RelativeLocation relative_location(std::string_view code) {
   const std::vector<std::string>& codes = vocabulary::relative_location().phrases;
   for (std::size_t i = 0; i < codes.size(); ++i)
@@ -94,6 +99,10 @@ class DynamicsConverter {
     }
     init.relative_position = Located<RelativeLocation>{actor.relative_position, where};
     init.relative_heading = table_range(setting(heading), where);
+    // A pedestrian on the ego's left faces across the road to the right: the range mirrored.
+    if (actor.type == ActorType::pedestrian && on_the_left(actor.relative_position))
+      init.relative_heading = {-init.relative_heading.high, -init.relative_heading.low,
+                               init.relative_heading.is_range, init.relative_heading.location};
     init.reference = plan_.ego().name;
     init.location = where;
     return init;

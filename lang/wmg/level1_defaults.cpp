@@ -278,7 +278,7 @@ constexpr std::array kTable{
     range(Q::setting, "gap on another road", "", 30, 90, "m", "an actor on another road of the scene"),
     range(Q::setting, "pedestrian gap", "", 20, 80, "m", "a pedestrian ahead at the roadside"),
     range(Q::setting, "pedestrian lateral offset", "", 2, 4, "m", "on the pavement beside the lane"),
-    range(Q::setting, "pedestrian heading", "", 80, 100, "degrees", "facing across the road"),
+    range(Q::setting, "pedestrian heading", "", 80, 100, "degrees", "facing across the road (-100 to -80 for a pedestrian at the ego's left)"),
     range(Q::setting, "heading on another road", "", -180, 180, "degrees", "level 1 does not say: searched"),
     range(Q::setting, "heading on the same road", "", 0, 0, "degrees", "the lane's direction"),
     range(Q::setting, "traffic centroid distance", "", 50, 150, "m", "where background traffic enters and leaves"),

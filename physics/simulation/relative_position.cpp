@@ -1,5 +1,8 @@
+// WMG SDL relative placement: the reference's lane position carried to the written lane, and a
+// pedestrian moved to the side of its road that its sector names.
 #include "physics/simulation/relative_position.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -19,11 +22,57 @@ SectorSide sector_side(const std::string& sector) {
   return SectorSide::none;
 }
 
+// Metres `point` lies to the left of `reference` (negative: to its right).
+double left_of(const MapPose& reference, MapPoint point) {
+  return -(point.x - reference.position.x) * std::sin(reference.heading) +
+         (point.y - reference.position.y) * std::cos(reference.heading);
+}
+
+// Every lane of the road through `lane`: its neighbours on either side, either way, and theirs.
+std::vector<LaneIndex> road_cross_section(const RoadMap& map, LaneIndex lane) {
+  std::vector<LaneIndex> lanes{lane};
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    const Lane& current = map.lane(lanes[i]);
+    for (const auto* side : {&current.left_forward_neighbours, &current.right_forward_neighbours,
+                             &current.left_reverse_neighbours, &current.right_reverse_neighbours})
+      for (LaneIndex neighbour : *side)
+        if (std::find(lanes.begin(), lanes.end(), neighbour) == lanes.end())
+          lanes.push_back(neighbour);
+  }
+  return lanes;
+}
+
+// A pedestrian stands on the side of its road that its sector names, as the reference sees it:
+// beyond the outermost lane on that side by its lateral offset (on the pavement there), level
+// with `along` (its place on the lane written). A reference on another arm of a junction sees
+// that arm's lanes the other way round, so the lane written cannot say the side by itself.
+std::optional<MapPose> on_named_side(const RoadMap& map, LaneIndex written, MapPoint along,
+                                     double lateral, const MapPose& reference, SectorSide side) {
+  const double sign = side == SectorSide::left ? 1 : -1;
+  std::optional<LaneIndex> outermost;
+  double outermost_left = 0, outermost_s = 0;
+  for (LaneIndex lane : road_cross_section(map, written)) {
+    const Polyline& centre = map.lane(lane).centre_line;
+    const double s = centre.project(along).s;
+    const double left = sign * left_of(reference, centre.point_at(s));
+    if (!outermost || left > outermost_left) {
+      outermost = lane;
+      outermost_left = left;
+      outermost_s = s;
+    }
+  }
+  const double heading = map.lane(*outermost).centre_line.heading_at(outermost_s);
+  // The lane's own left points to the named side when it runs the reference's way round.
+  const double facing = std::cos(heading - reference.heading) >= 0 ? 1 : -1;
+  return lane_pose_at(map, *outermost, outermost_s, sign * facing * std::abs(lateral));
+}
+
 }  // namespace
 
 std::optional<MapPose> place_relative(const RoadMap& map, const Position& position,
                                       std::span<const double> values, const MapPose& reference,
-                                      const std::string& actor, Diagnostics& diagnostics) {
+                                      bool pedestrian, const std::string& actor,
+                                      Diagnostics& diagnostics) {
   auto reference_lane = project_to_lane(map, reference.position, reference.heading);
   if (!reference_lane) {
     diagnostics.error(position.location, actor + " is placed relative to " + position.reference +
@@ -42,7 +91,7 @@ std::optional<MapPose> place_relative(const RoadMap& map, const Position& positi
     lane = *written;
   } else {
     const Lane& own = map.lane(lane);
-    SectorSide side = sector_side(position.relative_location);
+    const SectorSide side = sector_side(position.relative_location);
     if (side == SectorSide::left && !own.left_forward_neighbours.empty())
       lane = own.left_forward_neighbours.front();
     if (side == SectorSide::right && !own.right_forward_neighbours.empty())
@@ -69,7 +118,12 @@ std::optional<MapPose> place_relative(const RoadMap& map, const Position& positi
                                              format_number(length) + " m long");
     return std::nullopt;
   }
-  return lane_pose_at(map, lane, s, lateral);
+  std::optional<MapPose> pose = lane_pose_at(map, lane, s, lateral);
+  const SectorSide side = sector_side(position.relative_location);
+  if (pedestrian && pose && side != SectorSide::none &&
+      (left_of(reference, pose->position) > 0) != (side == SectorSide::left))
+    pose = on_named_side(map, lane, pose->position, lateral, reference, side);
+  return pose;
 }
 
 }  // namespace scenfuzz

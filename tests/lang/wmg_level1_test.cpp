@@ -622,7 +622,8 @@ TEST(WmgLevel1Conversion, PedestrianWalksAcross) {
   EXPECT_EQ(walker.lane.lane.name, "P1");
   ASSERT_EQ(walker.offsets.size(), 2u);
   EXPECT_EQ(walker.offsets[1].relation.value, PositionRelation::lateral);
-  expect_range(walker.relative_heading, 80, 100);
+  // At the ego's left, facing across the road: to the ego's right.
+  expect_range(walker.relative_heading, -100, -80);
   const std::vector<ManoeuvrePhase>& phases = file.dynamics.sequences.at(0).sequences.at(0).phases;
   ASSERT_EQ(phases.size(), 2u);
   EXPECT_EQ(phases[0].type.text, "Walk_Cross");
