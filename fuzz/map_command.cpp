@@ -1,7 +1,8 @@
 // `scenfuzz map NAME|FILE`: what a map holds (summary, JSON) and what it looks like (SVG), so a
 // user can find lane ids before writing them into a scenario; `--list` shows the built-in maps.
 // Given a scenario file, the map it builds at the centre of its space, and which of the map's
-// roads each road of a WMG scenery became.
+// roads each road of a WMG scenery became; its picture marks the actors where the run starts them
+// and the WMG roads' names.
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
+#include "fuzz/scenario_marks.hpp"
 #include "lang/number_format.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/map/map_svg.hpp"
@@ -138,19 +140,35 @@ bool is_scenario_path(const std::string& name) {
   return false;
 }
 
-// The map a scenario file builds at the centre of its space, with the notes it keeps on it (a
-// WMG scenery's roads and the arms they became); nullopt after an error on `err`.
-std::optional<RoadMap> scenario_map(const MapCommandOptions& options, std::vector<Attribute>& notes,
-                                    std::ostream& err) {
+// The map a scenario file builds at the centre of its space, the notes it keeps on it (a WMG
+// scenery's roads and the arms they became) and what its picture marks; nullopt after an error on
+// `err`.
+struct ScenarioDrawing {
+  RoadMap map;
+  std::vector<Attribute> notes;
+  std::vector<SvgMark> marks;
+};
+
+std::optional<ScenarioDrawing> scenario_drawing(const MapCommandOptions& options,
+                                                std::ostream& err) {
   const std::optional<ScenarioFile> input = read_scenario(options.name, "draw", err);
   if (!input) return std::nullopt;
   const ParameterSpace space = parameter_space(input->scenario);
   const std::vector<double> values =
       decode(space, std::vector<double>(space.dimensions.size(), 0.5));
-  notes = input->scenario.map.attributes;
-  return load_scenario_map(input->scenario.map,
-                           map_search_path({options.map_paths.begin(), options.map_paths.end()}),
-                           values);
+  ScenarioDrawing drawing{
+      load_scenario_map(input->scenario.map,
+                        map_search_path({options.map_paths.begin(), options.map_paths.end()}),
+                        values),
+      input->scenario.map.attributes,
+      {}};
+  if (!options.svg_path.empty()) {
+    // An actor that cannot be placed is told; the roads are drawn all the same.
+    Diagnostics diagnostics;
+    drawing.marks = scenario_marks(input->scenario, values, drawing.map, diagnostics);
+    err << format_diagnostics(input->file, diagnostics);
+  }
+  return drawing;
 }
 
 void print_roads(const std::vector<Attribute>& notes, std::ostream& out) {
@@ -173,10 +191,14 @@ int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& e
   }
   std::optional<RoadMap> map;
   std::vector<Attribute> notes;
+  std::vector<SvgMark> marks;
   try {
     if (is_scenario_path(options.name)) {
-      map = scenario_map(options, notes, err);
-      if (!map) return kExitBadInput;
+      std::optional<ScenarioDrawing> drawing = scenario_drawing(options, err);
+      if (!drawing) return kExitBadInput;
+      map.emplace(std::move(drawing->map));
+      notes = std::move(drawing->notes);
+      marks = std::move(drawing->marks);
     } else {
       map.emplace(load_map(options.name,
                            map_search_path({options.map_paths.begin(), options.map_paths.end()})));
@@ -192,7 +214,7 @@ int run_map(const MapCommandOptions& options, std::ostream& out, std::ostream& e
   if (!options.svg_path.empty()) {
     SvgOptions svg;
     svg.labels = options.labels;
-    std::string failure = write_file_atomically(options.svg_path, render_map_svg(*map, svg));
+    std::string failure = write_file_atomically(options.svg_path, render_map_svg(*map, svg, marks));
     if (!failure.empty()) {
       err << "scenfuzz: error: " << failure << "\n";
       return kExitBadInput;

@@ -70,6 +70,11 @@ constexpr std::array styles{
     Style{"label",
           "font-family:sans-serif;fill:#0a1a40;text-anchor:middle;"
           "dominant-baseline:central"},
+    Style{"mark-body", "fill:#e05a20;fill-opacity:.85;stroke:#401000;stroke-width:.15"},
+    Style{"mark-front", "stroke:#401000;stroke-width:.25"},
+    Style{"mark-text",
+          "font-family:sans-serif;font-weight:bold;fill:#401000;dominant-baseline:central;"
+          "paint-order:stroke;stroke:#fff;stroke-width:.4"},
 };
 
 std::string_view boundary_class(BoundaryType type) {
@@ -655,6 +660,38 @@ void append_map_drawing(std::string& out, const RoadMap& map, const SvgFrame& fr
   out += "</g>\n";
 }
 
+// Each mark's body (a box at its pose with a tick from its centre to its front) and its text,
+// 14 pixels high, to the body's right as drawn or centred on a mark without a body.
+void append_marks(std::string& out, const SvgFrame& frame, std::span<const SvgMark> marks) {
+  const double font = 14 * frame.metres_per_pixel;
+  for (const SvgMark& mark : marks) {
+    const MapPoint centre = mark.pose.position;
+    const double heading = mark.pose.heading;
+    double text_x = centre.x - frame.origin.x;
+    if (mark.length > 0) {
+      const double half_length = mark.length / 2;
+      const double half_width = mark.width / 2;
+      const std::vector<MapPoint> corners = {offset(centre, heading, half_length, half_width),
+                                             offset(centre, heading, -half_length, half_width),
+                                             offset(centre, heading, -half_length, -half_width),
+                                             offset(centre, heading, half_length, -half_width)};
+      append_polygon(out, frame, "mark-body", corners);
+      const std::vector<MapPoint> tick = {centre, offset(centre, heading, half_length, 0)};
+      append_polyline(out, frame, "mark-front", tick);
+      text_x += std::max(mark.length, mark.width) / 2 + font / 2;
+    }
+    out += "<text class=\"mark-text\" font-size=\"";
+    append_number(out, font, 2);
+    out += mark.length > 0 ? "\" x=\"" : "\" text-anchor=\"middle\" x=\"";
+    append_number(out, text_x, 2);
+    out += "\" y=\"";
+    append_number(out, frame.origin.y - centre.y, 2);
+    out += "\">";
+    append_escaped(out, mark.text);
+    out += "</text>\n";
+  }
+}
+
 }  // namespace
 
 MapBounds SvgFrame::region() const {
@@ -680,7 +717,8 @@ SvgFrame map_svg_frame(const MapBounds& region, double margin, double pixels_per
   return frame;
 }
 
-std::string render_map_svg(const RoadMap& map, const SvgOptions& options) {
+std::string render_map_svg(const RoadMap& map, const SvgOptions& options,
+                           std::span<const SvgMark> marks) {
   const MapBounds bounds = drawing_bounds(map);
   const double extent = std::max({bounds.max.x - bounds.min.x, bounds.max.y - bounds.min.y, 1.0});
   const SvgFrame frame = map_svg_frame(bounds, std::max(5.0, 0.03 * extent),
@@ -693,6 +731,7 @@ std::string render_map_svg(const RoadMap& map, const SvgOptions& options) {
   append_defs(out, true);
   append_background(out, frame);
   append_map_drawing(out, map, frame, options.labels, std::nullopt);
+  append_marks(out, frame, marks);
   append_legend(out, frame, legend);
   out += "</svg>\n";
   return out;

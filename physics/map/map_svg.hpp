@@ -4,11 +4,21 @@
 // of the whole map with a legend, or a layer of another picture (a trace's) showing part of it.
 #pragma once
 
+#include <span>
 #include <string>
 
 #include "physics/map/road_map.hpp"
 
 namespace scenfuzz {
+
+// Something placed on a standalone map: a body's outline with a tick towards its front (an actor
+// where a scenario starts it), or with no body only the text (a road's name).
+struct SvgMark {
+  MapPose pose;
+  double length = 0;  // m; 0: no body
+  double width = 0;   // m
+  std::string text;   // written beside the body, or at the pose
+};
 
 struct SvgOptions {
   bool labels = false;          // write each lane's id at its middle
@@ -32,7 +42,9 @@ struct SvgFrame {
 SvgFrame map_svg_frame(const MapBounds& region, double margin, double pixels_per_metre,
                        double fit_pixels);
 
-std::string render_map_svg(const RoadMap& map, const SvgOptions& options = {});
+// `marks` are drawn over the map.
+std::string render_map_svg(const RoadMap& map, const SvgOptions& options = {},
+                           std::span<const SvgMark> marks = {});
 
 // The roads in `frame`, to draw other things over in the same coordinates: a <defs> block with
 // the styles, the frame's background, then every lane and piece of road furniture whose

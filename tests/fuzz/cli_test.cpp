@@ -664,8 +664,8 @@ Trace trace = EXE(scenario);
 // gives way, also when it is the one that runs into the other.
 TEST_F(CliRunTest, AnOncomingLeftTurnerDrivingIntoTheEgoGoingStraightIsAtFault) {
   const fs::path file = fs::path(SCENFUZZ_TEST_DATA_DIR) / "left_turner_into_ego.sdl";
-  const Outcome run = scenfuzz(
-      {"run", file.string(), "--seed", "1", "--out", (dir_ / "o").string()});
+  const Outcome run =
+      scenfuzz({"run", file.string(), "--seed", "1", "--out", (dir_ / "o").string()});
   ASSERT_NE(run.exit_code, 2) << run.err;
   EXPECT_NE(run.out.find("collision at "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("responsibility: other: the other turned left without giving way to the "
@@ -686,7 +686,18 @@ TEST_F(CliRunTest, MapOfAScenarioFileSaysWhichArmEachRoadBecame) {
   EXPECT_NE(map.out.find("road R3     the south arm (south_in_*, south_out_*)"), std::string::npos)
       << map.out;
   EXPECT_NE(map.out.find("road R1     the west arm"), std::string::npos) << map.out;
-  EXPECT_TRUE(slurp(dir_ / "scenery.svg").ends_with("</svg>\n"));
+  const std::string svg = slurp(dir_ / "scenery.svg");
+  EXPECT_TRUE(svg.ends_with("</svg>\n"));
+  // The picture marks the actors where the run starts them, and the roads' names.
+  EXPECT_NE(svg.find(">Ego (ego)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">Car (FSL of Ego)</text>"), std::string::npos);
+  for (const std::string road : {"R1", "R2", "R3"})
+    EXPECT_NE(svg.find(">" + road + "</text>"), std::string::npos) << road;
+  std::size_t bodies = 0;
+  for (std::size_t at = svg.find("class=\"mark-body\""); at != std::string::npos;
+       at = svg.find("class=\"mark-body\"", at + 1))
+    ++bodies;
+  EXPECT_EQ(bodies, 2u) << "the ego's and the car's";
   const Outcome broken = scenfuzz({"map", write("broken.sdl", "VERSION: 1.0\nnonsense\n")});
   EXPECT_EQ(broken.exit_code, 2);
   EXPECT_NE(broken.err.find("broken.sdl:"), std::string::npos) << broken.err;

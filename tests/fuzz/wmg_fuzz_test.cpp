@@ -1,6 +1,7 @@
 // WMG SDL end to end, through the real executable as a user runs it: every corpora/wmg file (both
-// levels) is searched with the issue's budget of 500 and finishes cleanly; the cut-in yields
-// findings, written as .sdl files that replay to their robustness.
+// levels) is searched with the issue's budget of 500 and finishes cleanly, and its actors meet
+// the ego at the centre of its space; the cut-in yields findings, written as .sdl files that
+// replay to their robustness.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -51,6 +52,22 @@ TEST_F(WmgFuzzTest, EveryCorpusFileIsSearchedToTheEndOfItsBudget) {
     EXPECT_EQ(summary["stop"], "budget") << file;
     EXPECT_GE(summary["judged"].get<int>(), 400) << file << ": most points should simulate";
   }
+}
+
+// Issue 24: at the centre of its space every corpus scenario's actors come near the ego's path
+// (oracle/actor_interaction.hpp); a scenery read otherwise than its author drew it (actors on
+// the wrong arm, an ego held at red for the whole run) fails this first.
+TEST_F(WmgFuzzTest, EveryCorpusScenariosActorsMeetTheEgoAtTheCentreOfItsSpace) {
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(kCorpus)) {
+    if (entry.path().extension() != ".sdl") continue;
+    ++files;
+    const Outcome run = scenfuzz({"run", entry.path().string(), "--at", "mid", "--json"});
+    ASSERT_TRUE(run.exit_code == 0 || run.exit_code == 1) << entry.path() << "\n" << run.err;
+    const nlohmann::json interaction = nlohmann::json::parse(run.out)["interaction"];
+    EXPECT_EQ(interaction["actors_interact"], true) << entry.path() << "\n" << interaction.dump();
+  }
+  EXPECT_GE(files, 10);
 }
 
 TEST_F(WmgFuzzTest, TheCutInYieldsFindingsThatReplay) {
