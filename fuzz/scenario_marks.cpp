@@ -74,6 +74,8 @@ void add_actor_marks(const ScenarioTemplate& scenario, const SimulationSetup& se
   const KinematicState& ego = setup.ego_initial;
   marks.push_back(SvgMark{MapPose{{ego.x, ego.y}, ego.heading}, setup.ego_body.length,
                           setup.ego_body.width, scenario.ego.name + " (ego)"});
+  if (setup.ego_target)
+    marks.push_back(SvgMark{*setup.ego_target, 0, 0, scenario.ego.name + "'s target"});
   for (const ScriptedActor& actor : setup.actors) {
     const KinematicState start = actor.trajectory.state_at(0);
     const Actor* written = actor_named(scenario, actor.name);

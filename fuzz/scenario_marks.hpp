@@ -1,7 +1,7 @@
 // What `scenfuzz map FILE --svg` marks on a scenario's map, so that its author can see at once
 // whether the file's scenery and actors came out where they meant them: every actor's body where
-// the scenario starts it (named, with the sector it was placed in), and each WMG road's name on
-// the arm or road it became.
+// the scenario starts it (named, with the sector it was placed in), the ego's target, and each
+// WMG road's name on the arm or road it became.
 #pragma once
 
 #include <span>

@@ -107,6 +107,7 @@ ScenarioTemplate translate_level2(const Level2File& file, Diagnostics& diagnosti
   if (!diagnostics.has_errors()) {
     translate_dynamics(file.dynamics, translation);
     choose_first_green(file.dynamics, translation);
+    choose_ego_exit(file.scenery, file.dynamics, translation);
   }
   translate_environment(file.environment, translation);
   if (file.traffic && !diagnostics.has_errors()) translate_traffic(*file.traffic, translation);

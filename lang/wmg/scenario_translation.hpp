@@ -63,6 +63,9 @@ void translate_environment(const Environment& environment, Translation& translat
 // A signalised crossroads' first green: the approach of the first light a WHEN names green (the
 // crossing one for red), else the ego's.
 void choose_first_green(const Dynamics& dynamics, Translation& translation);
+// The ego's destination: the first lane connection written from its lane, when the junction has
+// one (WMG gives the ego no other).
+void choose_ego_exit(const Scenery& scenery, const Dynamics& dynamics, Translation& translation);
 // Background traffic flows.
 void translate_traffic(const TrafficModel& traffic, Translation& translation);
 

@@ -243,6 +243,30 @@ TEST(WmgTranslationTest, TheFirstGreenGoesToTheLightAWhenNamesGreenElseToTheEgos
   }
 }
 
+// The ego leaves the junction by the first lane connection written from its lane, to the out lane
+// of the number written; an ego in a lane no connection leaves from has no target.
+TEST(WmgTranslationTest, TheEgoLeavesTheJunctionByTheFirstConnectionFromItsLane) {
+  Parts parts;
+  parts.scenery = crossroads_scenery();
+  ASSERT_NE(parts.scenery.find("Road lane connections [R1.L1 -> R3.L1]"), std::string::npos)
+      << parts.scenery;
+  for (const std::string lane : {"R1.L1", "R3.L1"}) {
+    SCOPED_TRACE(lane);
+    parts.dynamics = "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [" + lane +
+                     "]\nWHEN: [Ego] is [Going Ahead]\nDO: AUTO\nEND\n";
+    ParseResult result = parse_ok(parts.text());
+    const std::optional<State>& target = result.scenario.ego.target;
+    if (lane == "R3.L1") {
+      EXPECT_FALSE(target.has_value());
+      continue;
+    }
+    ASSERT_TRUE(target.has_value());
+    EXPECT_EQ(target->position.kind, PositionKind::lane);
+    EXPECT_EQ(target->position.lane, "east_out_0");  // R3, the east arm
+    EXPECT_EQ(at(target->position.s, {}), 20.0);
+  }
+}
+
 // `[Walk_Cross] [R2, ...]`: the phase carries every lane the map generates for R2 (the south
 // arm); a road the scenery does not have is an error at its name.
 TEST(WmgTranslationTest, APhaseNamingARoadCarriesThatRoadsLanes) {
