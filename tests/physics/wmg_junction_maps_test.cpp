@@ -134,35 +134,55 @@ TEST(WmgJunctionMaps, TheSampledAngleTurnsTheTJunctionsSideRoad) {
   EXPECT_EQ(map.stop_sign_count(), 1u);
 }
 
+// A right-angled T-junction (R1, R2 through, R3 the stem) with `dynamics`, set up at the centre
+// of its space.
+struct TJunction {
+  explicit TJunction(const std::string& dynamics)
+      : text(with_dynamics(dynamics)),
+        result(parse_ok(text)),
+        values(midpoint(result.scenario)),
+        map(map_at(result.scenario, values)),
+        setup(prepare_simulation(result.scenario, values, map, 1, diagnostics)) {}
+
+  static std::string with_dynamics(const std::string& dynamics) {
+    std::string text = junction_file(
+        "T-Junction", 3, "[R1 -> R2, R2 -> R3]\n[170 to 190, 80 to 100]", "Width: 10, Depth: 10");
+    const std::string placeholder = wmg::test::Parts{}.dynamics;
+    EXPECT_NE(text.find(placeholder), std::string::npos);
+    return text.replace(text.find(placeholder), placeholder.size(), dynamics);
+  }
+  std::string told() const { return format_diagnostics(SourceFile("t.sdl", text), diagnostics); }
+
+  std::string text;
+  wmg::ParseResult result;
+  std::vector<double> values;
+  RoadMap map;
+  Diagnostics diagnostics;
+  std::optional<SimulationSetup> setup;
+};
+
 // Issue 24: a vehicle whose relative heading runs against the lane it is placed on (here -90 to
 // the ego driving north on the stem: east-bound, on the east arm's west-bound in lane) would start
 // backwards in its lane; it takes the lane's direction, and the file is told. A pedestrian crosses
 // as written.
 TEST(WmgJunctionMaps, AVehicleHeadedAgainstItsLaneTakesTheLanesDirectionWithAWarning) {
-  std::string text = junction_file("T-Junction", 3, "[R1 -> R2, R2 -> R3]\n[170 to 190, 80 to 100]",
-                                   "Width: 10, Depth: 10");
-  const std::string dynamics = wmg::test::Parts{}.dynamics;
-  ASSERT_NE(text.find(dynamics), std::string::npos);
-  text.replace(text.find(dynamics), dynamics.size(),
-               "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R3.L1]\n"
-               "AND Vehicle [Car] in [R1.L1] with a [Longitudinal] offset of [10] AND at relative "
-               "position [FSR] with relative heading angle [-90] to [Ego]\n"
-               "AND Pedestrian [Walker] in [R3.L2] with a [Longitudinal] offset of [10] AND at "
-               "relative position [FSL] with relative heading angle [-90] to [Ego]\n"
-               "WHEN: [Ego] is [Going Ahead]\nDO: AUTO\nEND\n");
-  wmg::ParseResult result = parse_ok(text);
-  const std::vector<double> values = midpoint(result.scenario);
-  const RoadMap map = map_at(result.scenario, values);
-  Diagnostics diagnostics;
-  const auto setup = prepare_simulation(result.scenario, values, map, 1, diagnostics);
-  ASSERT_TRUE(setup) << format_diagnostics(SourceFile("t.sdl", text), diagnostics);
+  const TJunction t(
+      "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R3.L1]\n"
+      "AND Vehicle [Car] in [R1.L1] with a [Longitudinal] offset of [10] AND at relative "
+      "position [FSR] with relative heading angle [-90] to [Ego]\n"
+      "AND Pedestrian [Walker] in [R3.L2] with a [Longitudinal] offset of [10] AND at "
+      "relative position [FSL] with relative heading angle [-90] to [Ego]\n"
+      "WHEN: [Ego] is [Going Ahead]\nDO: AUTO\nEND\n");
+  const std::optional<SimulationSetup>& setup = t.setup;
+  const RoadMap& map = t.map;
+  ASSERT_TRUE(setup) << t.told();
   ASSERT_EQ(setup->actors.size(), 2u);
   const KinematicState car = setup->actors[0].trajectory.state_at(0);
   const auto lane = project_to_lane(map, {car.x, car.y}, car.heading);
   ASSERT_TRUE(lane);
   EXPECT_EQ(map.lane(lane->lane).id, "east_in_0");  // FSR of the ego on the stem
   EXPECT_NEAR(car.heading, map.lane(lane->lane).centre_line.heading_at(lane->s), 1e-9);
-  const std::string told = format_diagnostics(SourceFile("t.sdl", text), diagnostics);
+  const std::string told = t.told();
   EXPECT_NE(told.find("warning: Car's heading (0 deg) runs 180 deg against the direction of the "
                       "lane it is placed on (180 deg); it takes the lane's"),
             std::string::npos)
@@ -175,28 +195,18 @@ TEST(WmgJunctionMaps, AVehicleHeadedAgainstItsLaneTakesTheLanesDirectionWithAWar
 // short of the junction, crosses the arm it stands on when the phase names the ego; named R3
 // (the stem, running north-south), it walks east, across the stem's lanes.
 TEST(WmgJunctionMaps, AWalkCrossCrossesTheRoadItNames) {
-  const std::string scenery = junction_file(
-      "T-Junction", 3, "[R1 -> R2, R2 -> R3]\n[170 to 190, 80 to 100]", "Width: 10, Depth: 10");
-  const std::string dynamics = wmg::test::Parts{}.dynamics;
   for (const std::string target : {"Ego", "R3"}) {
     SCOPED_TRACE(target);
-    std::string text = scenery;
-    text.replace(text.find(dynamics), dynamics.size(),
-                 "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R1.L1]\n"
-                 "AND Pedestrian [Walker] in [R1.L1] with a [Longitudinal] offset of [40] AND at "
-                 "relative position [F] with relative heading angle [0] to [Ego]\n"
-                 "WHEN: [Ego] is [Going Ahead]\nDO: [Walker]\n"
-                 "PHASE 1: [Walk_Cross] [" +
-                     target + ", 5, 20] [Ego: 10, F]\nEND\n");
-    wmg::ParseResult result = parse_ok(text);
-    const std::vector<double> values = midpoint(result.scenario);
-    const RoadMap map = map_at(result.scenario, values);
-    Diagnostics diagnostics;
-    const auto setup = prepare_simulation(result.scenario, values, map, 1, diagnostics);
-    ASSERT_TRUE(setup) << format_diagnostics(SourceFile("t.sdl", text), diagnostics);
+    const TJunction t(
+        "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R1.L1]\n"
+        "AND Pedestrian [Walker] in [R1.L1] with a [Longitudinal] offset of [40] AND at "
+        "relative position [F] with relative heading angle [0] to [Ego]\n"
+        "WHEN: [Ego] is [Going Ahead]\nDO: [Walker]\nPHASE 1: [Walk_Cross] [" +
+        target + ", 5, 20] [Ego: 10, F]\nEND\n");
+    ASSERT_TRUE(t.setup) << t.told();
     SimulationOptions options;
     options.duration = 3;
-    const Trace trace = simulate(map, *setup, options);
+    const Trace trace = simulate(t.map, *t.setup, options);
     const TraceActor& walker = trace.actors[*trace.find_actor("Walker")];
     const double heading = walker.heading.back() * 180 / std::numbers::pi;
     if (target == "Ego") {
