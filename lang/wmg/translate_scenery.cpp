@@ -267,6 +267,11 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
           road.id.location,
           "road '" + road.id.name + "' is not connected to junction '" + junction.id.name + "'");
   if (translation.diagnostics.has_errors()) return;
+  // Every lane a connection names is one its road lists (the ego's exit reads them).
+  for (const LaneConnection& connection : junction.lane_connections) {
+    translation.lane_id(connection.from);
+    for (const LaneName& to : connection.to) translation.lane_id(to);
+  }
 
   // The first road stands for every arm: the generators give all arms one width and length.
   const bool roundabout = map->name == "roundabout";

@@ -145,7 +145,7 @@ TEST(WmgJunctionArmsTest, AnglesNoJunctionCanHaveAreAnErrorAtThem) {
             std::string::npos);
 }
 
-TEST(WmgJunctionArmsTest, APairOrConnectionNamingAnotherRoadIsAnErrorAtIt) {
+TEST(WmgJunctionArmsTest, APairOrConnectionNamingAnotherRoadOrAnUnlistedLaneIsAnErrorAtIt) {
   const std::string pair = junction_file("T-Junction", "R1, R2, R3", "R1 -> R9", "180");
   EXPECT_NE(first_error(pair).find("the angle pair names road 'R9', which junction 'J1' does "
                                    "not connect"),
@@ -155,6 +155,10 @@ TEST(WmgJunctionArmsTest, APairOrConnectionNamingAnotherRoadIsAnErrorAtIt) {
       junction_file("T-Junction", "R1, R2, R3", "R1 -> R2", "180", "R3.L1 -> R7.L1");
   EXPECT_NE(first_error(connection).find("the lane connection names road 'R7'"), std::string::npos)
       << first_error(connection);
+  // A lane its road does not list.
+  const std::string lane =
+      junction_file("T-Junction", "R1, R2, R3", "R1 -> R2", "180", "R3.L1 -> R1.L5");
+  EXPECT_NE(first_error(lane).find("unknown lane 'R1.L5'"), std::string::npos) << first_error(lane);
 }
 
 }  // namespace
