@@ -1,6 +1,6 @@
 // Marks for a scenario's map picture: actors from the simulation's own setup (so the picture
 // shows what a run starts with, not a second reading of the file), roads from the notes the WMG
-// translation keeps on the map ("road R3" -> "the south arm (south_in_*, south_out_*)").
+// translation keeps on the map ("road R3" -> "the south arm (R3.L1 south_in_0, ...)").
 #include "fuzz/scenario_marks.hpp"
 
 #include "physics/simulation/scenario_setup.hpp"
@@ -8,7 +8,8 @@
 namespace scenfuzz {
 namespace {
 
-// The lane-id prefixes in a road note's parentheses: "(south_in_*, south_out_*)".
+// The lane-id prefixes in a road note's parentheses: "(south_in_*, south_out_*)", or the lanes
+// it names where the junction's connections said which way each runs: "(R3.L1 south_in_0, ...)".
 std::vector<std::string> lane_prefixes(const std::string& note) {
   std::vector<std::string> prefixes;
   const std::size_t open = note.find('(');
@@ -20,8 +21,9 @@ std::vector<std::string> lane_prefixes(const std::string& note) {
     std::size_t end = list.find(',', start);
     if (end == std::string::npos) end = list.size();
     std::string item = list.substr(start, end - start);
-    while (!item.empty() && item.front() == ' ') item.erase(item.begin());
-    if (item.ends_with('*')) prefixes.push_back(item.substr(0, item.size() - 1));
+    item = item.substr(item.rfind(' ') + 1);  // the map's lane id, after a written lane name
+    if (item.ends_with('*')) item.pop_back();
+    if (!item.empty()) prefixes.push_back(item);
     start = end + 1;
   }
   return prefixes;

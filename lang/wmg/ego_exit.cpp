@@ -38,11 +38,12 @@ void choose_ego_exit(const Scenery& scenery, const Dynamics& dynamics, Translati
   const LaneConnection* connection = connection_from(scenery.junctions.front(), *lane);
   if (!connection) return;
   const LaneName& exit = connection->to.front();
-  // `Rn.Lk` names the arm's in lane; the ego leaves the junction by its out lane of that number.
+  // A lane a connection leads to is an out lane (lane_directions.cpp); where the map names it as
+  // an in lane all the same (a pavement), the ego leaves by the out lane of that number.
   std::string id = translation.lane_id(exit).value_or("");
-  const std::string::size_type in = id.rfind("_in_");
-  if (in == std::string::npos) return;
-  id.replace(in, 4, "_out_");
+  if (id.empty()) return;
+  if (const std::string::size_type in = id.rfind("_in_"); in != std::string::npos)
+    id.replace(in, 4, "_out_");
   State target;
   target.position.kind = PositionKind::lane;
   target.position.lane = id;

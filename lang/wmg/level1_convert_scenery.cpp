@@ -27,16 +27,24 @@ bool has_feature(const RoadPlan& road, std::string_view feature) {
                      [&](const Label& label) { return !label.is_string && label.text == feature; });
 }
 
-std::vector<LaneConnection> lane_connections(const JunctionSentence& junction) {
+// Into the junction by a road's L1, out of it by L2 where the road has two lanes or more (level
+// 2 reads a lane's direction from the connections, lane_directions.cpp).
+std::string exit_lane(const ConversionPlan& plan, const std::string& road) {
+  const RoadPlan* found = plan.road(road);
+  return found && found->lane_count >= 2 ? "L2" : "L1";
+}
+
+std::vector<LaneConnection> lane_connections(const ConversionPlan& plan,
+                                             const JunctionSentence& junction) {
   std::vector<LaneConnection> connections;
   auto connect = [&](const Identifier& from, const Identifier& to, SourceLocation where) {
+    LaneName exit = lane(to.name, exit_lane(plan, to.name), to.location);
     for (LaneConnection& existing : connections)
       if (existing.from.road.name == from.name) {
-        existing.to.push_back(lane(to.name, "L1", to.location));
+        existing.to.push_back(exit);
         return;
       }
-    connections.push_back(LaneConnection{
-        lane(from.name, "L1", from.location), {lane(to.name, "L1", to.location)}, where});
+    connections.push_back(LaneConnection{lane(from.name, "L1", from.location), {exit}, where});
   };
   for (const ConnectionSentence& connection : junction.connections)
     connect(connection.from, connection.to, connection.location);
@@ -73,7 +81,7 @@ Junction convert_junction(const ConversionPlan& plan, const JunctionSentence& se
     junction.angle_pairs.push_back(RoadPair{from, to, from.location});
     junction.angles.push_back(table_range(angle, sentence.type.location));
   }
-  junction.lane_connections = lane_connections(sentence);
+  junction.lane_connections = lane_connections(plan, sentence);
   const QualitativeDefault& size = default_for(Quality::junction_size, words, "named junction");
   NumberRange extent = table_range(size, sentence.type.location);
   if (size.label == "Diameter") {

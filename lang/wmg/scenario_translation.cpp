@@ -49,6 +49,7 @@ std::optional<std::string> Translation::lane_id(const LaneName& lane) {
                                          "' does not list it in its Number of lanes");
     return std::nullopt;
   }
+  if (auto id = road->second.ids.find(written); id != road->second.ids.end()) return id->second;
   int number = 0;
   for (char c : name.substr(1)) number = number * 10 + (c - '0');
   if (number < 1 || number > road->second.traffic_lanes) {

@@ -20,6 +20,9 @@ struct RoadLanes {
   std::string lane_prefix;         // lane k is `<lane_prefix><k-1>`: "east_", "fwd_", "west_in_"
   int traffic_lanes = 0;           // lanes L1..Ln the map generates for this road
   std::set<std::string> declared;  // lane names written in "Number of lanes [n] as [...]"
+  // `Rn.Lk` to its map lane where the junction's connections say which way each lane runs
+  // (lane_directions.cpp); empty elsewhere, where lane k is `<lane_prefix><k-1>`.
+  std::map<std::string, std::string> ids;
 
   // Every lane the map generates for the road: a junction arm's in and out lanes.
   std::vector<std::string> map_lanes() const;
@@ -66,6 +69,11 @@ void choose_first_green(const Dynamics& dynamics, Translation& translation);
 // The ego's destination: the first lane connection written from its lane, when the junction has
 // one (WMG gives the ego no other).
 void choose_ego_exit(const Scenery& scenery, const Dynamics& dynamics, Translation& translation);
+// Names each traffic lane of a junction's roads (`roads[i]` on arm `arms[i]`, null for a road the
+// scenery lacks) as an in or out lane of its arm by the junction's lane connections, and returns
+// the lanes each way the map needs.
+int name_junction_lanes(const Junction& junction, const std::vector<const Road*>& roads,
+                        const std::vector<std::string>& arms, Translation& translation);
 // Background traffic flows.
 void translate_traffic(const TrafficModel& traffic, Translation& translation);
 

@@ -133,8 +133,9 @@ void translate_environment(const Environment& environment, Translation& translat
   }
 }
 
-// A flow's destination: at a junction, `Rn.Lk` names the arm's in lane (lane_id), but traffic
-// bound for another road leaves the junction on it, by the arm's out lane of the same number. A
+// A flow's destination: at a junction traffic bound for another road leaves the junction on it,
+// by the lane written where the connections make it an out lane (lane_directions.cpp), else by
+// the arm's out lane of the same number. A
 // flow to its own origin (level 1's "traffic on R1") has no destination: it drives on along the
 // lanes' successors.
 std::string destination_lane_id(const TrafficFlow& flow, Translation& translation) {

@@ -198,6 +198,20 @@ void add_crossing_angle(const Junction& junction, const ArmLayout& layout,
                     where);
 }
 
+// Which arm each road became and which map lane each of its lanes, for `scenfuzz map FILE` to
+// say: "the west arm (R1.L1 west_in_0, R1.L2 west_out_0)".
+void add_arm_notes(const Junction& junction, const std::vector<std::string>& arms,
+                   Translation& translation) {
+  for (std::size_t i = 0; i < junction.connected_roads.size() && i < arms.size(); ++i) {
+    const Identifier& road = junction.connected_roads[i];
+    std::string names;
+    for (const auto& [written, id] : translation.roads.at(road.name).ids)
+      names += (names.empty() ? "" : ", ") + written + " " + id;
+    translation.scenario.map.attributes.push_back(
+        Attribute{"road " + road.name, "the " + arms[i] + " arm (" + names + ")", road.location});
+  }
+}
+
 void translate_junction(const Junction& junction, const std::vector<Road>& roads,
                         const Initialisation& initialisation, Translation& translation) {
   const std::string prefix = junction.id.name + ".";
@@ -239,27 +253,21 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
   const std::optional<ArmLayout> layout =
       lay_out_arms(junction, map->name, initialisation, translation.diagnostics);
   if (!layout) return;
-  int lanes = 0;
+  std::vector<const Road*> arm_roads;
   for (std::size_t i = 0; i < junction.connected_roads.size(); ++i) {
     const Identifier& id = junction.connected_roads[i];
     const Road* road = nullptr;
     for (const Road& candidate : roads)
       if (candidate.id.name == id.name) road = &candidate;
+    arm_roads.push_back(road);
     if (!road) {
       translation.diagnostics.error(id.location, "junction '" + junction.id.name +
                                                      "' connects road '" + id.name +
                                                      "', which is not in the scenery");
       continue;
     }
-    const int road_lanes = map->name == "roundabout" ? 1 : traffic_lane_count(*road);
-    lanes = std::max(lanes, traffic_lane_count(*road));
-    declare_lanes(*road, layout->arms[i] + "_in_", road_lanes, translation);
-    // Which arm each road became, for `scenfuzz map FILE` to say.
-    translation.scenario.map.attributes.push_back(Attribute{"road " + id.name,
-                                                            "the " + layout->arms[i] + " arm (" +
-                                                                layout->arms[i] + "_in_*, " +
-                                                                layout->arms[i] + "_out_*)",
-                                                            id.location});
+    // Which way each lane runs, and so how many lanes the arm has, name_junction_lanes says.
+    declare_lanes(*road, layout->arms[i] + "_in_", traffic_lane_count(*road), translation);
   }
   for (const Road& road : roads)
     if (!translation.roads.contains(road.id.name))
@@ -267,10 +275,20 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
           road.id.location,
           "road '" + road.id.name + "' is not connected to junction '" + junction.id.name + "'");
   if (translation.diagnostics.has_errors()) return;
+  const int lanes = name_junction_lanes(junction, arm_roads, layout->arms, translation);
+  add_arm_notes(junction, layout->arms, translation);
   // Every lane a connection names is one its road lists (the ego's exit reads them).
   for (const LaneConnection& connection : junction.lane_connections) {
     translation.lane_id(connection.from);
     for (const LaneName& to : connection.to) translation.lane_id(to);
+  }
+  if (translation.diagnostics.has_errors()) return;
+  if (map->name == "roundabout" && lanes > 1) {
+    translation.diagnostics.error(junction.lane_connections.front().location,
+                                  "the roundabout map has one lane each way on every arm, but "
+                                  "these connections and the roads' lanes need " +
+                                      std::to_string(lanes) + " lanes one way");
+    return;
   }
 
   // The first road stands for every arm: the generators give all arms one width and length.

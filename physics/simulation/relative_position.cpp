@@ -67,6 +67,29 @@ std::optional<MapPose> on_named_side(const RoadMap& map, LaneIndex written, MapP
   return lane_pose_at(map, *outermost, outermost_s, sign * facing * std::abs(lateral));
 }
 
+bool enters_junction(const RoadMap& map, LaneIndex lane) {
+  const Lane& own = map.lane(lane);
+  return !own.junction && !own.successors.empty() &&
+         std::all_of(own.successors.begin(), own.successors.end(),
+                     [&](LaneIndex next) { return map.lane(next).junction.has_value(); });
+}
+
+bool leaves_junction(const RoadMap& map, LaneIndex lane) {
+  const Lane& own = map.lane(lane);
+  return !own.junction && !own.predecessors.empty() &&
+         std::all_of(own.predecessors.begin(), own.predecessors.end(),
+                     [&](LaneIndex previous) { return map.lane(previous).junction.has_value(); });
+}
+
+// The actor's arc length on `actor`, `offset` ahead of the reference's lane position (see the
+// caller).
+double lane_s_for(const RoadMap& map, const LaneProjection& reference, LaneIndex actor,
+                  double offset) {
+  if (enters_junction(map, reference.lane) && leaves_junction(map, actor))
+    return map.lane(reference.lane).length() - reference.s - offset;
+  return reference.s + offset;
+}
+
 }  // namespace
 
 std::optional<MapPose> place_relative(const RoadMap& map, const Position& position,
@@ -97,10 +120,6 @@ std::optional<MapPose> place_relative(const RoadMap& map, const Position& positi
     if (side == SectorSide::right && !own.right_forward_neighbours.empty())
       lane = own.right_forward_neighbours.front();
   }
-  // The reference's lane position carried over to the actor's lane: the same arc length, which
-  // for lanes of one road (they start together) is the place beside the reference, and for a
-  // lane of another arm of a junction the same distance from where the arms begin.
-  const double reference_s = reference_lane->s;
   const double offset = evaluate(position.s, values);
   const double lateral = position.lateral ? evaluate(*position.lateral, values) : 0.0;
   if (!std::isfinite(offset) || !std::isfinite(lateral)) {
@@ -108,7 +127,13 @@ std::optional<MapPose> place_relative(const RoadMap& map, const Position& positi
                       actor + "'s offsets from " + position.reference + " are not finite numbers");
     return std::nullopt;
   }
-  const double s = reference_s + offset;
+  // The reference's lane position carried over to the actor's lane: the same arc length, which
+  // for lanes of one road (they start together) is the place beside the reference, and for a
+  // lane of another arm of a junction the same distance from where the arms begin. A lane
+  // leading out of the junction the reference drives into counts from the junction: the same
+  // distance from it (beside the reference on its own road's oncoming lane, as far past the
+  // junction as the reference is before it on another arm's).
+  const double s = lane_s_for(map, *reference_lane, lane, offset);
   const double length = map.lane(lane).length();
   if (s < 0 || s > length) {
     diagnostics.error(position.location, actor + "'s position, " + format_number(offset) +

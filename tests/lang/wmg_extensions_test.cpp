@@ -167,10 +167,11 @@ TEST(WmgFlows, TheCorpusFlowIsSearchedWithoutAWarning) {
   ASSERT_NE(speed, nullptr);
   EXPECT_EQ(speed->lower, 30);
   EXPECT_EQ(speed->upper, 48);
-  // From R4 (north) into the junction, out on R2 (south): the destination is R2's out lane.
+  // From R4.L2 (north, into the junction by R4.L2 -> R2.L2) out on R2.L2, the south arm's out
+  // lane: one lane each way.
   ASSERT_EQ(result.scenario.traffic.flows.size(), 1u);
-  EXPECT_EQ(result.scenario.traffic.flows[0].source_lane, "north_in_1");
-  EXPECT_EQ(result.scenario.traffic.flows[0].destination_lane, "south_out_1");
+  EXPECT_EQ(result.scenario.traffic.flows[0].source_lane, "north_in_0");
+  EXPECT_EQ(result.scenario.traffic.flows[0].destination_lane, "south_out_0");
 }
 
 TEST(WmgFlows, RateAndSpeedOutsideWhatTheyMeanAreErrorsAtTheirText) {

@@ -19,7 +19,7 @@ using test::road_text;
 // [pairs] [angles]", and the ego in R3.L1.
 std::string junction_file(const std::string& type, const std::string& connected,
                           const std::string& pairs, const std::string& angles,
-                          const std::string& lane_connections = "R3.L1 -> R1.L1",
+                          const std::string& lane_connections = "R3.L1 -> R2.L1",
                           const std::string& car_sector = "FSL") {
   std::string roads;
   for (int r = 1; r <= 3; ++r) {
@@ -104,15 +104,15 @@ TEST(WmgJunctionArmsTest, WhereTheAnglesLeaveAChoiceActorsStandOnTheSideTheirSec
   const std::string pairs = "R1 -> R2, R2 -> R3";
   const std::string angles = "170 to 190, 80 to 100";
   const Layout right =
-      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R1.L1", "FSR"));
+      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R2.L1", "FSR"));
   EXPECT_EQ(right.ego_lane, "south_in_0");
   EXPECT_EQ(right.car_lane, "east_in_0");
   const Layout left =
-      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R1.L1", "SL"));
+      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R2.L1", "SL"));
   EXPECT_EQ(left.car_lane, "west_in_0");
   // The angles come first: a car "ahead" on a road the angles put beside the stem stays there.
   const Layout ahead =
-      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R1.L1", "F"));
+      layout_of(junction_file("T-Junction", "R1, R2, R3", pairs, angles, "R3.L1 -> R2.L1", "F"));
   EXPECT_EQ(ahead.ego_lane, "south_in_0");
   EXPECT_EQ(ahead.car_lane, "west_in_0");
 }

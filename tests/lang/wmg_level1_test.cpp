@@ -546,6 +546,10 @@ TEST(WmgLevel1Conversion, CrossroadWithTrafficLights) {
   EXPECT_EQ(junction.lane_connections[0].from.road.name, "R1");
   ASSERT_EQ(junction.lane_connections[0].to.size(), 2u);
   EXPECT_EQ(junction.lane_connections[0].to[1].road.name, "R2");
+  // Into the junction by L1, out of it by L2 (a minor road is one lane each way).
+  EXPECT_EQ(junction.lane_connections[0].from.lane.name, "L1");
+  EXPECT_EQ(junction.lane_connections[0].to[0].lane.name, "L2");
+  EXPECT_EQ(junction.lane_connections[0].to[1].lane.name, "L2");
   expect_range(*junction.dimensions.width, 15, 25);
   expect_range(*junction.dimensions.depth, 15, 25);
   EXPECT_FALSE(junction.dimensions.diameter.has_value());

@@ -144,5 +144,68 @@ TEST(WmgCorpusPlacement, EveryActorStartsOnItsLaneInTheSectorItsFileNames) {
   EXPECT_GE(relative, 20);
 }
 
+// A T-junction (R1 west, R2 east, the stem R3 south; two lanes a road, one each way by the
+// connections) with the ego 30 m along R3.L1 and a car in `car_lane` at `sector`, 30 m ahead.
+std::string junction_with_car(const std::string& car_lane, const std::string& sector) {
+  std::string roads;
+  for (int r = 1; r <= 3; ++r) {
+    const std::string id = "R" + std::to_string(r);
+    roads += wmg::test::road_text(
+        id, 2, "Horizontal road geometry [Straight]", "Length [100] AND Lane width [3.5]",
+        r == 1 ? "START" : "START: [J1]", r == 1 ? "END: [J1]" : "END", "48");
+  }
+  wmg::test::Parts parts;
+  parts.scenery = wmg::test::scenery_with_roads(
+      roads,
+      "\nJ1: Junction type [T-Junction] as [T1]\nwhich has [Give way] connection control and [3] "
+      "connections with [R1, R2, R3]\nAngles between roads [R1 -> R2, R2 -> R3] [180, 90]\n"
+      "Road lane connections [R3.L1 -> R1.L2 + R2.L1, R1.L1 -> R2.L1 + R3.L2, R2.L2 -> R1.L2 + "
+      "R3.L2]\nDimensions [Width: 10, Depth: 10]\n");
+  parts.dynamics = "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R3.L1]\nAND Vehicle [Car] in [" +
+                   car_lane + "] with a [Longitudinal] offset of [30] AND at relative position [" +
+                   sector +
+                   "] with relative heading angle [0] to [Ego]\nWHEN: [Ego] is [Going "
+                   "Ahead]\nDO: AUTO\nEND\n";
+  return parts.text();
+}
+
+// The car's pose and the ego's, as the simulation starts them.
+std::pair<Pose, Pose> car_and_ego(const std::string& text) {
+  SourceFile file("t.sdl", text);
+  const wmg::ParseResult result = wmg::parse(file);
+  EXPECT_TRUE(result.ok()) << format_diagnostics(file, result.diagnostics);
+  const std::vector<double> values = test::corner_points(result.scenario).at(1);
+  const RoadMap map = load_scenario_map(result.scenario.map, map_search_path({}), values);
+  Diagnostics diagnostics;
+  const auto setup = prepare_simulation(result.scenario, values, map, 1, diagnostics);
+  EXPECT_TRUE(setup) << format_diagnostics(file, diagnostics);
+  if (!setup) return {};
+  const std::map<std::string, Placed> placed = placed_actors(result.scenario, *setup);
+  return {placed.at("Car").pose, placed.at("Ego").pose};
+}
+
+// A lane out of the junction the reference drives into counts from the junction: on the oncoming
+// lane of the reference's own road the actor stands beside it, offset ahead; on another arm's it
+// stands as far past the junction as the reference plus the offset is before it.
+TEST(WmgCorpusPlacement, AnActorOnALaneOutOfTheJunctionCountsItsPlaceFromTheJunction) {
+  {
+    SCOPED_TRACE("R3.L2, the oncoming lane of the ego's road");
+    const auto [car, ego] = car_and_ego(junction_with_car("R3.L2", "FSL"));
+    const InFrame where = in_frame(ego, car);
+    EXPECT_NEAR(where.ahead, 30, 0.05);
+    EXPECT_NEAR(where.left, 3.5, 0.05);
+    EXPECT_NEAR(std::cos(car.heading - ego.heading), -1, 1e-6);  // oncoming
+  }
+  {
+    SCOPED_TRACE("R1.L2, the lane the ego turns left into");
+    const auto [car, ego] = car_and_ego(junction_with_car("R1.L2", "FSL"));
+    // The junction is at the origin: the ego drives north towards it, the car west away from it.
+    const double ego_before = -ego.y;
+    const double car_past = -car.x;
+    EXPECT_NEAR(std::cos(car.heading), -1, 1e-6);
+    EXPECT_NEAR(ego_before - car_past, 30, 0.05);
+  }
+}
+
 }  // namespace
 }  // namespace scenfuzz

@@ -104,7 +104,7 @@ TEST(WmgJunctionMaps, TheSampledAngleTurnsTheCrossroadsCrossingRoad) {
     RoadMap map = map_at(scenario, values);
     // R2 is the south arm: its traffic heads `sampled` degrees from east, towards the centre.
     auto south_in = map.find_lane("south_in_0");
-    auto north_out = map.find_lane("north_out_1");
+    auto north_out = map.find_lane("north_out_0");
     auto west_in = map.find_lane("west_in_0");
     ASSERT_TRUE(south_in && north_out && west_in);
     EXPECT_NEAR(heading_degrees(map.lane(*south_in).centre_line, 0), sampled, 1e-9);
@@ -128,7 +128,7 @@ TEST(WmgJunctionMaps, TheSampledAngleTurnsTheTJunctionsSideRoad) {
   std::vector<double> values = midpoint(scenario);
   values[parameter_index(scenario, "J1.angle.R1_R2")] = 83;
   RoadMap map = map_at(scenario, values);
-  auto side_road = map.find_lane("south_in_1");
+  auto side_road = map.find_lane("south_in_0");
   ASSERT_TRUE(side_road);
   EXPECT_NEAR(heading_degrees(map.lane(*side_road).centre_line, 0), 83, 1e-9);
   EXPECT_EQ(map.stop_sign_count(), 1u);
