@@ -50,6 +50,15 @@ struct RoadOutline {
   bool operator==(const RoadOutline&) const = default;
 };
 
+// A way through a junction the scenario says the map has (WMG's `Road lane connections`): from a
+// lane into the junction to a lane out of it, as the map's lane ids.
+struct LaneLink {
+  std::string from, to;
+  SourceLocation location;  // the lane `to`, as written
+
+  bool operator==(const LaneLink&) const = default;
+};
+
 // The map: a name (built-in parametric map, Apollo map, or path) and, for languages that describe
 // roads by ranges, parameters that make the map itself part of the search space.
 struct MapReference {
@@ -57,6 +66,7 @@ struct MapReference {
   std::vector<NamedValue> parameters;
   std::vector<Attribute> attributes;
   std::vector<RoadOutline> roads;
+  std::vector<LaneLink> links;
   SourceLocation location;
 
   bool operator==(const MapReference&) const = default;

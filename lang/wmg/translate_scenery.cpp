@@ -277,10 +277,15 @@ void translate_junction(const Junction& junction, const std::vector<Road>& roads
   if (translation.diagnostics.has_errors()) return;
   const int lanes = name_junction_lanes(junction, arm_roads, layout->arms, translation);
   add_arm_notes(junction, layout->arms, translation);
-  // Every lane a connection names is one its road lists (the ego's exit reads them).
+  // Every lane a connection names is one its road lists (the ego's exit reads them), and each
+  // connection between traffic lanes is a way the map must have (physics/simulation/lane_links).
   for (const LaneConnection& connection : junction.lane_connections) {
-    translation.lane_id(connection.from);
-    for (const LaneName& to : connection.to) translation.lane_id(to);
+    const std::optional<std::string> from = translation.lane_id(connection.from);
+    for (const LaneName& to : connection.to) {
+      const std::optional<std::string> id = translation.lane_id(to);
+      if (from && id && connection.from.lane.name.starts_with("L") && to.lane.name.starts_with("L"))
+        translation.scenario.map.links.push_back(LaneLink{*from, *id, to.location});
+    }
   }
   if (translation.diagnostics.has_errors()) return;
   if (map->name == "roundabout" && lanes > 1) {

@@ -17,6 +17,7 @@
 #include "physics/map/scenario_position.hpp"
 #include "physics/planning/path_planner.hpp"
 #include "physics/simulation/default_duration.hpp"
+#include "physics/simulation/lane_links.hpp"
 #include "physics/simulation/relative_position.hpp"
 #include "physics/simulation/scenario_checks.hpp"
 #include "physics/simulation/shortfall_warnings.hpp"
@@ -422,6 +423,10 @@ std::optional<ManoeuvreScript> manoeuvre_script(Context& context, const Actor& a
                                                   (wanted == LaneTurn::left ? "left" : "right") +
                                                   "-turn connector; " + actor.name +
                                                   " keeps its lane in '" + phase.manoeuvre + "'");
+      if (const auto lane = project_to_lane(context.map, start.position, start.heading))
+        warn_of_turn_against_links(context.map, context.scenario.map.links, lane->lane, wanted,
+                                   actor.name + "'s '" + phase.manoeuvre + "'", location,
+                                   context.diagnostics);
     }
     script.phases.push_back(std::move(motion));
   }
@@ -681,6 +686,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     }
   }
 
+  if (!check_lane_links(map, scenario.map.links, diagnostics)) return std::nullopt;
   const Actor& ego = scenario.ego;
   if (!ego.name.empty()) setup.ego_name = ego.name;
   setup.ego_body = body_of(context, ego, ActorCategory::car);

@@ -127,6 +127,9 @@ TEST(WmgCorpusPlacement, EveryActorStartsOnItsLaneInTheSectorItsFileNames) {
       Diagnostics diagnostics;
       const auto setup = prepare_simulation(scenario, values, map, 1, diagnostics);
       ASSERT_TRUE(setup) << format_diagnostics(*file, diagnostics);
+      // Every turn goes where the file's lane connections lead (lane_links.hpp).
+      EXPECT_EQ(format_diagnostics(*file, diagnostics).find("lane connections"), std::string::npos)
+          << format_diagnostics(*file, diagnostics);
       const std::map<std::string, Placed> placed = placed_actors(scenario, *setup);
       for (const auto& [name, actor] : placed) {
         expect_on_named_lane(map, actor, values);

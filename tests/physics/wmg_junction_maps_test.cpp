@@ -218,6 +218,85 @@ TEST(WmgJunctionMaps, AWalkCrossCrossesTheRoadItNames) {
   }
 }
 
+// The file's `Road lane connections` in place of junction_file's.
+std::string with_connections(std::string text, const std::string& connections) {
+  const std::string written = "Road lane connections [R1.L1 -> R2.L1]";
+  EXPECT_NE(text.find(written), std::string::npos);
+  return text.replace(text.find(written), written.size(),
+                      "Road lane connections [" + connections + "]");
+}
+
+// Issue 24: every lane connection is a way through the junction the map must have; one the
+// generator does not build is an error at the lane it leads to, saying where the lane does lead.
+TEST(WmgJunctionMaps, AConnectionTheMapHasNoWayForIsAnErrorAtItsLane) {
+  struct Case {
+    int lanes;
+    std::string connections, told;
+  };
+  for (const Case& c : std::vector<Case>{
+           // Two lanes each way: R2 (east) leads L1 in, L3 in; the kerb lane does not turn left.
+           {4, "R2.L1 -> R3.L3",
+            "error: map 't_junction' has no way through the junction from 'east_in_0' to "
+            "'south_out_0': 'east_in_0' leads to 'west_out_0' (straight on)"},
+           // No U-turns.
+           {2, "R3.L1 -> R3.L2",
+            "error: map 't_junction' has no way through the junction from 'south_in_0' to "
+            "'south_out_0': 'south_in_0' leads to "}}) {
+    SCOPED_TRACE(c.connections);
+    const std::string text = with_connections(
+        junction_file("T-Junction", 3, "[R1 -> R2, R2 -> R3]\n[170 to 190, 80 to 100]",
+                      "Width: 10, Depth: 10", "3.5", c.lanes),
+        c.connections);
+    const SourceFile file("t.sdl", text);
+    const wmg::ParseResult result = parse_ok(text);
+    const std::vector<double> values = midpoint(result.scenario);
+    const RoadMap map = map_at(result.scenario, values);
+    Diagnostics diagnostics;
+    EXPECT_FALSE(prepare_simulation(result.scenario, values, map, 1, diagnostics));
+    const std::string told = format_diagnostics(file, diagnostics);
+    EXPECT_NE(told.find(c.told), std::string::npos) << told;
+    // At the lane the connection leads to.
+    const std::string target = c.connections.substr(c.connections.find("-> ") + 3);
+    ASSERT_FALSE(diagnostics.all().empty());
+    EXPECT_EQ(diagnostics.all().front().location.offset,
+              text.find(target, text.find("Road lane connections")))
+        << told;
+  }
+}
+
+// Issue 24: turns follow the junction's lane connections. A car on the T's west arm turning right
+// into the stem, where the connections lead its lane only straight on, is told so; led there too,
+// it is not.
+TEST(WmgJunctionMaps, ATurnWhereTheConnectionsDoNotLeadIsAWarning) {
+  const std::string dynamics =
+      "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R3.L1]\n"
+      "AND Vehicle [Car] in [R1.L1] with a [Longitudinal] offset of [10] AND at relative "
+      "position [FSL] with relative heading angle [-90] to [Ego]\n"
+      "WHEN: [Ego] is [Going Ahead]\nDO: [Car]\nPHASE 1: [TurnRight_Away] [J1, 30, 3] [Ego: 10, "
+      "FSL]\nEND\n";
+  for (const std::string connections : {"R1.L1 -> R2.L1", "R1.L1 -> R2.L1 + R3.L2"}) {
+    SCOPED_TRACE(connections);
+    std::string text = TJunction::with_dynamics(dynamics);
+    text = with_connections(text, connections);
+    const SourceFile file("t.sdl", text);
+    const wmg::ParseResult result = parse_ok(text);
+    const std::vector<double> values = midpoint(result.scenario);
+    const RoadMap map = map_at(result.scenario, values);
+    Diagnostics diagnostics;
+    ASSERT_TRUE(prepare_simulation(result.scenario, values, map, 1, diagnostics))
+        << format_diagnostics(file, diagnostics);
+    const std::string told = format_diagnostics(file, diagnostics);
+    const std::string warning =
+        "warning: Car's 'TurnRight_Away' turns right from 'west_in_0' into 'south_out_0' "
+        "(turning right), where the junction's lane connections from that lane do not lead (they "
+        "lead to 'east_out_0' (straight on)); it turns as its phase says";
+    if (connections == "R1.L1 -> R2.L1")
+      EXPECT_NE(told.find(warning), std::string::npos) << told;
+    else
+      EXPECT_EQ(told.find("lane connections from that lane"), std::string::npos) << told;
+  }
+}
+
 TEST(WmgJunctionMaps, EveryRoundaboutTypeBuildsOverItsDefaultDiameters) {
   // The level-1 defaults' diameters (docs/wmg-sdl.md), with the lane widths of a minor road and
   // of a motorway.
