@@ -130,6 +130,27 @@ PassTiming pass_timing(const OvertakeContext& context, double gap, const Cluster
   return timing;
 }
 
+// Whether the route left after the pass (`remaining`, from where the ego is back in its lane) lets
+// it come to a stop at the route's end (its target, the lanes' end) before the passed row, which
+// need not brake, catches up: a driver does not pass a car only to stop in front of it (the
+// reference driver did, and was rear-ended at its target: cut_in_straight's findings). The ego
+// returns `gap_ahead + time_gap * v` ahead of the row (pass_timing), cruises at the passing speed
+// u, then brakes at b to stop at the end; the row at v keeps at least gap_ahead from it when
+// remaining * (1 - v / u) >= v * (u / (2 b) - time_gap). b is half the comfortable deceleration:
+// the driver's approach to a stop (IDM's) eases off towards it and takes longer than braking at
+// a constant rate would (with the whole of it, cut_in_straight's ego was still caught at 1.4 m/s
+// short of its target).
+bool room_to_stop_after(const OvertakeContext& context, const Cluster& cluster, double remaining,
+                        const OvertakingSettings& settings) {
+  if (cluster.speed < kStationary) return true;
+  const double passing_speed = std::max(context.desired_speed, context.ego.speed);
+  const double braking = context.vehicle.comfortable_deceleration / 2;
+  if (passing_speed <= cluster.speed || braking <= 0) return false;
+  const double needed = cluster.speed * (passing_speed / (2 * braking) - settings.time_gap) /
+                        (1 - cluster.speed / passing_speed);
+  return remaining >= needed;
+}
+
 // The signed offset (left positive) of `lane`'s centre line from the path at arc length s, and
 // whether the lane runs beside the path there.
 std::optional<double> lane_offset(const OvertakeContext& context, LaneIndex lane, double s) {
@@ -299,6 +320,7 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
     if (!timing.possible) continue;
     double end = progress + timing.travel;
     if (!route_allows(context, here->lane, progress, end)) continue;
+    if (!room_to_stop_after(context, cluster, context.route.length() - end, settings)) continue;
     auto offset_at_end = lane_offset(context, candidate.lane, end);
     if (!offset_at_end || std::abs(*offset_at_end - *offset) > kLaneTolerance) continue;
 

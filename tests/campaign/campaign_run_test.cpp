@@ -237,9 +237,10 @@ TEST_F(CampaignRunTest, ASeedWithNothingToMutateIsLeftOutWithAWarning) {
        {"position", "waypoint", "lateral", "heading", "speed", "weather", "time"})
     mutate += "\"" + std::string(kind) + "=0\", ";
   mutate += "]\n";
-  const fs::path folder =
-      campaign("c", campaign_toml({concrete, source_file("corpora/avunit/cut_in_straight.avu")},
-                                  "simulations = 64", mutate));
+  const fs::path folder = campaign(
+      "c",
+      campaign_toml({concrete, (fs::path(SCENFUZZ_TEST_DATA_DIR) / "cut_in_close.avu").string()},
+                    "simulations = 64", mutate));
   EXPECT_EQ(run(folder), kExitViolated) << err_.str();
   EXPECT_NE(err_.str().find("warning: seed '" + concrete +
                             "' has neither parameter ranges nor values to mutate"),
@@ -247,7 +248,7 @@ TEST_F(CampaignRunTest, ASeedWithNothingToMutateIsLeftOutWithAWarning) {
       << err_.str();
   auto db = open(folder);
   ASSERT_EQ(db->list_seeds().size(), 1u);
-  EXPECT_NE(db->list_seeds()[0].path.find("cut_in_straight.avu"), std::string::npos);
+  EXPECT_NE(db->list_seeds()[0].path.find("cut_in_close.avu"), std::string::npos);
 }
 
 // The wall time ends the run (rounds would go on for ever without a simulation budget): it is

@@ -17,8 +17,8 @@ namespace {
 constexpr const char* kConcreteCutIn = R"(// concrete cut-in
 ego_init_state = ("east_0"->50, , 20);
 ego_vehicle = AV(ego_init_state, ("east_0"->450), ("Lincoln2017MKZ", white));
-cut_start = ("east_1"->80, , 17);
-cut_merge = ("east_0"->100, , 17);
+cut_start = ("east_1"->70, , 17);
+cut_merge = ("east_0"->80, , 17);
 cut_slow = ("east_0"->250, , 12);
 cutter = Vehicle(cut_start, Waypoint(cut_merge, cut_slow), ("east_0"->480), ("Sedan", red));
 scenario = CreateScenario{load("straight"); ego_vehicle; {cutter}; {}; {}; };
@@ -55,7 +55,7 @@ TEST_F(ConcreteSearchTest, AConcreteFileIsSearchedByMutationAndItsFindingsReplay
       << finding;
   const std::string start = line_starting(finding, "cut_start = ");
   EXPECT_NE(start, "") << finding;
-  EXPECT_NE(start, "cut_start = (\"east_1\"->80, , 17);") << "mutated";
+  EXPECT_NE(start, "cut_start = (\"east_1\"->70, , 17);") << "mutated";
   EXPECT_NE(finding.find("//   cutter.init.speed = "), std::string::npos) << finding;
   // The first evaluation is the file as written.
   const auto rows = scenfuzz::test::read_csv(slurp(dir_ / "out" / "evaluations.csv"));

@@ -1,8 +1,9 @@
 // The reference driver on small scenarios where a real driver would not get stuck: it passes a
-// stopped car when the lane beside is free, passes a cyclist through a clear oncoming lane but
-// follows it while an oncoming car makes that unsafe, does not wait for a pedestrian standing at
-// the kerb, and still stops for one walking into its lane; in fog it drives no faster than it can
-// stop within what it sees, and it slows for a pedestrian crossing the road towards its lane.
+// stopped car when the lane beside is free, a slow car only with room to stop at its target
+// beyond it, passes a cyclist through a clear oncoming lane but follows it while an oncoming car
+// makes that unsafe, does not wait for a pedestrian standing at the kerb, and still stops for one
+// walking into its lane; in fog it drives no faster than it can stop within what it sees, and it
+// slows for a pedestrian crossing the road towards its lane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,6 +54,29 @@ TEST(ReferenceDriverTest, PassesAStoppedCarOnATwoLaneOneWayRoad) {
   expect_reached_target_safely(trace);
   EXPECT_GT(largest(trace.actors[0].y), -2.5) << "the ego should have moved into east_1";
   EXPECT_LT(trace.actors[0].y.back(), -4.5) << "and come back into east_0";
+}
+
+// A car at 9 m/s ahead on a two-lane one-way road: the ego passes it when its target is far, but
+// not when it would have to stop at its target soon after moving back in front of it (it did, and
+// was rear-ended there: cut_in_straight's findings).
+TEST(ReferenceDriverTest, PassesASlowCarOnlyWithRoomToStopBeyondIt) {
+  for (const std::string target : {"250", "450"}) {
+    SCOPED_TRACE(target);
+    auto run = simulate_text(
+        scenario("straight?two_way=0&length=500", "car", "", "",
+                 "ego = AV((\"east_0\"->20, , 15), (\"east_0\"->" + target +
+                     "));\ncar = Vehicle((\"east_0\"->60, , 9), uniform((\"east_0\"->60, , 9)), "
+                     "(\"east_0\"->499));\n"),
+        lasting(60));
+    ASSERT_TRUE(run.trace) << run.errors;
+    const Trace& trace = *run.trace;
+    expect_reached_target_safely(trace);
+    if (target == "250") {
+      EXPECT_LT(largest(trace.actors[0].y), -4.5) << "it should have followed the car";
+    } else {
+      EXPECT_GT(largest(trace.actors[0].y), -2.5) << "it should have passed in east_1";
+    }
+  }
 }
 
 // From a finding of stop_and_go_harsh_braking (its scenario and seed as written): at 1.3 m/s and
