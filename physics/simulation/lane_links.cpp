@@ -107,12 +107,16 @@ void warn_of_turn_against_links(const RoadMap& map, const std::vector<LaneLink>&
   if (turning.empty()) return;  // no such turn here: the phase keeps its lane
   for (const Exit& exit : turning)
     if (reaches(named, exit.lane)) return;
-  diagnostics.warning(where, what + " turns " + (wanted == LaneTurn::left ? "left" : "right") +
-                                 " from '" + map.lane(lane).id + "' into " +
-                                 exits_text(map, turning) +
-                                 ", where the junction's lane connections from that lane do not "
-                                 "lead (they lead to " +
-                                 exits_text(map, named) + "); it turns as its phase says");
+  const std::string verb = wanted == LaneTurn::left    ? " turns left"
+                           : wanted == LaneTurn::right ? " turns right"
+                                                       : " goes straight on";
+  diagnostics.warning(
+      where,
+      what + verb + " from '" + map.lane(lane).id + "' into " + exits_text(map, turning) +
+          ", where the junction's lane connections from that lane do not "
+          "lead (they lead to " +
+          exits_text(map, named) + "); " +
+          (wanted == LaneTurn::none ? "it takes the lanes ahead" : "it turns as its phase says"));
 }
 
 }  // namespace scenfuzz

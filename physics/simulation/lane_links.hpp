@@ -17,9 +17,10 @@ namespace scenfuzz {
 bool check_lane_links(const RoadMap& map, const std::vector<LaneLink>& links,
                       Diagnostics& diagnostics);
 
-// Warns when a turn phase (`wanted`) of an actor starting on `lane` leads out of the junction
-// ahead by a lane its links from that lane do not name: the file contradicts itself, and the
-// actor turns as its phase says.
+// Warns when a turn phase (`wanted`) of an actor starting on `lane`, or its way straight on
+// (LaneTurn::none: a vehicle without a turn phase takes the lanes ahead), leads out of the
+// junction ahead by a lane its links from that lane do not name: the file contradicts itself,
+// and the actor drives as its phases say.
 void warn_of_turn_against_links(const RoadMap& map, const std::vector<LaneLink>& links,
                                 LaneIndex lane, LaneTurn wanted, const std::string& what,
                                 const SourceLocation& where, Diagnostics& diagnostics);

@@ -480,6 +480,21 @@ void resolve_phases(Context& context, SimulationSetup& setup,
   }
 }
 
+// A vehicle that turns at no phase takes the lanes ahead through a junction: straight on, which
+// the file's lane connections from its lane should allow (lane_links.hpp).
+void warn_of_way_against_links(Context& context, const Actor& actor, const MapPose& start) {
+  if (actor.motion.kind == MotionKind::waypoints) return;  // its path is its own
+  for (const ManoeuvrePhase& phase : actor.motion.phases) {
+    const auto choice = motion_primitive_named(phase.manoeuvre);
+    if (choice && (choice->primitive == MotionPrimitive::turn_left ||
+                   choice->primitive == MotionPrimitive::turn_right))
+      return;  // its turn phase is checked as such
+  }
+  if (const auto lane = project_to_lane(context.map, start.position, start.heading))
+    warn_of_turn_against_links(context.map, context.scenario.map.links, lane->lane, LaneTurn::none,
+                               actor.name, actor.location, context.diagnostics);
+}
+
 std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
                                            std::size_t actor_index,
                                            const CollisionWorld& obstacles) {
@@ -547,6 +562,7 @@ std::optional<ScriptedActor> prepare_actor(Context& context, const Actor& actor,
   }
   if (!trajectory) return std::nullopt;
   scripted.trajectory = std::move(*trajectory);
+  if (!pedestrian) warn_of_way_against_links(context, actor, *start);
   return scripted;
 }
 

@@ -297,6 +297,37 @@ TEST(WmgJunctionMaps, ATurnWhereTheConnectionsDoNotLeadIsAWarning) {
   }
 }
 
+// A vehicle without a turn phase takes the lanes ahead, straight on: where its lane's connections
+// lead it only right, it is told so.
+TEST(WmgJunctionMaps, AWayStraightOnWhereTheConnectionsDoNotLeadIsAWarning) {
+  const std::string dynamics =
+      "DYNAMIC ELEMENTS:\nINITIAL: Vehicle [Ego] in [R3.L1]\n"
+      "AND Vehicle [Car] in [R1.L1] with a [Longitudinal] offset of [10] AND at relative "
+      "position [FSL] with relative heading angle [-90] to [Ego]\n"
+      "WHEN: [Ego] is [Going Ahead]\nDO: AUTO\nEND\n";
+  for (const std::string connections : {"R1.L1 -> R3.L2", "R1.L1 -> R3.L2 + R2.L1"}) {
+    SCOPED_TRACE(connections);
+    const std::string text = with_connections(TJunction::with_dynamics(dynamics), connections);
+    const SourceFile file("t.sdl", text);
+    const wmg::ParseResult result = parse_ok(text);
+    const std::vector<double> values = midpoint(result.scenario);
+    const RoadMap map = map_at(result.scenario, values);
+    Diagnostics diagnostics;
+    ASSERT_TRUE(prepare_simulation(result.scenario, values, map, 1, diagnostics))
+        << format_diagnostics(file, diagnostics);
+    const std::string told = format_diagnostics(file, diagnostics);
+    if (connections == "R1.L1 -> R3.L2")
+      EXPECT_NE(told.find("warning: Car goes straight on from 'west_in_0' into 'east_out_0' "
+                          "(straight on), where the junction's lane connections from that lane "
+                          "do not lead (they lead to 'south_out_0' (turning right)); it takes the "
+                          "lanes ahead"),
+                std::string::npos)
+          << told;
+    else
+      EXPECT_EQ(told.find("lane connections from that lane"), std::string::npos) << told;
+  }
+}
+
 TEST(WmgJunctionMaps, EveryRoundaboutTypeBuildsOverItsDefaultDiameters) {
   // The level-1 defaults' diameters (docs/wmg-sdl.md), with the lane widths of a minor road and
   // of a motorway.
