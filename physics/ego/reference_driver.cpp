@@ -523,6 +523,10 @@ bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionSt
   return false;
 }
 
+// A lane change's duration: at no less than a crawl's speed, and no longer than this.
+constexpr double kLaneChangeCrawl = 2.0;  // m/s
+constexpr double kLongestChange = 8.0;    // s
+
 void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, double front_s) {
   const KinematicState& ego = input.ego;
   double lookahead = std::max(30.0, ego.speed * 4);
@@ -531,6 +535,10 @@ void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, 
     if (change.begin - front_s > lookahead) break;
     const Polyline& next_lane = map_.lane(change.to).centre_line;
     PolylineProjection ego_beside = next_lane.project({ego.x, ego.y});
+    // Until it is over in the next lane (the stretch's end), one coming up behind faster closes
+    // in, and the ego would move over right in front of it.
+    const double change_time =
+        std::min((change.end - front_s) / std::max(ego.speed, kLaneChangeCrawl), kLongestChange);
     bool blocked =
         std::any_of(input.objects.begin(), input.objects.end(), [&](const WorldObject& o) {
           if (o.kind == TraceActorKind::pedestrian) return false;
@@ -540,7 +548,8 @@ void ReferenceDriver::collect_lane_change_constraints(const DriverInput& input, 
           if (on.distance > half_width + o.width / 2) return false;
           double ahead = on.s - ego_beside.s;  // along the next lane, centre to centre
           double reach = (vehicle_.length + o.length) / 2 + settings_.lane_change_gap;
-          double behind_room = reach + settings_.lane_change_time_gap * o.speed;
+          double behind_room = reach + settings_.lane_change_time_gap * o.speed +
+                               std::max(0.0, o.speed - ego.speed) * change_time;
           double ahead_room = reach + settings_.lane_change_time_gap * ego.speed;
           return ahead > -behind_room && ahead < ahead_room;
         });

@@ -12,6 +12,7 @@
 #include "physics/actors/actor_class.hpp"
 #include "physics/ego/sight_distance.hpp"
 #include "simulation_fixtures.hpp"
+#include "tests/support/shared_dir.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -77,6 +78,37 @@ TEST(ReferenceDriverTest, PassesASlowCarOnlyWithRoomToStopBeyondIt) {
       EXPECT_GT(largest(trace.actors[0].y), -2.5) << "it should have passed in east_1";
     }
   }
+}
+
+// From a finding of lane_change_into_gap (its scenario and seed as written): the ego, at a
+// crawl behind a slow van, found the next lane's gap free while the car at its rear was still
+// 25 m back, but moved over only 4 s later, 0.2 m in front of that car, which was 4 m/s faster and
+// does not brake. The gap behind must hold for as long as the move takes.
+TEST(ReferenceDriverTest, ChangesLaneOnlyWhereTheCarBehindDoesNotCloseInDuringTheMove) {
+  SCENFUZZ_REQUIRE_SHARED_DIR();  // san_francisco
+  const std::string text =
+      "ego_vehicle = AV((\"lane_318\"->44.32068853049931, , 9.998257886375526), "
+      "((553367.80, 4183173.51)), (\"Lincoln2017MKZ\", white));\n"
+      "npc1 = Vehicle((\"lane_317\"->54.03632424916502, , 10.320530356113762), "
+      "uniform((\"lane_317\"->54.03632424916502, , 10.320530356113762)), "
+      "(\"lane_321\"->100), (\"Sedan\", blue));\n"
+      "npc2 = Vehicle((\"lane_317\"->15.448050456080043, , 10.320530356113762), "
+      "uniform((\"lane_317\"->15.448050456080043, , 10.320530356113762)), "
+      "(\"lane_321\"->80), (\"SUV\", black));\n"
+      "npc3 = Vehicle((\"lane_318\"->127.4104184804591, , 4.563733569939876), "
+      "Waypoint(((\"lane_318\"->200, , 3.50160397405183), ((553333.27, 4183203.37), , 4))), "
+      "(\"lane_322\"->60), (\"Van\", white));\n"
+      "scenario = CreateScenario{load(\"san_francisco\"); ego_vehicle; {npc1, npc2, npc3}; {}; "
+      "{}; };\n";
+  SimulationOptions options = lasting(60);
+  options.seed = 7577010756027538418ull;
+  const auto run = test::simulate_file(SourceFile("lane_change_into_gap.avu", text), options,
+                                       MapSearchPath{{test::shared_dir() / "maps" / "apollo"}});
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_TRUE(trace.collisions.empty());
+  EXPECT_EQ(trace.end, EndReason::target_reached);
+  EXPECT_GT(closest_approach(trace, 0, 2), 2.0) << "within the spec's 2 m of the car behind";
 }
 
 // From a finding of stop_and_go_harsh_braking (its scenario and seed as written): at 1.3 m/s and
