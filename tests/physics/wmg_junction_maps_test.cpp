@@ -226,6 +226,27 @@ std::string with_connections(std::string text, const std::string& connections) {
                       "Road lane connections [" + connections + "]");
 }
 
+// What setting `text` up at the centre of its space says: whether it could, its diagnostics
+// formatted, and where the first of them points.
+struct SetUpTold {
+  bool ok = false;
+  std::string told;
+  SourceLocation first;
+};
+
+SetUpTold set_up(const std::string& text) {
+  const SourceFile file("t.sdl", text);
+  const wmg::ParseResult result = parse_ok(text);
+  const std::vector<double> values = midpoint(result.scenario);
+  const RoadMap map = map_at(result.scenario, values);
+  Diagnostics diagnostics;
+  SetUpTold set_up;
+  set_up.ok = prepare_simulation(result.scenario, values, map, 1, diagnostics).has_value();
+  set_up.told = format_diagnostics(file, diagnostics);
+  if (!diagnostics.all().empty()) set_up.first = diagnostics.all().front().location;
+  return set_up;
+}
+
 // Issue 24: every lane connection is a way through the junction the map must have; one the
 // generator does not build is an error at the lane it leads to, saying where the lane does lead.
 TEST(WmgJunctionMaps, AConnectionTheMapHasNoWayForIsAnErrorAtItsLane) {
@@ -247,20 +268,13 @@ TEST(WmgJunctionMaps, AConnectionTheMapHasNoWayForIsAnErrorAtItsLane) {
         junction_file("T-Junction", 3, "[R1 -> R2, R2 -> R3]\n[170 to 190, 80 to 100]",
                       "Width: 10, Depth: 10", "3.5", c.lanes),
         c.connections);
-    const SourceFile file("t.sdl", text);
-    const wmg::ParseResult result = parse_ok(text);
-    const std::vector<double> values = midpoint(result.scenario);
-    const RoadMap map = map_at(result.scenario, values);
-    Diagnostics diagnostics;
-    EXPECT_FALSE(prepare_simulation(result.scenario, values, map, 1, diagnostics));
-    const std::string told = format_diagnostics(file, diagnostics);
-    EXPECT_NE(told.find(c.told), std::string::npos) << told;
+    const SetUpTold told = set_up(text);
+    EXPECT_FALSE(told.ok);
+    EXPECT_NE(told.told.find(c.told), std::string::npos) << told.told;
     // At the lane the connection leads to.
     const std::string target = c.connections.substr(c.connections.find("-> ") + 3);
-    ASSERT_FALSE(diagnostics.all().empty());
-    EXPECT_EQ(diagnostics.all().front().location.offset,
-              text.find(target, text.find("Road lane connections")))
-        << told;
+    EXPECT_EQ(told.first.offset, text.find(target, text.find("Road lane connections")))
+        << told.told;
   }
 }
 
@@ -276,16 +290,9 @@ TEST(WmgJunctionMaps, ATurnWhereTheConnectionsDoNotLeadIsAWarning) {
       "FSL]\nEND\n";
   for (const std::string connections : {"R1.L1 -> R2.L1", "R1.L1 -> R2.L1 + R3.L2"}) {
     SCOPED_TRACE(connections);
-    std::string text = TJunction::with_dynamics(dynamics);
-    text = with_connections(text, connections);
-    const SourceFile file("t.sdl", text);
-    const wmg::ParseResult result = parse_ok(text);
-    const std::vector<double> values = midpoint(result.scenario);
-    const RoadMap map = map_at(result.scenario, values);
-    Diagnostics diagnostics;
-    ASSERT_TRUE(prepare_simulation(result.scenario, values, map, 1, diagnostics))
-        << format_diagnostics(file, diagnostics);
-    const std::string told = format_diagnostics(file, diagnostics);
+    const SetUpTold set = set_up(with_connections(TJunction::with_dynamics(dynamics), connections));
+    ASSERT_TRUE(set.ok) << set.told;
+    const std::string& told = set.told;
     const std::string warning =
         "warning: Car's 'TurnRight_Away' turns right from 'west_in_0' into 'south_out_0' "
         "(turning right), where the junction's lane connections from that lane do not lead (they "
@@ -307,15 +314,9 @@ TEST(WmgJunctionMaps, AWayStraightOnWhereTheConnectionsDoNotLeadIsAWarning) {
       "WHEN: [Ego] is [Going Ahead]\nDO: AUTO\nEND\n";
   for (const std::string connections : {"R1.L1 -> R3.L2", "R1.L1 -> R3.L2 + R2.L1"}) {
     SCOPED_TRACE(connections);
-    const std::string text = with_connections(TJunction::with_dynamics(dynamics), connections);
-    const SourceFile file("t.sdl", text);
-    const wmg::ParseResult result = parse_ok(text);
-    const std::vector<double> values = midpoint(result.scenario);
-    const RoadMap map = map_at(result.scenario, values);
-    Diagnostics diagnostics;
-    ASSERT_TRUE(prepare_simulation(result.scenario, values, map, 1, diagnostics))
-        << format_diagnostics(file, diagnostics);
-    const std::string told = format_diagnostics(file, diagnostics);
+    const SetUpTold set = set_up(with_connections(TJunction::with_dynamics(dynamics), connections));
+    ASSERT_TRUE(set.ok) << set.told;
+    const std::string& told = set.told;
     if (connections == "R1.L1 -> R3.L2")
       EXPECT_NE(told.find("warning: Car goes straight on from 'west_in_0' into 'east_out_0' "
                           "(straight on), where the junction's lane connections from that lane "
