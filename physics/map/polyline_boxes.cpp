@@ -1,12 +1,19 @@
 // Bounding boxes of runs of polyline segments (see polyline_boxes.hpp).
 #include "physics/map/polyline_boxes.hpp"
 
+#include "lang/demand.hpp"
+
 namespace scenfuzz {
 
-PolylineBoxes::PolylineBoxes(const Polyline& path) {
+PolylineBoxes::PolylineBoxes(const Polyline& path) { extend(path, path.segment_count()); }
+
+void PolylineBoxes::extend(const Polyline& path, std::size_t segments) {
+  const std::size_t count = path.segment_count();
+  SCENFUZZ_DEMAND(segments == count || (segments < count && segments % (kRun * kGroup) == 0));
+  if (segments <= segments_) return;
   const auto& points = path.points();
-  for (std::size_t start = 0; start < path.segment_count(); start += kRun) {
-    const std::size_t end = std::min(start + kRun, path.segment_count());  // last vertex
+  for (std::size_t start = segments_; start < segments; start += kRun) {
+    const std::size_t end = std::min(start + kRun, count);  // last vertex
     Box box{points[start], points[start]};
     for (std::size_t i = start + 1; i <= end; ++i) {
       box.low = {std::min(box.low.x, points[i].x), std::min(box.low.y, points[i].y)};
@@ -14,7 +21,7 @@ PolylineBoxes::PolylineBoxes(const Polyline& path) {
     }
     boxes_.push_back(box);
   }
-  for (std::size_t start = 0; start < boxes_.size(); start += kGroup) {
+  for (std::size_t start = groups_.size() * kGroup; start < boxes_.size(); start += kGroup) {
     Box group = boxes_[start];
     for (std::size_t k = start + 1; k < std::min(start + kGroup, boxes_.size()); ++k) {
       group.low = {std::min(group.low.x, boxes_[k].low.x), std::min(group.low.y, boxes_[k].low.y)};
@@ -23,6 +30,7 @@ PolylineBoxes::PolylineBoxes(const Polyline& path) {
     }
     groups_.push_back(group);
   }
+  segments_ = segments;
 }
 
 }  // namespace scenfuzz

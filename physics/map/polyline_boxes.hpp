@@ -24,6 +24,13 @@ class PolylineBoxes {
   PolylineBoxes() = default;
   explicit PolylineBoxes(const Polyline& path);
 
+  // Boxes for the segments before `segments` only (a multiple of kRun * kGroup, or the path's
+  // segment count: every group complete), made as far as a caller reads: the boxes made are those
+  // of PolylineBoxes(path), and size() counts only them.
+  void extend(const Polyline& path, std::size_t segments);
+  // The segments that have boxes.
+  std::size_t segments() const { return segments_; }
+
   std::size_t size() const { return boxes_.size(); }
   MapPoint low(std::size_t box) const { return boxes_[box].low; }
   MapPoint high(std::size_t box) const { return boxes_[box].high; }
@@ -53,6 +60,7 @@ class PolylineBoxes {
   }
   std::vector<Box> boxes_;   // box k holds segments k * kRun .. k * kRun + kRun - 1
   std::vector<Box> groups_;  // group g holds boxes g * kGroup .. g * kGroup + kGroup - 1
+  std::size_t segments_ = 0;
 };
 
 }  // namespace scenfuzz

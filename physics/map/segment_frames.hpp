@@ -17,15 +17,22 @@ class SegmentFrames {
  public:
   SegmentFrames() = default;
   explicit SegmentFrames(const Polyline& path) {
+    directions_.reserve(path.segment_count());
+    extend(path, path.segment_count());
+  }
+
+  // The frames of the segments before `segments` (made as far as a caller reads).
+  void extend(const Polyline& path, std::size_t segments) {
     const auto& points = path.points();
     const auto& arc = path.arc_lengths();
-    directions_.reserve(path.segment_count());
-    for (std::size_t segment = 0; segment < path.segment_count(); ++segment) {
+    for (std::size_t segment = directions_.size(); segment < segments; ++segment) {
       const double length = arc[segment + 1] - arc[segment];
       directions_.push_back({(points[segment + 1].x - points[segment].x) / length,
                              (points[segment + 1].y - points[segment].y) / length});
     }
   }
+  std::size_t segments() const { return directions_.size(); }
+  void reserve(std::size_t segments) { directions_.reserve(segments); }
 
   // Polyline::project_to_segment(point, segment) of the polyline these frames were made from.
   PolylineProjection project(const Polyline& path, MapPoint point, std::size_t segment) const {

@@ -40,36 +40,67 @@ double compute_heading(LazyHeadings& headings, const Polyline& path, std::size_t
   return headings.values[k] = std::atan2(b.y - a.y, b.x - a.x);
 }
 
-std::vector<double> bend_envelope(const Polyline& path, LazyHeadings& headings,
-                                  double lateral_acceleration, double deceleration,
-                                  double max_speed) {
-  const std::size_t count = path.points().size();
-  // A turn below 2 blend lateral / max_speed^2 at a vertex caps the speed above max_speed
-  // (curvature = turn / (2 blend), cap = sqrt(lateral / curvature)); counting it or not changes
-  // no envelope value below max_speed (each is the least of the caps ahead, grown by braking
-  // distance, and growing is monotonic). 98 % of it is the limit: a cap 1 % above max_speed,
-  // far beyond rounding.
-  const double per_blend = lateral_acceleration > 0 && max_speed > 0
-                               ? lateral_acceleration / (max_speed * max_speed)
-                               : 0;
-  std::vector<double> envelope(count, kInfinity);
-  for (std::size_t i = count; i-- > 0;) {
-    double cap = kInfinity;
-    if (i > 0 && i + 1 < count) {
-      const double limit = std::min(0.98 * 2 * blend_half_width(path, i) * per_blend, 0.1);
-      if (!surely_slighter(path, i, limit)) {
-        ensure_headings(headings, path, i - 1, i);
-        double curvature = vertex_curvature(path, headings.values, i);
-        cap = curvature > 1e-9 ? std::sqrt(lateral_acceleration / curvature) : kInfinity;
-      }
+BendEnvelope::BendEnvelope(const Polyline& path, double lateral_acceleration, double deceleration,
+                           double speed_bound)
+    : values_(path.points().size(), kInfinity),
+      lateral_(lateral_acceleration),
+      deceleration_(deceleration) {
+  set_bound(speed_bound);
+}
+
+void BendEnvelope::set_bound(double speed_bound) {
+  speed_bound_ = speed_bound;
+  // A cap c at distance D ahead lowers a value to sqrt(c^2 + 2 deceleration D) at least: at or
+  // above speed_bound from speed_bound^2 / (2 deceleration) on; 1 % more is far beyond the
+  // rounding of the pass's chain of roots.
+  reach_ =
+      deceleration_ > 0 ? 1.01 * speed_bound * speed_bound / (2 * deceleration_) + 1e-3 : kInfinity;
+  // A turn below 2 blend lateral / speed_bound^2 at a vertex caps the speed above speed_bound
+  // (curvature = turn / (2 blend), cap = sqrt(lateral / curvature)). 98 % of it is the skip
+  // test's limit: a cap 1 % above speed_bound, far beyond rounding.
+  per_blend_ = lateral_ > 0 && speed_bound > 0 ? lateral_ / (speed_bound * speed_bound) : 0;
+}
+
+double BendEnvelope::cap_at(const Polyline& path, LazyHeadings& headings,
+                            std::size_t vertex) const {
+  if (vertex == 0 || vertex + 1 >= path.points().size()) return kInfinity;
+  const double limit = std::min(0.98 * 2 * blend_half_width(path, vertex) * per_blend_, 0.1);
+  if (surely_slighter(path, vertex, limit)) return kInfinity;
+  ensure_headings(headings, path, vertex - 1, vertex);
+  const double curvature = vertex_curvature(path, headings.values, vertex);
+  return curvature > 1e-9 ? std::sqrt(lateral_ / curvature) : kInfinity;
+}
+
+void BendEnvelope::extend(const Polyline& path, LazyHeadings& headings, std::size_t vertex) {
+  const std::size_t count = values_.size();
+  vertex = std::min(vertex, count - 1);
+  if (vertex < final_) return;
+  const auto& arc = path.arc_lengths();
+  // The pass starts reach_ beyond the vertex (or at the path's end), as if nothing lay beyond.
+  std::size_t end = vertex;
+  while (end + 1 < count && arc[end] < arc[vertex] + reach_) ++end;
+  for (std::size_t i = end + 1; i-- > final_;) {
+    double value = cap_at(path, headings, i);
+    if (i < end && values_[i + 1] != kInfinity) {
+      const double ds = arc[i + 1] - arc[i];
+      value = std::min(value, std::sqrt(values_[i + 1] * values_[i + 1] + 2 * deceleration_ * ds));
     }
-    if (i + 1 < count) {
-      double ds = path.arc_lengths()[i + 1] - path.arc_lengths()[i];
-      cap = std::min(cap, std::sqrt(envelope[i + 1] * envelope[i + 1] + 2 * deceleration * ds));
-    }
-    envelope[i] = cap;
+    values_[i] = value >= speed_bound_ ? kInfinity : value;
   }
-  return envelope;
+  final_ =
+      end + 1 == count
+          ? count
+          : static_cast<std::size_t>(
+                std::upper_bound(arc.begin(), arc.begin() + end, arc[end] - reach_) - arc.begin());
+  SCENFUZZ_DEMAND(final_ > vertex);
+}
+
+void BendEnvelope::raise_bound(const Polyline& path, LazyHeadings& headings, double speed_bound) {
+  const std::size_t needed = final_;
+  set_bound(speed_bound);
+  std::fill(values_.begin(), values_.end(), kInfinity);
+  final_ = 0;
+  if (needed > 0) extend(path, headings, needed - 1);
 }
 
 }  // namespace scenfuzz

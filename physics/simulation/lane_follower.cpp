@@ -29,6 +29,8 @@ constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower tha
 constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term finite
 constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
 constexpr double kScanInterval = 0.2;        // s between looks at every actor (see find_leader)
+constexpr double kSpeedBoundMargin = 2;      // m/s above its desired speed it is never driven
+constexpr double kPreparedChunk = 100;       // m of path prepared beyond a step's lookahead
 // m of route behind the follower whose lanes are watched: a lane change's sideways move
 // (route_path, 30 m) runs on past where the route enters the new lane, so the lane left may
 // still be under the follower's path.
@@ -63,13 +65,15 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
       settings_(settings) {
   SCENFUZZ_DEMAND(path_.segment_count() > 0);
   headings_ = lazy_headings(path_);
-  boxes_ = PolylineBoxes(path_);
-  frames_ = SegmentFrames(path_);
+  frames_.reserve(path_.segment_count());
   double lateral = body_.comfortable_lateral_acceleration > 0
                        ? body_.comfortable_lateral_acceleration
                        : body_.max_deceleration;
-  envelope_ =
-      bend_envelope(path_, headings_, lateral, body_.comfortable_deceleration, body_.max_speed);
+  // IDM keeps it at its desired speed or below, overshooting by the jerk limit's little; should
+  // it ever be faster than the bound, prepare_ahead raises it.
+  const double bound =
+      std::min(body_.max_speed, std::max(desired_speed_, initial_speed) + kSpeedBoundMargin);
+  envelope_ = BendEnvelope(path_, lateral, body_.comfortable_deceleration, bound);
   double distance = 0;
   for (const RouteSegment& segment : route_.segments) {
     route_starts_.push_back(distance);
@@ -82,7 +86,8 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
     from += next->distance + 0.01;
   }
   // A start faster than the bends ahead allow is the nearest feasible one: as fast as they do.
-  double speed = std::min({initial_speed, body_.max_speed, envelope_.front()});
+  prepare_ahead();
+  double speed = std::min({initial_speed, body_.max_speed, envelope_.at(0)});
   make_headings_known();
   state_ = state_on_path(path_, headings_.values, 0, speed, 0);
   state_.yaw_rate = 0;
@@ -94,7 +99,8 @@ void LaneFollower::start_at(double progress) {
   // No faster than the bends ahead can be taken from: a car placed in a bend drives it as one
   // that came to it would.
   segment_ = path_.segment_at(s_);
-  const double limit = envelope_[std::min(segment_ + 1, envelope_.size() - 1)];
+  prepare_ahead();
+  const double limit = envelope_.at(std::min(segment_ + 1, path_.points().size() - 1));
   make_headings_known();
   state_ = state_on_path(path_, headings_.values, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
@@ -119,6 +125,7 @@ void LaneFollower::update_facing(const WorldSnapshot& world, std::uint32_t self)
 
 double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32_t self,
                                          double dt) {
+  prepare_ahead();
   const double v = state_.speed;
   if (desired_speed_ < kStandingDesire) {
     reason_ = FollowerReason::cruise;
@@ -149,8 +156,8 @@ double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32
 }
 
 double LaneFollower::bend_acceleration() const {
-  std::size_t next = std::min(segment_ + 1, envelope_.size() - 1);
-  double limit = envelope_[next];
+  std::size_t next = std::min(segment_ + 1, path_.points().size() - 1);
+  double limit = envelope_.at(next);
   double v = state_.speed;
   if (!(v > limit)) return kInfinity;
   double to_vertex = std::max(path_.arc_lengths()[next] - s_, 0.5);
@@ -228,8 +235,24 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
   if (auto stop = in_path(world, static_cast<std::uint32_t>(leader_))) stops.push_back(*stop);
 }
 
-double LaneFollower::lookahead() const {
-  return std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+// What a step reads of the path's boxes, frames and envelope (this step's lookahead, the next
+// vertex) made, a chunk at a time: the rest of a path laid for the whole scenario may never be
+// driven in a run. Most steps only compare (prepare_ahead, inline).
+void LaneFollower::prepare_further() {
+  if (state_.speed > envelope_.speed_bound())
+    envelope_.raise_bound(path_, headings_, std::max(body_.max_speed, state_.speed));
+  const double until = s_ + lookahead();
+  if (until > prepared_until_) {
+    prepared_until_ = until + kPreparedChunk;
+    constexpr std::size_t unit = PolylineBoxes::kRun * PolylineBoxes::kGroup;
+    const std::size_t last = path_.segment_at(std::min(prepared_until_, path_.length()));
+    if (prepared_until_ >= path_.length()) prepared_until_ = kInfinity;  // the whole path
+    const std::size_t segments = std::min(path_.segment_count(), (last / unit + 1) * unit);
+    boxes_.extend(path_, segments);
+    frames_.extend(path_, segments);
+    envelope_.extend(path_, headings_, last + 1);
+  }
+  envelope_.extend(path_, headings_, segment_ + 1);
 }
 
 // A vehicle (or the ego) found by where it is, on a lane of the route ahead: between scans its gap

@@ -6,6 +6,7 @@
 // kinematically feasible: bounded acceleration and jerk, yaw rate the heading's derivative.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -108,7 +109,9 @@ class LaneFollower {
   // The leader's stop between scans, from its lane position; nullopt when it left the route's
   // lanes (then in_path finds it by geometry).
   std::optional<Stop> lane_lead(const WorldSnapshot& world);
-  double lookahead() const;
+  double lookahead() const {
+    return std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  }
   bool near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const;
   bool on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors);
   // The lanes of the route from route distance `from` to `to` and every lane of the junctions
@@ -142,6 +145,14 @@ class LaneFollower {
   std::optional<LaneIndex> junction_lane_after(const FeatureAhead& feature) const;
   double idm(const Stop& stop) const;
   void advance(double acceleration, double dt);
+  // Extends boxes_, frames_ and envelope_ over what this step can read (prepare_further), when
+  // they do not cover it yet.
+  void prepare_ahead() {
+    if (s_ + lookahead() > prepared_until_ || segment_ + 1 >= envelope_.final_count() ||
+        state_.speed > envelope_.speed_bound())
+      prepare_further();
+  }
+  void prepare_further();
   // The headings of segment_ - 1 to a run beyond segment_ + 1, into headings_ (headed_until_).
   void make_headings_known();
 
@@ -154,8 +165,9 @@ class LaneFollower {
   std::vector<double> route_starts_;  // route distance where each route segment begins
   std::vector<LaneIndex> watched_;    // on_lanes_ahead's lanes, ascending
   std::size_t watched_first_ = 1, watched_last_ = 0;  // the route segments they are of
-  std::vector<double> envelope_;  // at each vertex: the most speed from which the bends ahead
-                                  // can be taken at comfortable deceleration
+  BendEnvelope envelope_;       // at each vertex: the most speed from which the bends ahead can be
+                                // taken at comfortable deceleration
+  double prepared_until_ = -1;  // m of path over which boxes_ and frames_ are made
   std::vector<Feature> features_;
   std::size_t next_feature_ = 0;           // the first not yet passed
   std::vector<Stop> stops_;                // this step's, kept to reuse its memory

@@ -1,6 +1,6 @@
-// bend_envelope with its slight bends skipped and headings computed lazily: below the body's
-// top speed it is bit for bit the envelope with every bend counted, and on a gently curving path
-// it computes no heading at all (the follower setup's atan2 per segment it replaced).
+// BendEnvelope, with its slight bends skipped, headings computed lazily and values made only as far
+// as they are read: below its speed bound it is bit for bit the envelope with every bend counted
+// over the whole path, and on a gently curving path it computes no heading at all.
 #include "physics/simulation/bend_envelope.hpp"
 
 #include <gtest/gtest.h>
@@ -58,24 +58,76 @@ Polyline wandering_path(std::mt19937_64& random, double threshold_turn) {
   return Polyline(points);
 }
 
-TEST(BendEnvelope, BelowTopSpeedItIsTheEnvelopeOfEveryBend) {
+// Extends `envelope` to the path's end in random steps, checking every final vertex against the
+// envelope of every bend below the bound after each.
+void expect_full_below_bound(const Polyline& path, LazyHeadings& headings, BendEnvelope& envelope,
+                             const std::vector<double>& full, std::mt19937_64& random) {
+  std::uniform_int_distribution<std::size_t> step(1, 60);
+  const double bound = envelope.speed_bound();
+  for (std::size_t vertex = 0;; vertex += step(random)) {
+    envelope.extend(path, headings, vertex);
+    ASSERT_GT(envelope.final_count(), std::min(vertex, full.size() - 1));
+    for (std::size_t i = 0; i < envelope.final_count(); ++i)
+      ASSERT_EQ(std::min(envelope.at(i), bound), std::min(full[i], bound))
+          << "vertex " << i << " after extending to " << vertex << ", bound " << bound;
+    if (envelope.final_count() == full.size()) break;
+  }
+}
+
+TEST(BendEnvelope, BelowTheSpeedBoundItIsTheEnvelopeOfEveryBendHoweverFarItIsMade) {
   std::mt19937_64 random(17);
   const double lateral = 3.0, deceleration = 2.5;
-  for (double max_speed : {3.0, 12.0, 25.0, 50.0}) {
+  for (double bound : {3.0, 12.0, 25.0, 50.0}) {
     for (int trial = 0; trial < 20; ++trial) {
-      // The turn per metre of blend at which a bend caps the speed at exactly max_speed.
-      const double threshold = 2 * lateral / (max_speed * max_speed) / 2;
+      // The turn per metre of blend at which a bend caps the speed at exactly the bound.
+      const double threshold = 2 * lateral / (bound * bound) / 2;
       Polyline path = wandering_path(random, threshold);
       LazyHeadings headings = lazy_headings(path);
-      const std::vector<double> lazy =
-          bend_envelope(path, headings, lateral, deceleration, max_speed);
-      const std::vector<double> full = full_envelope(path, lateral, deceleration);
-      ASSERT_EQ(lazy.size(), full.size());
-      for (std::size_t i = 0; i < full.size(); ++i)
-        ASSERT_EQ(std::min(lazy[i], max_speed), std::min(full[i], max_speed))
-            << "vertex " << i << ", max speed " << max_speed;
+      BendEnvelope envelope(path, lateral, deceleration, bound);
+      expect_full_below_bound(path, headings, envelope, full_envelope(path, lateral, deceleration),
+                              random);
     }
   }
+}
+
+TEST(BendEnvelope, ARaisedBoundGivesTheEnvelopeBelowTheNewBound) {
+  std::mt19937_64 random(5);
+  const double lateral = 3.0, deceleration = 2.5;
+  Polyline path = wandering_path(random, 2 * lateral / (12.0 * 12.0) / 2);
+  const std::vector<double> full = full_envelope(path, lateral, deceleration);
+  LazyHeadings headings = lazy_headings(path);
+  BendEnvelope envelope(path, lateral, deceleration, 5.0);
+  envelope.extend(path, headings, 100);
+  const std::size_t made = envelope.final_count();
+  envelope.raise_bound(path, headings, 30.0);
+  EXPECT_EQ(envelope.speed_bound(), 30.0);
+  EXPECT_GE(envelope.final_count(), made);  // still as far as it was read
+  for (std::size_t i = 0; i < envelope.final_count(); ++i)
+    ASSERT_EQ(std::min(envelope.at(i), 30.0), std::min(full[i], 30.0)) << "vertex " << i;
+  expect_full_below_bound(path, headings, envelope, full, random);
+}
+
+TEST(BendEnvelope, IsMadeOnlyAsFarAsItIsRead) {
+  // 2 km straight, then a sharp corner: reading the start looks at none of the corner.
+  std::vector<MapPoint> points;
+  for (int i = 0; i <= 2000; ++i) points.push_back({static_cast<double>(i), 0});
+  points.push_back({2000, 50});
+  Polyline path(points);
+  LazyHeadings headings = lazy_headings(path);
+  BendEnvelope envelope(path, 3.0, 3.0, 12.0);  // reach: about 24 m
+  envelope.extend(path, headings, 10);
+  EXPECT_GT(envelope.reach(), 24.0);
+  EXPECT_LT(envelope.reach(), 25.0);
+  EXPECT_GT(envelope.final_count(), 10u);
+  EXPECT_LT(envelope.final_count(), 40u);
+  EXPECT_TRUE(std::isnan(headings.values[1999]));
+  EXPECT_EQ(envelope.at(10), kInfinity);
+  envelope.extend(path, headings, 2001);
+  EXPECT_EQ(envelope.final_count(), path.points().size());
+  EXPECT_FALSE(std::isnan(headings.values[1999]));
+  // The corner caps the speed: about 24 m before it the envelope reaches the bound.
+  EXPECT_LT(envelope.at(1995), 12.0);
+  EXPECT_EQ(envelope.at(1900), kInfinity);
 }
 
 TEST(BendEnvelope, ComputesNoHeadingOnAGentleCurve) {
@@ -85,10 +137,11 @@ TEST(BendEnvelope, ComputesNoHeadingOnAGentleCurve) {
     points.push_back({2000 * std::cos(i / 2000.0), 2000 * std::sin(i / 2000.0)});
   Polyline path(points);
   LazyHeadings headings = lazy_headings(path);
-  const std::vector<double> envelope = bend_envelope(path, headings, 3.0, 2.5, 50.0);
+  BendEnvelope envelope(path, 3.0, 2.5, 50.0);
+  envelope.extend(path, headings, 500);
   EXPECT_TRUE(std::all_of(headings.values.begin(), headings.values.end(),
                           [](double h) { return std::isnan(h); }));
-  EXPECT_GT(envelope.front(), 50.0);
+  EXPECT_EQ(envelope.at(0), kInfinity);
 }
 
 TEST(BendEnvelope, LazyHeadingsAreTheSegmentHeadings) {

@@ -72,6 +72,47 @@ TEST(NearestOnPath, IsTheNearestOfEverySegmentBitForBit) {
   EXPECT_GT(none, 2000);
 }
 
+// A lane follower makes its path's boxes and frames only as far as it reads (extend): made past
+// the stretch's last segment, they give the answer of those made for the whole path, bit for bit.
+TEST(NearestOnPath, BoxesAndFramesMadePastTheStretchGiveTheSameAnswer) {
+  std::mt19937_64 random(29);
+  Polyline path = winding_path(random, 700);
+  PolylineBoxes all_boxes(path);
+  SegmentFrames all_frames(path);
+  std::uniform_int_distribution<std::size_t> start(0, path.segment_count() - 1), later(0, 60);
+  std::uniform_real_distribution<double> offset(-6, 6), reach(0.5, 6), ahead(5, 120);
+  constexpr std::size_t unit = PolylineBoxes::kRun * PolylineBoxes::kGroup;
+  int found = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const std::size_t first = start(random);
+    const double until = path.arc_lengths()[first] + ahead(random);
+    // As the follower makes them: whole groups through the segment holding `until`.
+    const std::size_t last = path.segment_at(std::min(until, path.length()));
+    const std::size_t made = std::min(path.segment_count(), (last / unit + 1) * unit);
+    PolylineBoxes boxes;
+    SegmentFrames frames;
+    for (std::size_t k = unit; k < made; k += unit)
+      boxes.extend(path, k);  // in steps, as it drives
+    boxes.extend(path, made);
+    frames.extend(path, made);
+    ASSERT_EQ(boxes.segments(), made);
+    const MapPoint& near_vertex =
+        path.points()[std::min(first + later(random), path.segment_count())];
+    const MapPoint point{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    const double r = reach(random);
+    const PolylineProjection expected =
+        nearest_on_path(path, all_boxes, all_frames, point, first, until, r);
+    const PolylineProjection got = nearest_on_path(path, boxes, frames, point, first, until, r);
+    if (std::isfinite(expected.distance)) ++found;
+    ASSERT_EQ(std::isfinite(got.distance), std::isfinite(expected.distance)) << "point " << i;
+    if (!std::isfinite(expected.distance)) continue;
+    EXPECT_EQ(got.segment, expected.segment) << "point " << i;
+    EXPECT_EQ(got.distance, expected.distance) << "point " << i;
+    EXPECT_EQ(got.s, expected.s) << "point " << i;
+  }
+  EXPECT_GT(found, 1000);
+}
+
 // A caller seeding the search with the distance to a segment of the stretch (a lane follower's
 // segment from its last look at the actor) gets the same answer, bit for bit, also when that
 // segment is far from the nearest or out of reach.
