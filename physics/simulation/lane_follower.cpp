@@ -28,6 +28,8 @@ constexpr double kStopSignReach = 3;         // m before the line that count as 
 constexpr double kMovingSpeed = 1.0;         // m/s: crossing traffic slower than this waits too
 constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term finite
 constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
+// s between looks ahead (what to stop behind); IDM answers for what was seen at every step.
+constexpr double kLookInterval = 0.1;
 constexpr double kScanInterval = 0.2;        // s between looks at every actor (see find_leader)
 constexpr double kSpeedBoundMargin = 2;      // m/s above its desired speed it is never driven
 constexpr double kPreparedChunk = 100;       // m of path prepared beyond a step's lookahead
@@ -109,7 +111,12 @@ void LaneFollower::start_at(double progress) {
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   if (finished_) return;
   update_facing(world, self);
-  advance(choose_acceleration(world, self, dt), dt);
+  prepare_ahead();
+  if (world.time + 1e-9 >= next_look_) {
+    next_look_ = world.time + kLookInterval;
+    look_ahead(world, self, std::max(dt, kLookInterval));
+  }
+  advance(choose_acceleration(world.time), dt);
 }
 
 // The simulation has taken the cosine and sine of every actor's heading this step (this one's
@@ -123,9 +130,23 @@ void LaneFollower::update_facing(const WorldSnapshot& world, std::uint32_t self)
           : MapPoint{std::cos(state_.heading), std::sin(state_.heading)};
 }
 
-double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32_t self,
-                                         double dt) {
-  prepare_ahead();
+// What to stop behind, as far as it can see now: whatever is in its path, stop lines, the
+// junction ahead, the path's end.
+void LaneFollower::look_ahead(const WorldSnapshot& world, std::uint32_t self, double dt) {
+  looked_at_ = world.time;
+  looked_from_ = s_;
+  stops_.clear();
+  if (desired_speed_ < kStandingDesire) return;
+  find_leader(world, self, stops_);
+  find_stop_lines(world, self, dt, stops_);
+  hold_at_junction(world, self, stops_);
+  if (!leaves_at_end_) stops_.push_back({path_.length() - s_, 0, 0, FollowerReason::path_end});
+}
+
+// The most cautious of IDM's answers: for the free road, the bend ahead and each stop found at the
+// last look, its gap moved on by how far this follower has driven since and how far the stop
+// moves at its speed (at the look itself, the gap as found).
+double LaneFollower::choose_acceleration(double now) {
   const double v = state_.speed;
   if (desired_speed_ < kStandingDesire) {
     reason_ = FollowerReason::cruise;
@@ -139,13 +160,9 @@ double LaneFollower::choose_acceleration(const WorldSnapshot& world, std::uint32
     best = bend;
     reason_ = FollowerReason::bend;
   }
-  std::vector<Stop>& stops = stops_;
-  stops.clear();
-  find_leader(world, self, stops);
-  find_stop_lines(world, self, dt, stops);
-  hold_at_junction(world, self, stops);
-  if (!leaves_at_end_) stops.push_back({path_.length() - s_, 0, 0, FollowerReason::path_end});
-  for (const Stop& stop : stops) {
+  const double driven = s_ - looked_from_, elapsed = now - looked_at_;
+  for (Stop stop : stops_) {
+    stop.gap = stop.gap - driven + stop.speed * elapsed;
     double wanted = idm(stop);
     if (wanted < best) {
       best = wanted;

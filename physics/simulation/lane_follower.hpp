@@ -100,7 +100,9 @@ class LaneFollower {
   };
 
   void update_facing(const WorldSnapshot& world, std::uint32_t self);
-  double choose_acceleration(const WorldSnapshot& world, std::uint32_t self, double dt);
+  // Every look interval: the stops ahead (stops_), as they are now.
+  void look_ahead(const WorldSnapshot& world, std::uint32_t self, double dt);
+  double choose_acceleration(double now);
   double bend_acceleration() const;
   void find_leader(const WorldSnapshot& world, std::uint32_t self, std::vector<Stop>& stops);
   // After a scan found `stop` for the leader: whether it can be followed along the lanes until
@@ -170,13 +172,16 @@ class LaneFollower {
   double prepared_until_ = -1;  // m of path over which boxes_ and frames_ are made
   std::vector<Feature> features_;
   std::size_t next_feature_ = 0;           // the first not yet passed
-  std::vector<Stop> stops_;                // this step's, kept to reuse its memory
+  std::vector<Stop> stops_;                // found at the last look
   std::vector<std::uint32_t> candidates_;  // the actors a scan looks at (near_path)
   // For actor k, hints_[2k] (where it is) and hints_[2k + 1] (where it will be): 1 + the path
   // segment nearest to that point when in_path last looked, or 0. A search seeded with a nearby
   // segment's distance skips most boxes (nearest_on_path's `known`); its answer is the same.
   std::vector<std::uint32_t> hints_;
   std::vector<std::uint32_t> starts_;  // the same slots: 1 + first_within's answer then, or 0
+  double next_look_ = 0;               // s: when look_ahead looks again
+  double looked_at_ = 0;               // s: when it last looked
+  double looked_from_ = 0;             // m: s_ then
   double next_scan_ = 0;               // s: when every actor is looked at again
   bool scanning_ = false;              // this step is a scan
   std::int64_t leader_ = -1;           // the actor followed between scans, or -1
