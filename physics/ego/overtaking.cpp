@@ -114,6 +114,12 @@ PassTiming pass_timing(const OvertakeContext& context, double gap, const Cluster
   if (passing_speed < cluster.speed + 1.0) return timing;
   double needed = gap + (cluster.front_s - cluster.rear_s) + context.vehicle.length +
                   settings.gap_ahead + settings.time_gap * cluster.speed;
+  // The loop below gains at most (passing_speed - cluster.speed) * kTimingStep a step, for about
+  // kLongestPass / kTimingStep steps: a pass needing far more is not possible, and its timing is
+  // not read. (A step more and a 1 % margin, far beyond the sums' rounding.)
+  const double most_gained =
+      1.01 * (passing_speed - cluster.speed) * (kLongestPass + 2 * kTimingStep) + 1e-6;
+  if (needed > most_gained) return timing;
   double speed = context.ego.speed, relative = 0;
   while (relative < needed) {
     if (timing.time > kLongestPass) return timing;

@@ -54,8 +54,8 @@ class PolylineBoxes {
     MapPoint low, high;
   };
   static double box_distance_squared(const Box& b, MapPoint point) {
-    const double dx = std::max({b.low.x - point.x, 0.0, point.x - b.high.x});
-    const double dy = std::max({b.low.y - point.y, 0.0, point.y - b.high.y});
+    const double dx = std::max(std::max(b.low.x - point.x, 0.0), point.x - b.high.x);
+    const double dy = std::max(std::max(b.low.y - point.y, 0.0), point.y - b.high.y);
     return dx * dx + dy * dy;
   }
   std::vector<Box> boxes_;   // box k holds segments k * kRun .. k * kRun + kRun - 1

@@ -30,9 +30,9 @@ constexpr double kMinimumGap = 0.1;          // m, keeps IDM's interaction term 
 constexpr std::size_t kFeatureLimit = 4096;  // stop lines looked up along one route
 // s between looks ahead (what to stop behind); IDM answers for what was seen at every step.
 constexpr double kLookInterval = 0.1;
-constexpr double kScanInterval = 0.2;        // s between looks at every actor (see find_leader)
-constexpr double kSpeedBoundMargin = 2;      // m/s above its desired speed it is never driven
-constexpr double kPreparedChunk = 100;       // m of path prepared beyond a step's lookahead
+constexpr double kScanInterval = 0.2;    // s between looks at every actor (see find_leader)
+constexpr double kSpeedBoundMargin = 2;  // m/s above its desired speed it is never driven
+constexpr double kPreparedChunk = 100;   // m of path prepared beyond a step's lookahead
 // m of route behind the follower whose lanes are watched: a lane change's sideways move
 // (route_path, 30 m) runs on past where the route enters the new lane, so the lane left may
 // still be under the follower's path.
@@ -64,7 +64,9 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
       body_(body),
       desired_speed_(std::min(desired_speed, body.max_speed)),
       leaves_at_end_(leaves_at_end),
-      settings_(settings) {
+      settings_(settings),
+      root_ab_(std::sqrt(std::min(settings.acceleration, body.max_acceleration) *
+                         body.comfortable_deceleration)) {
   SCENFUZZ_DEMAND(path_.segment_count() > 0);
   headings_ = lazy_headings(path_);
   frames_.reserve(path_.segment_count());
@@ -184,9 +186,8 @@ double LaneFollower::bend_acceleration() const {
 double LaneFollower::idm(const Stop& stop) const {
   const double v = state_.speed;
   const double a = std::min(settings_.acceleration, body_.max_acceleration);
-  const double b = body_.comfortable_deceleration;
   double desired_gap =
-      stop.clearance + v * settings_.time_gap + v * (v - stop.speed) / (2 * std::sqrt(a * b));
+      stop.clearance + v * settings_.time_gap + v * (v - stop.speed) / (2 * root_ab_);
   double gap = std::max(stop.gap, kMinimumGap);
   double ratio = std::max(desired_gap, 0.0) / gap;
   return a * (1 - fourth_power(v / std::max(desired_speed_, kStandingDesire)) - ratio * ratio);

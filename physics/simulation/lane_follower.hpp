@@ -190,6 +190,7 @@ class LaneFollower {
   double desired_speed_ = 0;
   bool leaves_at_end_ = false;
   FollowerSettings settings_;
+  double root_ab_ = 0;  // sqrt(a b) of IDM's braking term, of a and b as idm() takes them
 
   KinematicState state_;
   double s_ = 0;

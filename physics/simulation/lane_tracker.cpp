@@ -44,8 +44,11 @@ constexpr double kPruneMargin = 1e-9;
 bool surely_farther(const Polyline& line, std::size_t k, MapPoint point, double distance) {
   const MapPoint& a = line.points()[k];
   const MapPoint& b = line.points()[k + 1];
-  const double dx = std::max({std::min(a.x, b.x) - point.x, 0.0, point.x - std::max(a.x, b.x)});
-  const double dy = std::max({std::min(a.y, b.y) - point.y, 0.0, point.y - std::max(a.y, b.y)});
+  // Nested two-argument maxima: std::max of an initializer list compiles to a loop here.
+  const double dx =
+      std::max(std::max(std::min(a.x, b.x) - point.x, 0.0), point.x - std::max(a.x, b.x));
+  const double dy =
+      std::max(std::max(std::min(a.y, b.y) - point.y, 0.0), point.y - std::max(a.y, b.y));
   const double bound = distance + kPruneMargin;
   return dx * dx + dy * dy > bound * bound;
 }
