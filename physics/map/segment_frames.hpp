@@ -32,6 +32,7 @@ class SegmentFrames {
     }
   }
   std::size_t segments() const { return directions_.size(); }
+  MapPoint direction(std::size_t segment) const { return directions_[segment]; }
   void reserve(std::size_t segments) { directions_.reserve(segments); }
 
   // Polyline::project_to_segment(point, segment) of the polyline these frames were made from.

@@ -436,6 +436,27 @@ bool LaneFollower::behind_in_lane(const WorldSnapshot& world, std::uint32_t k) c
   return p.s < s_ && std::abs(p.lateral) <= body_.width / 2 + world.widths[k] / 2;
 }
 
+// A point ahead of the path's end, within `reach` of the line the last segment runs on: what is
+// there stands where this follower stops, or beyond it (a car parked at the next target, its rear
+// reaching back over this one's). Its place along the path: the path's length and how far on.
+PolylineProjection LaneFollower::beyond_end(MapPoint point, double reach) const {
+  PolylineProjection none;
+  none.distance = kInfinity;
+  const std::size_t last = path_.segment_count() - 1;
+  const MapPoint end = path_.points().back();
+  const MapPoint u = frames_.direction(last);
+  const double px = point.x - end.x, py = point.y - end.y;
+  const double along = px * u.x + py * u.y;
+  const double lateral = u.x * py - u.y * px;
+  if (!(along > 0) || !(std::abs(lateral) <= reach)) return none;
+  PolylineProjection beyond;
+  beyond.s = path_.length() + along;
+  beyond.lateral = lateral;
+  beyond.distance = std::abs(lateral);
+  beyond.segment = last;
+  return beyond;
+}
+
 // Actor k as something to stop behind: where it is, or where it will be within the prediction
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
 // ahead. A vehicle coming the other way counts as standing.
@@ -485,6 +506,8 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
     start = static_cast<std::uint32_t>(first + 1);
     PolylineProjection nearest =
         nearest_on_path(path_, boxes_, frames_, points[which], first, until, reach, known);
+    if (!std::isfinite(nearest.distance) && !leaves_at_end_ && path_.length() <= until)
+      nearest = beyond_end(points[which], reach);
     hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;
     if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
     double relative =

@@ -122,6 +122,7 @@ class LaneFollower {
   void watch_lanes(const LaneOccupancy& occupancy, double from, double to);
   bool behind_in_lane(const WorldSnapshot& world, std::uint32_t k) const;
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
+  PolylineProjection beyond_end(MapPoint point, double reach) const;
   MapPoint predicted_of(const WorldSnapshot& world, std::uint32_t k) const;
   // in_path's first tests, inlined into the scan: whether actor k is surely not in the path
   // (too far off, or behind), which is the answer for most actors at most scans.

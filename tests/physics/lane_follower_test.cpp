@@ -86,6 +86,31 @@ TEST(LaneFollowerTest, StopsBehindAStoppedCarWithoutContact) {
   EXPECT_EQ(npc_collisions(*scripted.trace), 1) << "scripted, it drives on into the car";
 }
 
+// A truck whose target lies 5 m behind a sedan's: the sedan stops at its target first, its rear
+// reaching back over the truck's target (stationary_obstacle_in_lane's npc1 and npc2, seed 2). The
+// truck sees the sedan beyond the end of its own path and stops behind it, short of its target.
+TEST(LaneFollowerTest, StopsBehindACarStandingBeyondItsTarget) {
+  std::string text = scenario_text("straight?two_way=0&lanes=2",
+                                   "ego = AV((\"east_1\"->10, , 0), (\"east_1\"->30));\n"
+                                   "sedan = Vehicle((\"east_0\"->150, , 12), "
+                                   "uniform((\"east_0\"->150, , 12)), (\"east_0\"->300), "
+                                   "(\"Sedan\", blue));\n"
+                                   "truck = Vehicle((\"east_0\"->100, , 14), "
+                                   "uniform((\"east_0\"->100, , 14)), (\"east_0\"->295), "
+                                   "(\"Truck\", red));\n",
+                                   "sedan, truck");
+  auto run = simulate_text(text, lasting(40));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const Trace& trace = *run.trace;
+  EXPECT_EQ(npc_collisions(trace), 0);
+  const TraceActor& sedan = trace.actors[1];
+  const TraceActor& truck = trace.actors[2];
+  EXPECT_NEAR(sedan.x.back(), 300, 0.5);
+  EXPECT_LT(truck.speed.back(), 0.1);
+  EXPECT_GT(closest_approach(trace, 1, 2), 0.5);
+  EXPECT_LT(truck.x.back(), 295 - 1.0) << "it should stop short of its target, behind the sedan";
+}
+
 TEST(LaneFollowerTest, FiveQueueAtARedLightAndLeaveOnGreen) {
   // On `crossroads` east-west traffic has red for the first 30 s; the stop line of west_in_0 is at
   // x = -16.
