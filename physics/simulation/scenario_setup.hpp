@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lang/diagnostic.hpp"
@@ -42,6 +43,9 @@ struct FlowPlan {
   double rate = 0;   // vehicles per hour
   double speed = 0;  // m/s
   std::uint64_t seed = 0;
+  // Route distances where the route enters and leaves each junction it runs through: no vehicle
+  // is pre-filled there or within its stopping distance before one (traffic_flows.cpp).
+  std::vector<std::pair<double, double>> junctions;
 };
 
 // An NPC vehicle or pedestrian: it follows its trajectory and does not react; or, with

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "lang/number_format.hpp"
 #include "physics/actors/path_pose.hpp"
 #include "physics/actors/trajectory.hpp"
+#include "physics/map/junction_stretch.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/simulation/scenario_checks.hpp"
 
@@ -92,6 +95,17 @@ bool in_the_way(const MapPose& at, const ActorClass& body, double gap, double sp
          std::abs(along) < centres;
 }
 
+// Whether a vehicle pre-filled at s (its centre, route distance) would be in a junction, or too
+// near one to stop before it: crossing flows' vehicles placed so could not give way to each other
+// (san_francisco's background traffic, seed 7: two side impacts in the first half second).
+bool near_junction(const FlowPlan& flow, double s, const ActorClass& body, double speed) {
+  const double stopping =
+      speed * speed / (2 * body.comfortable_deceleration) + kStandstillGap + body.length / 2;
+  return std::any_of(flow.junctions.begin(), flow.junctions.end(), [&](const auto& junction) {
+    return s + stopping > junction.first && s - body.length / 2 < junction.second;
+  });
+}
+
 MapPose pose_on(const Polyline& path, double s) {
   return {path.point_at(s), direction_at(path, s).heading};
 }
@@ -131,6 +145,7 @@ std::vector<FlowVehicle> draw_flow(const FlowPlan& flow, std::size_t index, doub
   for (double s = 0; vehicles.size() <= kMaxFlowVehicles;) {
     s += headway > gap ? gap + random.exponential(headway - gap) : gap;
     if (s > last) break;
+    if (near_junction(flow, s, body, speed)) continue;
     const MapPose pose = pose_on(flow.path, s);
     const bool clear = std::none_of(occupants.begin(), occupants.end(), [&](const Occupant& o) {
       return in_the_way(pose, body, gap, speed, o);
@@ -225,6 +240,23 @@ std::optional<LaneRoute> flow_route(const RoadMap& map, const TrafficFlow& flow,
   return route;
 }
 
+std::vector<std::pair<double, double>> junctions_on(const RoadMap& map, const LaneRoute& route) {
+  std::vector<double> starts;
+  double distance = 0;
+  for (const RouteSegment& segment : route.segments) {
+    starts.push_back(distance);
+    distance += segment.s_end - segment.s_begin;
+  }
+  std::vector<std::pair<double, double>> junctions;
+  for (double from = 0;;) {
+    auto stretch = junction_stretch_ahead(map, route.segments, starts, from);
+    if (!stretch) break;
+    junctions.emplace_back(stretch->entry, stretch->exit);
+    from = stretch->exit;
+  }
+  return junctions;
+}
+
 std::optional<FlowPlan> prepare_flow(const TrafficFlow& flow, std::span<const double> values,
                                      const RoadMap& map, std::uint64_t seed, double duration,
                                      Diagnostics& diagnostics) {
@@ -243,7 +275,8 @@ std::optional<FlowPlan> prepare_flow(const TrafficFlow& flow, std::span<const do
     return std::nullopt;
   }
   Polyline path = round_corners(route_path(map, *route), planning_radius(flow_vehicle_body()));
-  return FlowPlan{flow.name, flow.location, *route, std::move(path), *rate, *speed, seed};
+  return FlowPlan{flow.name, flow.location, *route, std::move(path),
+                  *rate,     *speed,        seed,   junctions_on(map, *route)};
 }
 
 }  // namespace
