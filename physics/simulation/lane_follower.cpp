@@ -194,8 +194,7 @@ double LaneFollower::idm(const Stop& stop) const {
 }
 
 bool LaneFollower::surely_not_in_path(const WorldSnapshot& world, std::uint32_t k) const {
-  const double lookahead =
-      std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  const double lookahead = this->lookahead();
   const KinematicState& other = world.states[k];
   const double dx = other.x - state_.x, dy = other.y - state_.y;
   const double reach_k = lookahead + world.lengths[k];
@@ -319,8 +318,7 @@ std::optional<LaneFollower::Stop> LaneFollower::lane_lead(const WorldSnapshot& w
 // keeping to its lanes has to look at. False when the world has no occupancy.
 bool LaneFollower::on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) {
   if (world.occupancy == nullptr || route_starts_.empty()) return false;
-  const double lookahead =
-      std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  const double lookahead = this->lookahead();
   watch_lanes(*world.occupancy, s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
   world.occupancy->gather(watched_, actors);
   return true;
@@ -360,8 +358,7 @@ bool LaneFollower::near_path(const WorldSnapshot& world, std::vector<std::uint32
   if (world.grid == nullptr || world.predicted.size() != world.states.size() ||
       world.prediction_time != settings_.prediction_time)
     return false;
-  const double until =
-      s_ + std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  const double until = s_ + lookahead();
   // in_path's boxes run from the one holding this actor's segment to the last starting by
   // `until`; every point of them is at most `along` metres of path, so as many in a straight
   // line, from this actor, which is on the path at s_.
@@ -463,8 +460,7 @@ PolylineProjection LaneFollower::beyond_end(MapPoint point, double reach) const 
 std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& world,
                                                         std::uint32_t k) {
   if (surely_not_in_path(world, k)) return std::nullopt;
-  const double lookahead =
-      std::max(settings_.min_lookahead, state_.speed * settings_.lookahead_time);
+  const double lookahead = this->lookahead();
   const KinematicState& other = world.states[k];
   const bool moving = other.speed > kPredictedMinSpeed;
   const double tau = moving ? settings_.prediction_time : 0;
