@@ -122,26 +122,26 @@ double ReferenceDriver::steering(const KinematicState& ego) const {
   return pursuit_steering(route_, overtake_, progress, ego, vehicle_, lookahead);
 }
 
-std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) const {
+std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) {
   // Every vehicle and obstacle across the route's own lane (as if the ego kept to it), from a
   // little behind the ego on: what it might pass, and what it has been passing. Pedestrians
   // standing in its way count too once its patience with them is over.
   std::vector<Blocker> found;
   const KinematicState& ego = input.ego;
-  double horizon = std::max(60.0, ego.speed * 6 + 30);
+  const double horizon = located_horizon_;
   double half_width = vehicle_.width / 2 + kCorridorMargin;
-  const PathWindow stretch = route_.window(30, horizon);  // the same for every object
-  for (const WorldObject& object : input.objects) {
+  for (std::size_t k = 0; k < input.objects.size(); ++k) {
+    const WorldObject& object = input.objects[k];
     bool pedestrian = object.kind == TraceActorKind::pedestrian;
     if (pedestrian && !(patience_over_ && motion_.speed(object.id) < settings_.standing_speed))
       continue;
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
     // Farther from the path than any extent across it reaches: not across the lane (below).
-    if (route_.surely_farther({object.x, object.y}, stretch,
+    if (route_.surely_farther({object.x, object.y}, located_window_,
                               greatest_extent(object) + half_width + kSurelyAside))
       continue;
-    auto at = route_.locate({object.x, object.y}, stretch, horizon);
+    const auto& at = located(k, object);
     if (!at || at->beyond_end) continue;
     double relative = angle_difference(object.heading, route_.heading_at(at->s, at->segment));
     if (std::abs(at->lateral) - extent_across(object, relative) - half_width > 0) continue;
@@ -152,6 +152,23 @@ std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) 
   std::sort(found.begin(), found.end(),
             [](const Blocker& a, const Blocker& b) { return a.rear_s < b.rear_s; });
   return found;
+}
+
+void ReferenceDriver::start_locating(const DriverInput& input) {
+  located_horizon_ = std::max(60.0, input.ego.speed * 6 + 30);
+  // From a little behind the ego: the plan looks at what it has been passing.
+  located_window_ = route_.window(30, located_horizon_);
+  located_known_.assign(input.objects.size(), 0);
+  located_.resize(input.objects.size());
+}
+
+const std::optional<PathCoordinate>& ReferenceDriver::located(std::size_t k,
+                                                              const WorldObject& object) {
+  if (!located_known_[k]) {
+    located_[k] = route_.locate({object.x, object.y}, located_window_, located_horizon_);
+    located_known_[k] = 1;
+  }
+  return located_[k];
 }
 
 void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
@@ -238,19 +255,20 @@ bool ReferenceDriver::on_own_lane(MapPoint point) const {
 
 void ReferenceDriver::collect_object_constraints(const DriverInput& input, double front_s) {
   const KinematicState& ego = input.ego;
-  double horizon = std::max(60.0, ego.speed * 6 + 30);
+  const double horizon = located_horizon_;
   double half_width = vehicle_.width / 2 + kCorridorMargin;
-  const PathWindow stretch = route_.window(0, horizon);  // the same for every object
-  for (const WorldObject& object : input.objects) {
+  const PathWindow ahead = route_.window(0, horizon);  // what is behind the ego's centre is not
+  for (std::size_t k = 0; k < input.objects.size(); ++k) {
+    const WorldObject& object = input.objects[k];
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
     // Too far aside to be in the path or to enter it in time, however it moves (below; off the
     // path, the ego's own lateral plan would shift it).
-    if (!overtake_.active && route_.surely_farther({object.x, object.y}, stretch,
+    if (!overtake_.active && route_.surely_farther({object.x, object.y}, ahead,
                                                    greatest_extent(object) + half_width +
                                                        farthest_entry(object) + kSurelyAside))
       continue;
-    auto at = route_.locate({object.x, object.y}, stretch, horizon);
+    const auto& at = located(k, object);
     // Beside or behind the ego's centre, or past the end of the route (where the ego stops).
     if (!at || at->beyond_end || at->s <= route_.progress()) continue;
     double path_heading = route_.heading_at(at->s, at->segment);
@@ -578,6 +596,7 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   double dt = last_time_ >= 0 ? input.time - last_time_ : 0.1;
   last_time_ = input.time;
   motion_.update(input.objects, dt);
+  start_locating(input);
   plan_manoeuvre(input, dt);
   double front_s = route_.progress() + vehicle_.length / 2;
   constraints_.clear();

@@ -11,6 +11,7 @@
 // sees only what perception gives it.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -105,7 +106,11 @@ class ReferenceDriver {
 
   double desired_speed(double s) const;
   double steering(const KinematicState& ego) const;
-  std::vector<Blocker> objects_in_lane(const DriverInput& input) const;
+  std::vector<Blocker> objects_in_lane(const DriverInput& input);
+  void start_locating(const DriverInput& input);
+  // Object k of the step's input on the route (RouteTracker::locate), located at most once a
+  // step: the plan and the constraints ask for the same objects.
+  const std::optional<PathCoordinate>& located(std::size_t k, const WorldObject& object);
   void plan_manoeuvre(const DriverInput& input, double dt);
   void indicate_then_go(const OvertakePlan& plan, double time);
   void watch_patience(const DriverInput& input);
@@ -134,6 +139,12 @@ class ReferenceDriver {
   double sight_speed_;  // m/s: it can stop within its sight distance from this speed
   std::vector<double> speed_envelope_;  // per path vertex: the speed limit and bends, braked back
   std::vector<Constraint> constraints_;
+  // This step's locations (located()): the window searched, how far aside, and per object
+  // whether it was located yet and where.
+  PathWindow located_window_;
+  double located_horizon_ = 0;
+  std::vector<std::uint8_t> located_known_;
+  std::vector<std::optional<PathCoordinate>> located_;
   std::vector<bool> stop_sign_served_;  // per route feature
   double stopped_since_ = -1;
   DriverReason reason_ = DriverReason::cruise;

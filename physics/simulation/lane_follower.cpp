@@ -476,7 +476,8 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   const double reach =
       half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
   std::optional<Stop> best;
-  for (int which = 0; which < (tau > 0 && !behind_in_lane(world, k) ? 2 : 1); ++which) {
+  const int points_searched = tau > 0 && !behind_in_lane(world, k) ? 2 : 1;
+  for (int which = 0; which < points_searched; ++which) {
     // Where it will be cannot be nearer than where it is when the path is too far along there
     // (most leaders drive on ahead): the search would be rejected by the gap test below.
     if (best &&
