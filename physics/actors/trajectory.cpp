@@ -213,7 +213,7 @@ double smoothstep(double x) {
 }  // namespace
 
 Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral,
-                    double lane_change_length, double spacing) {
+                    double lane_change_length, double spacing, std::vector<PathPlace>* places) {
   if (route.segments.empty()) throw std::invalid_argument("route_path needs a route");
   if (!(spacing > 0) || !std::isfinite(spacing))
     throw std::invalid_argument("route_path spacing must be positive");
@@ -221,9 +221,15 @@ Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral,
     throw std::invalid_argument("route_path needs a finite lateral offset and lane change length");
   RouteLayout layout = lay_out(map, route);
   std::vector<MapPoint> points;
-  auto add = [&](MapPoint point) {
-    if (points.empty() || distance(points.back(), point) >= kMinimumPointGap)
-      points.push_back(point);
+  if (places != nullptr) places->clear();
+  auto add = [&](MapPoint point, const PathPiece& piece, double at) {
+    if (!points.empty() && distance(points.back(), point) < kMinimumPointGap) return;
+    points.push_back(point);
+    if (places == nullptr) return;
+    const RouteSegment& on = route.segments[piece.from];
+    places->push_back({static_cast<std::uint32_t>(piece.from),
+                       on.s_begin + (at - layout.start[piece.from]),
+                       piece.to == piece.from && std::abs(lateral) <= kOnLaneLateral});
   };
   for (const PathPiece& piece : plan_pieces(map, route, layout, lane_change_length)) {
     double span = piece.end - piece.begin;
@@ -233,17 +239,75 @@ Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral,
       double at = piece.begin + span * fraction;
       MapPoint from = lane_point(map, route, layout, piece.from, at, lateral);
       if (piece.to == piece.from) {
-        add(from);
+        add(from, piece, at);
         continue;
       }
       MapPoint to = lane_point(map, route, layout, piece.to, at, lateral);
       double weight = smoothstep(fraction);
-      add({from.x + weight * (to.x - from.x), from.y + weight * (to.y - from.y)});
+      add({from.x + weight * (to.x - from.x), from.y + weight * (to.y - from.y)}, piece, at);
     }
   }
   if (points.size() < 2)
     throw std::invalid_argument("route_path: the route has no length (use a standing actor)");
   return Polyline(points);
+}
+
+namespace {
+
+// Where `point` lies along `centre` near `s`: the nearest point of the few segments around the
+// one at s (rounding moves a point by far less than a segment's length), when the point is
+// beside those segments rather than beyond their ends.
+std::optional<double> along_near(const Polyline& centre, MapPoint point, double s) {
+  constexpr std::size_t kAround = 3;
+  const std::size_t at = centre.segment_at(s);
+  const std::size_t first = at > kAround ? at - kAround : 0;
+  const std::size_t last = std::min(at + kAround, centre.segment_count() - 1);
+  PolylineProjection best = centre.project_to_segment(point, first);
+  for (std::size_t k = first + 1; k <= last; ++k) {
+    PolylineProjection candidate = centre.project_to_segment(point, k);
+    if (candidate.distance < best.distance) best = candidate;
+  }
+  if (!(best.distance <= std::abs(best.lateral) + 1e-9)) return std::nullopt;
+  return best.s;
+}
+
+// `place` again for `point`, moved aside from where route_path drew it: on its lane, or, rounded
+// beyond that lane's end or start, on the route's next or previous lane. Else not on a lane.
+void replace(const RoadMap& map, const LaneRoute& route, MapPoint point, PathPlace& place) {
+  if (!place.on_lane) return;
+  const RouteSegment& on = route.segments[place.segment];
+  if (auto s = along_near(map.lane(on.lane).centre_line, point, place.s)) {
+    place.s = *s;
+    return;
+  }
+  const std::size_t k = place.segment;
+  for (std::size_t other : {k + 1, k - 1}) {
+    if (other >= route.segments.size()) continue;  // k - 1 wraps round at the first segment
+    const RouteSegment& there = route.segments[other];
+    const double near = other > k ? there.s_begin : there.s_end;
+    if (auto s = along_near(map.lane(there.lane).centre_line, point, near)) {
+      place = {static_cast<std::uint32_t>(other), *s, true};
+      return;
+    }
+  }
+  place.on_lane = false;
+}
+
+}  // namespace
+
+Polyline rounded_route_path(const RoadMap& map, const LaneRoute& route, double lateral,
+                            double min_radius, std::vector<PathPlace>& places) {
+  const Polyline drawn =
+      route_path(map, route, lateral, kLaneChangeLength, kRoutePathSpacing, &places);
+  Polyline rounded = round_corners(drawn, min_radius);
+  if (rounded.points().size() != places.size()) {
+    places.clear();  // two points merged: no place is known (the lane is looked for)
+    return rounded;
+  }
+  for (std::size_t i = 0; i < places.size(); ++i)
+    if (!(rounded.points()[i] == drawn.points()[i]))
+      replace(map, route, rounded.points()[i], places[i]);
+  return rounded;
 }
 
 std::vector<LaneChangeStretch> lane_change_stretches(const RoadMap& map, const LaneRoute& route,

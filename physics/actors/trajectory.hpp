@@ -5,6 +5,7 @@
 // bounded.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
@@ -62,8 +63,30 @@ std::vector<PathBend> path_bends(const Polyline& path);
 // less than that on the lane before (find_route changes lane where it entered a lane, so it has
 // none), the move starts as early as it can and runs on into the new lane. Lane changes in a row
 // take turns. Throws std::invalid_argument for an empty or zero-length route or a bad spacing.
+// `places`, when given, receives where each point of the path lies on the route (PathPlace).
+struct PathPlace;
+inline constexpr double kLaneChangeLength = 30;  // m
+inline constexpr double kRoutePathSpacing = 1;   // m
 Polyline route_path(const RoadMap& map, const LaneRoute& route, double lateral = 0,
-                    double lane_change_length = 30, double spacing = 1);
+                    double lane_change_length = kLaneChangeLength,
+                    double spacing = kRoutePathSpacing, std::vector<PathPlace>* places = nullptr);
+
+// Where a point of route_path lies on the route: on route segment `segment`'s lane at lane
+// arc length `s` (on its centre line, or beside it by a `lateral` of at most kOnLaneLateral,
+// well inside any lane), or not surely on that lane (`on_lane` false: in a lane change's
+// sideways move, or drawn farther aside).
+inline constexpr double kOnLaneLateral = 0.5;  // m
+struct PathPlace {
+  std::uint32_t segment = 0;
+  double s = 0;
+  bool on_lane = true;
+};
+
+// route_path with its corners rounded for a body turning no tighter than `min_radius`
+// (round_corners), and the places of its points: one the rounding moved is placed where it
+// projects onto its lane's centre line.
+Polyline rounded_route_path(const RoadMap& map, const LaneRoute& route, double lateral,
+                            double min_radius, std::vector<PathPlace>& places);
 
 // Where route_path moves sideways: from route distance `begin` to `end`, from lane `from` to `to`.
 struct LaneChangeStretch {
@@ -73,7 +96,7 @@ struct LaneChangeStretch {
   LaneIndex to = 0;
 };
 std::vector<LaneChangeStretch> lane_change_stretches(const RoadMap& map, const LaneRoute& route,
-                                                     double lane_change_length = 30);
+                                                     double lane_change_length = kLaneChangeLength);
 
 // Where a lane-following actor goes without a target: from `start` along successors (the one
 // that turns least over its first metres at each fork), for `length` metres (the last segment

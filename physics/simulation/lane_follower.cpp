@@ -56,11 +56,13 @@ double fourth_power(double x) {
 }  // namespace
 
 LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
-                           const ActorClass& body, double desired_speed, double initial_speed,
-                           bool leaves_at_end, const FollowerSettings& settings)
+                           std::vector<PathPlace> places, const ActorClass& body,
+                           double desired_speed, double initial_speed, bool leaves_at_end,
+                           const FollowerSettings& settings)
     : map_(&map),
       route_(std::move(route)),
       path_(std::move(path)),
+      places_(std::move(places)),
       body_(body),
       desired_speed_(std::min(desired_speed, body.max_speed)),
       leaves_at_end_(leaves_at_end),
@@ -68,6 +70,7 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
       root_ab_(std::sqrt(std::min(settings.acceleration, body.max_acceleration) *
                          body.comfortable_deceleration)) {
   SCENFUZZ_DEMAND(path_.segment_count() > 0);
+  SCENFUZZ_DEMAND(places_.empty() || places_.size() == path_.points().size());
   headings_ = lazy_headings(path_);
   frames_.reserve(path_.segment_count());
   double lateral = body_.comfortable_lateral_acceleration > 0
@@ -108,6 +111,32 @@ void LaneFollower::start_at(double progress) {
   make_headings_known();
   state_ = state_on_path(path_, headings_.values, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
+}
+
+// Between two points of the path, its lane position by how far along the segment it is: the
+// points were drawn from the centre lines at those lane positions, every metre or so, so this is
+// the projection onto the centre line up to far less than a millimetre (rounded corners move a
+// point a little aside, not along).
+std::optional<LaneFix> LaneFollower::lane_fix() const {
+  if (places_.empty()) return std::nullopt;
+  const PathPlace& from = places_[segment_];
+  const PathPlace& to = places_[segment_ + 1];
+  if (!from.on_lane || !to.on_lane) return std::nullopt;
+  const auto& arc = path_.arc_lengths();
+  const double fraction = (s_ - arc[segment_]) / (arc[segment_ + 1] - arc[segment_]);
+  const RouteSegment& on = route_.segments[from.segment];
+  if (to.segment == from.segment)
+    return LaneFix{static_cast<std::int32_t>(on.lane), from.s + fraction * (to.s - from.s)};
+  // Over a successor link: as far on the next lane as it is past the end of this one.
+  if (to.segment != from.segment + 1) return std::nullopt;
+  const RouteSegment& next = route_.segments[to.segment];
+  const std::vector<LaneIndex>& successors = map_->lane(on.lane).successors;
+  if (std::find(successors.begin(), successors.end(), next.lane) == successors.end())
+    return std::nullopt;  // a lane change with no room for a sideways move: a jump aside
+  const double along = fraction * ((on.s_end - from.s) + (to.s - next.s_begin));
+  if (from.s + along <= on.s_end)
+    return LaneFix{static_cast<std::int32_t>(on.lane), from.s + along};
+  return LaneFix{static_cast<std::int32_t>(next.lane), next.s_begin + (from.s + along - on.s_end)};
 }
 
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {

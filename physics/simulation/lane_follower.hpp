@@ -14,12 +14,14 @@
 #include <vector>
 
 #include "physics/actors/actor_class.hpp"
+#include "physics/actors/trajectory.hpp"
 #include "physics/map/junction_stretch.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/polyline_boxes.hpp"
 #include "physics/map/segment_frames.hpp"
 #include "physics/simulation/bend_envelope.hpp"
+#include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/world_snapshot.hpp"
 
 namespace scenfuzz {
@@ -60,9 +62,10 @@ class LaneFollower {
   // Drives `path` (drawn from `route` by route_path, so that its arc length is the route's
   // distance) from its start at `initial_speed`, aiming for `desired_speed`. At the path's end it
   // stops there, or, when `leaves_at_end`, drives on out of the world (finished()).
-  LaneFollower(const RoadMap& map, LaneRoute route, Polyline path, const ActorClass& body,
-               double desired_speed, double initial_speed, bool leaves_at_end,
-               const FollowerSettings& settings = {});
+  // `places`, route_path's for `path` (empty when not known), say which lane it is on where.
+  LaneFollower(const RoadMap& map, LaneRoute route, Polyline path, std::vector<PathPlace> places,
+               const ActorClass& body, double desired_speed, double initial_speed,
+               bool leaves_at_end, const FollowerSettings& settings = {});
 
   // Before the first step: puts it `progress` metres along its path instead of at its start, at
   // the same speed, or the most the bends ahead allow (a background-traffic vehicle already on
@@ -73,6 +76,9 @@ class LaneFollower {
   double progress() const { return s_; }  // m along the path
   bool finished() const { return finished_; }
   FollowerReason reason() const { return reason_; }
+  // The lane it is on and where along it, from where on its route it is, without asking the map;
+  // nullopt where its path leaves the lanes' centre lines (a lane change's sideways move).
+  std::optional<LaneFix> lane_fix() const;
 
   // Chooses the acceleration from the world as it is now (this actor is actor `self` in it) and
   // moves on by dt.
@@ -162,6 +168,7 @@ class LaneFollower {
   const RoadMap* map_;
   LaneRoute route_;
   Polyline path_;
+  std::vector<PathPlace> places_;     // of path_'s points (lane_fix), or none
   LazyHeadings headings_;             // of each path segment, computed where needed
   PolylineBoxes boxes_;               // of runs of path segments, for nearest_on_path
   SegmentFrames frames_;              // of path segments, for nearest_on_path's projections

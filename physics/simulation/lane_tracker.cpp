@@ -127,6 +127,10 @@ double narrowest_width(const std::vector<WidthSample>& samples) {
 LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) {
   if (lane_ >= 0) {
     const auto lane = static_cast<LaneIndex>(lane_);
+    if (!segment_known_) {
+      segment_ = map.lane(lane).centre_line.segment_at(assumed_s_);
+      segment_known_ = true;
+    }
     if (narrowest_lane_ != lane_) {
       narrowest_lane_ = lane_;
       narrowest_ = {narrowest_width(map.lane(lane).left_width),

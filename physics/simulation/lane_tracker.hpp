@@ -25,11 +25,21 @@ class LaneTracker {
   explicit LaneTracker(double widest_half_lane) : widest_half_lane_(widest_half_lane) {}
 
   LaneFix update(const RoadMap& map, MapPoint point, double heading);
+  // The actor is at `fix`, known otherwise (a lane follower's route): the next update starts
+  // looking there.
+  void assume(LaneFix fix) {
+    lane_ = fix.lane;
+    assumed_s_ = fix.s;
+    segment_known_ = false;
+    off_lanes_ = false;
+  }
 
  private:
   double widest_half_lane_;
   std::int32_t lane_ = -1;
   std::size_t segment_ = 0;
+  bool segment_known_ = true;  // else segment_ is the one at assumed_s_ on lane_
+  double assumed_s_ = 0;
   // The narrowest width of lane narrowest_lane_ on its left and right (or -1: none yet).
   std::int32_t narrowest_lane_ = -1;
   std::pair<double, double> narrowest_{0, 0};

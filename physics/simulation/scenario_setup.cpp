@@ -240,8 +240,9 @@ std::optional<Trajectory> lane_following(Context& context, const Actor& actor, c
   }
   if (route->segments.empty() || route->length < 0.5) return Trajectory::standing(start);
   double lateral = start_lane->lateral;
-  Polyline path = round_corners(route_path(context.map, *route, lateral), planning_radius(body));
-  drive = LaneDrive{*route, path, speed, initial_speed};
+  std::vector<PathPlace> places;
+  Polyline path = rounded_route_path(context.map, *route, lateral, planning_radius(body), places);
+  drive = LaneDrive{*route, path, std::move(places), speed, initial_speed};
   if (context.scenario.npc_behaviour.value_or(NpcBehaviour::reactive) == NpcBehaviour::reactive)
     warn_reactive_start(path, body, initial_speed, actor.name, start_point(actor),
                         context.diagnostics);

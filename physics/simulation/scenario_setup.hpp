@@ -28,8 +28,9 @@ namespace scenfuzz {
 struct LaneDrive {
   LaneRoute route;
   Polyline path;
-  double desired_speed = 0;  // m/s
-  double initial_speed = 0;  // m/s
+  std::vector<PathPlace> places;  // route_path's, of the path's points
+  double desired_speed = 0;       // m/s
+  double initial_speed = 0;       // m/s
 };
 
 // A background traffic flow (the scenario's Traffic::flows) ready to run: its lane route from the
@@ -40,8 +41,9 @@ struct FlowPlan {
   SourceLocation location;
   LaneRoute route;
   Polyline path;
-  double rate = 0;   // vehicles per hour
-  double speed = 0;  // m/s
+  std::vector<PathPlace> places;  // route_path's, of the path's points
+  double rate = 0;                // vehicles per hour
+  double speed = 0;               // m/s
   std::uint64_t seed = 0;
   // Route distances where the route enters and leaves each junction it runs through: no vehicle
   // is pre-filled there or within its stopping distance before one (traffic_flows.cpp).

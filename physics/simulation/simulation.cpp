@@ -184,10 +184,29 @@ std::vector<std::optional<LaneFollower>> lane_followers(const RoadMap& map,
     const ScriptedActor& actor = setup.actors[i];
     if (!actor.lane_drive || actor.manoeuvres) continue;
     const LaneDrive& drive = *actor.lane_drive;
-    followers[i].emplace(map, drive.route, drive.path, actor.body, drive.desired_speed,
-                         drive.initial_speed, false);
+    followers[i].emplace(map, drive.route, drive.path, drive.places, actor.body,
+                         drive.desired_speed, drive.initial_speed, false);
   }
   return followers;
+}
+
+// Actor k's lane this step: a lane follower knows it from its route (the tracker is told, for
+// when it leaves the centre lines to change lane); every other actor's tracker looks. An absent
+// flow vehicle is on no lane; its tracker starts afresh when it enters.
+LaneFix lane_fix_of(std::size_t k, const RoadMap& map, const KinematicState& state, bool present,
+                    const std::vector<std::optional<LaneFollower>>& followers,
+                    const BackgroundTraffic& traffic, std::size_t first_flow,
+                    LaneTracker& tracker) {
+  if (!present) return {};
+  const LaneFollower* follower = nullptr;
+  if (k >= 1 && k <= followers.size() && followers[k - 1]) follower = &*followers[k - 1];
+  if (k >= first_flow) follower = traffic.follower(k - first_flow);
+  if (follower != nullptr)
+    if (std::optional<LaneFix> fix = follower->lane_fix()) {
+      tracker.assume(*fix);
+      return *fix;
+    }
+  return tracker.update(map, {state.x, state.y}, state.heading);
 }
 
 }  // namespace
@@ -380,9 +399,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
 
     trace.time.push_back(t);
     for (std::size_t k = 0; k < actor_count; ++k) {
-      // An absent flow vehicle is on no lane; its tracker starts afresh when it enters.
-      fixes[k] = present[k] ? lanes[k].update(map, {states[k].x, states[k].y}, states[k].heading)
-                            : LaneFix{};
+      fixes[k] =
+          lane_fix_of(k, map, states[k], present[k] != 0, followers, traffic, first_flow, lanes[k]);
       append_sample(trace.actors[k], states[k], fixes[k]);
     }
     // The ego's signals are what it decided at the last step, until its driver decides below.

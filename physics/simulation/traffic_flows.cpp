@@ -274,8 +274,9 @@ std::optional<FlowPlan> prepare_flow(const TrafficFlow& flow, std::span<const do
                                            " m long; it sends no vehicles");
     return std::nullopt;
   }
-  Polyline path = round_corners(route_path(map, *route), planning_radius(flow_vehicle_body()));
-  return FlowPlan{flow.name, flow.location, *route, std::move(path),
+  std::vector<PathPlace> places;
+  Polyline path = rounded_route_path(map, *route, 0, planning_radius(flow_vehicle_body()), places);
+  return FlowPlan{flow.name, flow.location, *route, std::move(path),          std::move(places),
                   *rate,     *speed,        seed,   junctions_on(map, *route)};
 }
 

@@ -5,7 +5,9 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
+#include "physics/map/builtin_maps.hpp"
 #include "simulation_fixtures.hpp"
 
 namespace scenfuzz {
@@ -178,6 +180,30 @@ TEST(LaneFollowerTest, CrossingTrafficAtASignalisedJunctionNeverCollidesOverTwoM
     if (std::hypot(x, y) > 60 && x * std::cos(heading) + y * std::sin(heading) > 0) ++crossed;
   }
   EXPECT_EQ(crossed, 12) << "every car should have got through the junction in two minutes";
+}
+
+// A follower's lane comes from its route, not from asking the map: turning left through the
+// crossroads it is on the route's lanes in the route's order (the left-turn connector, not the
+// straight-on one that begins at the same point with the same heading), and its s is where it
+// projects onto that lane's centre line.
+TEST(LaneFollowerTest, KnowsItsLaneFromItsRouteThroughAJunction) {
+  std::string text = scenario_text(
+      "crossroads",
+      kQuietEgo + "turner = Vehicle((\"west_in_1\"->60, , 10), , (\"north_out_1\"->60));\n",
+      "turner");
+  auto run = simulate_text(text, lasting(60));
+  ASSERT_TRUE(run.trace) << run.errors;
+  const TraceActor& turner = run.trace->actors[1];
+  const RoadMap map = build_road_map(generate_builtin_map("crossroads", {}));
+  std::vector<std::string> visited;
+  for (std::size_t i = 0; i < turner.lane.size(); ++i) {
+    ASSERT_GE(turner.lane[i], 0) << "sample " << i;
+    const Lane& lane = map.lane(static_cast<LaneIndex>(turner.lane[i]));
+    if (visited.empty() || visited.back() != lane.id) visited.push_back(lane.id);
+    const PolylineProjection on = lane.centre_line.project({turner.x[i], turner.y[i]});
+    EXPECT_NEAR(turner.s[i], on.s, 0.02) << lane.id << " sample " << i;
+  }
+  EXPECT_EQ(visited, (std::vector<std::string>{"west_in_1", "west_north_1", "north_out_1"}));
 }
 
 }  // namespace

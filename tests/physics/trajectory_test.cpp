@@ -3,11 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 #include "physics/map/builtin_maps.hpp"
 
@@ -249,6 +251,51 @@ TEST_F(TrajectoryRoutes, LateralOffsetIsHonoured) {
   EXPECT_THROW(route_path(map, LaneRoute{}, 0), std::invalid_argument);
   EXPECT_THROW(route_path(map, LaneRoute{{{lane(map, "east_0"), 5, 5}}, 0, 0}),
                std::invalid_argument);
+}
+
+// route_path says where each of its points lies on the route: on the lane of its route segment
+// at that lane's s (the point drawn there), except in a lane change's sideways move; rounding the
+// corners places a moved point where it projects onto its lane.
+TEST_F(TrajectoryRoutes, PlacesSayWhereEachPointLiesOnTheRoute) {
+  RoadMap map = builtin("straight");
+  LaneRoute change{{{lane(map, "east_0"), 0, 100}, {lane(map, "east_1"), 100, 200}}, 200, 1};
+  std::vector<PathPlace> places;
+  Polyline path = route_path(map, change, 0, 40, 2, &places);
+  ASSERT_EQ(places.size(), path.points().size());
+  int aside = 0;
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    const RouteSegment& on = change.segments[places[i].segment];
+    if (!places[i].on_lane) {
+      ++aside;
+      EXPECT_GT(path.points()[i].x, 60 - 1e-9) << i;  // the move runs from x = 60 to 100
+      EXPECT_LT(path.points()[i].x, 100 + 1e-9) << i;
+      continue;
+    }
+    const MapPoint drawn = map.lane(on.lane).centre_line.point_at(places[i].s);
+    EXPECT_NEAR(distance(drawn, path.points()[i]), 0, 1e-9) << i;
+  }
+  EXPECT_EQ(aside, 20);  // 40 m at 2 m: the points inside the move and its end
+  // Beside the centre line by more than kOnLaneLateral, no point is surely on its lane.
+  route_path(map, LaneRoute{{{lane(map, "east_0"), 20, 120}}, 100, 0}, 1.0, 30, 5, &places);
+  EXPECT_TRUE(std::none_of(places.begin(), places.end(),
+                           [](const PathPlace& place) { return place.on_lane; }));
+
+  RoadMap crossroads = builtin("crossroads");
+  auto turn = find_route(crossroads, LanePosition{lane(crossroads, "west_in_1"), 100},
+                         LanePosition{lane(crossroads, "north_out_1"), 50});
+  ASSERT_TRUE(turn);
+  const Polyline drawn = route_path(crossroads, *turn);
+  const Polyline rounded = rounded_route_path(crossroads, *turn, 0, 15, places);
+  ASSERT_EQ(places.size(), rounded.points().size());
+  int moved = 0;
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    ASSERT_TRUE(places[i].on_lane) << i << " of " << places.size() << " at "
+                                   << rounded.points()[i].x << "," << rounded.points()[i].y;
+    if (!(rounded.points()[i] == drawn.points()[i])) ++moved;
+    const Polyline& centre = crossroads.lane(turn->segments[places[i].segment].lane).centre_line;
+    EXPECT_NEAR(centre.project(rounded.points()[i]).s, places[i].s, 1e-6) << i;
+  }
+  EXPECT_GT(moved, 5) << "a 15 m radius should round the left turn's corners";
 }
 
 TEST_F(TrajectoryRoutes, LeftTurnThroughTheCrossroadsFollowsTheConnector) {
