@@ -56,13 +56,13 @@ double fourth_power(double x) {
 }  // namespace
 
 LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
-                           std::vector<PathPlace> places, const ActorClass& body,
+                           std::span<const PathPlace> places, const ActorClass& body,
                            double desired_speed, double initial_speed, bool leaves_at_end,
                            const FollowerSettings& settings)
     : map_(&map),
       route_(std::move(route)),
       path_(std::move(path)),
-      places_(std::move(places)),
+      places_(places),
       body_(body),
       desired_speed_(std::min(desired_speed, body.max_speed)),
       leaves_at_end_(leaves_at_end),

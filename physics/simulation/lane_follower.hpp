@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -62,10 +63,11 @@ class LaneFollower {
   // Drives `path` (drawn from `route` by route_path, so that its arc length is the route's
   // distance) from its start at `initial_speed`, aiming for `desired_speed`. At the path's end it
   // stops there, or, when `leaves_at_end`, drives on out of the world (finished()).
-  // `places`, route_path's for `path` (empty when not known), say which lane it is on where.
-  LaneFollower(const RoadMap& map, LaneRoute route, Polyline path, std::vector<PathPlace> places,
-               const ActorClass& body, double desired_speed, double initial_speed,
-               bool leaves_at_end, const FollowerSettings& settings = {});
+  // `places`, route_path's for `path` (empty when not known), say which lane it is on where; they
+  // are read, not copied (a flow's vehicles share theirs), and must outlive the follower.
+  LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
+               std::span<const PathPlace> places, const ActorClass& body, double desired_speed,
+               double initial_speed, bool leaves_at_end, const FollowerSettings& settings = {});
 
   // Before the first step: puts it `progress` metres along its path instead of at its start, at
   // the same speed, or the most the bends ahead allow (a background-traffic vehicle already on
@@ -168,12 +170,12 @@ class LaneFollower {
   const RoadMap* map_;
   LaneRoute route_;
   Polyline path_;
-  std::vector<PathPlace> places_;     // of path_'s points (lane_fix), or none
-  LazyHeadings headings_;             // of each path segment, computed where needed
-  PolylineBoxes boxes_;               // of runs of path segments, for nearest_on_path
-  SegmentFrames frames_;              // of path segments, for nearest_on_path's projections
-  std::vector<double> route_starts_;  // route distance where each route segment begins
-  std::vector<LaneIndex> watched_;    // on_lanes_ahead's lanes, ascending
+  std::span<const PathPlace> places_;  // of path_'s points (lane_fix), or none
+  LazyHeadings headings_;              // of each path segment, computed where needed
+  PolylineBoxes boxes_;                // of runs of path segments, for nearest_on_path
+  SegmentFrames frames_;               // of path segments, for nearest_on_path's projections
+  std::vector<double> route_starts_;   // route distance where each route segment begins
+  std::vector<LaneIndex> watched_;     // on_lanes_ahead's lanes, ascending
   std::size_t watched_first_ = 1, watched_last_ = 0;  // the route segments they are of
   BendEnvelope envelope_;       // at each vertex: the most speed from which the bends ahead can be
                                 // taken at comfortable deceleration
