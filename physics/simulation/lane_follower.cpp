@@ -485,77 +485,106 @@ PolylineProjection LaneFollower::beyond_end(MapPoint point, double reach) const 
 
 // Actor k as something to stop behind: where it is, or where it will be within the prediction
 // time (standing there), whichever is nearer along the path; nullopt when neither is in the path
-// ahead. A vehicle coming the other way counts as standing.
+// ahead. A vehicle coming the other way counts as standing. Between where it is and where it will
+// be, points no farther apart than the reach are searched too: a car crossing the path (in a
+// junction, both on green) is on one side of it now and on the other 1.5 s on, and would be seen
+// by neither end.
 std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& world,
                                                         std::uint32_t k) {
   if (surely_not_in_path(world, k)) return std::nullopt;
-  const double lookahead = this->lookahead();
   const KinematicState& other = world.states[k];
   const bool moving = other.speed > kPredictedMinSpeed;
   const double tau = moving ? settings_.prediction_time : 0;
-  const double velocity = longitudinal_velocity(other);
-  // Where it will be: the simulation's prediction for every follower of the step when it made one
-  // for this horizon, else the same computed here.
-  const MapPoint points[] = {{other.x, other.y}, predicted_of(world, k)};
   if (hints_.size() < 2 * world.states.size()) {
     hints_.resize(2 * world.states.size(), 0);
     starts_.resize(2 * world.states.size(), 0);
   }
-  const double half_width = body_.width / 2;
   const double reach =
-      half_width + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
-  std::optional<Stop> best;
-  const int points_searched = tau > 0 && !behind_in_lane(world, k) ? 2 : 1;
-  for (int which = 0; which < points_searched; ++which) {
-    // Where it will be cannot be nearer than where it is when the path is too far along there
-    // (most leaders drive on ahead): the search would be rejected by the gap test below.
-    if (best &&
-        surely_no_nearer(points[which], reach, (world.lengths[k] + world.widths[k]) / 2, best->gap))
-      break;
-    const double until = s_ + lookahead;
-    const std::size_t slot = 2 * std::size_t{k} + static_cast<std::size_t>(which);
-    std::uint32_t& hint = hints_[slot];
-    std::uint32_t& start = starts_[slot];
-    double known = kInfinity;
-    std::size_t first = 0;
-    if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
-      // The segment nearest at the last look, as it is: walking on to a nearer neighbour cost
-      // more than the tighter bound saved (measured).
-      const std::size_t near = hint - 1;
-      known = std::sqrt(frames_.distance_squared(path_, points[which], near));
-      first = first_within_from(points[which], std::min(reach, known), near);
-    } else if (start != 0) {
-      first = first_within_from(points[which], reach, start - 1);
-    } else {
-      first = first_within(points[which], reach);
-    }
-    start = static_cast<std::uint32_t>(first + 1);
-    PolylineProjection nearest =
-        nearest_on_path(path_, boxes_, frames_, points[which], first, until, reach, known);
-    if (!std::isfinite(nearest.distance) && !leaves_at_end_ && path_.length() <= until)
-      nearest = beyond_end(points[which], reach);
-    hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;
-    if (!std::isfinite(nearest.distance) || nearest.s <= s_) continue;
-    double relative =
-        angle_difference(other.heading, heading_of(headings_, path_, nearest.segment));
-    double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
-                    std::abs(std::cos(relative)) * world.widths[k] / 2;
-    double along = std::abs(std::cos(relative)) * world.lengths[k] / 2 +
-                   std::abs(std::sin(relative)) * world.widths[k] / 2;
-    if (std::abs(nearest.lateral) > half_width + across + settings_.path_margin) continue;
-    double gap = nearest.s - s_ - body_.length / 2 - along;
-    if (gap < -along) continue;  // beside it, not ahead
-    if (best && gap >= best->gap) continue;
-    double speed_along =
-        which == 1
-            ? 0
-            : std::max(0.0, velocity * std::cos(angle_difference(other.heading, state_.heading)));
-    best = Stop{gap, settings_.standstill_gap, speed_along,
-                world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
-                                                             : FollowerReason::leader,
-                which == 1};
+      body_.width / 2 + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
+  const MapPoint here{other.x, other.y};
+  std::optional<Stop> best = stop_at(world, k, here, 0, reach, std::nullopt);
+  if (!(tau > 0) || behind_in_lane(world, k)) return best;
+  // Where it will be: the simulation's prediction for every follower of the step when it made one
+  // for this horizon, else the same computed here.
+  const MapPoint there = predicted_of(world, k);
+  const double way = distance(here, there);
+  const int between = may_cross(world, k, way) ? static_cast<int>(std::ceil(way / reach)) - 1 : 0;
+  for (int j = 1; j <= between; ++j) {
+    const double fraction = static_cast<double>(j) / (between + 1);
+    const MapPoint on_the_way{here.x + fraction * (there.x - here.x),
+                              here.y + fraction * (there.y - here.y)};
+    best = stop_at(world, k, on_the_way, 2, reach, best);
   }
-  return best;
+  return stop_at(world, k, there, 1, reach, best);
+}
+
+// Whether actor k may cross this follower's path on its next `way` metres: off the lanes, in a
+// junction, or about to enter one. On a road's lane it keeps to it, or moves aside slowly (a lane
+// change takes seconds): where it is and where it will be then say all there is.
+bool LaneFollower::may_cross(const WorldSnapshot& world, std::uint32_t k, double way) const {
+  if (world.lanes.size() <= k || world.lanes[k].lane < 0) return true;
+  const Lane& lane = map_->lane(static_cast<LaneIndex>(world.lanes[k].lane));
+  if (lane.junction) return true;
+  if (lane.length() - world.lanes[k].s >= way) return false;
+  return std::any_of(lane.successors.begin(), lane.successors.end(),
+                     [&](LaneIndex next) { return map_->lane(next).junction.has_value(); });
+}
+
+// in_path's search for actor k at `point` (`which`: 0 where it is, 1 where it will be, 2 on its
+// way there, standing at either of the last two): the nearer of that stop and `best`.
+std::optional<LaneFollower::Stop> LaneFollower::stop_at(const WorldSnapshot& world, std::uint32_t k,
+                                                        MapPoint point, int which, double reach,
+                                                        std::optional<Stop> best) {
+  const KinematicState& other = world.states[k];
+  // Where it will be cannot be nearer than where it is when the path is too far along there
+  // (most leaders drive on ahead): the search would be rejected by the gap test below.
+  if (best && surely_no_nearer(point, reach, (world.lengths[k] + world.widths[k]) / 2, best->gap))
+    return best;
+  const double until = s_ + lookahead();
+  // Where it is and where it will be keep the nearest segment and first_within's answer of the
+  // last look as hints (their slots); points on its way are searched afresh.
+  std::uint32_t unhinted = 0, unstarted = 0;
+  const std::size_t slot = 2 * std::size_t{k} + static_cast<std::size_t>(which == 1);
+  std::uint32_t& hint = which == 2 ? unhinted : hints_[slot];
+  std::uint32_t& start = which == 2 ? unstarted : starts_[slot];
+  double known = kInfinity;
+  std::size_t first = 0;
+  if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
+    // The segment nearest at the last look, as it is: walking on to a nearer neighbour cost
+    // more than the tighter bound saved (measured).
+    const std::size_t near = hint - 1;
+    known = std::sqrt(frames_.distance_squared(path_, point, near));
+    first = first_within_from(point, std::min(reach, known), near);
+  } else if (start != 0) {
+    first = first_within_from(point, reach, start - 1);
+  } else {
+    first = first_within(point, reach);
+  }
+  start = static_cast<std::uint32_t>(first + 1);
+  PolylineProjection nearest =
+      nearest_on_path(path_, boxes_, frames_, point, first, until, reach, known);
+  if (!std::isfinite(nearest.distance) && !leaves_at_end_ && path_.length() <= until)
+    nearest = beyond_end(point, reach);
+  hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;
+  if (!std::isfinite(nearest.distance) || nearest.s <= s_) return best;
+  const double half_width = body_.width / 2;
+  double relative = angle_difference(other.heading, heading_of(headings_, path_, nearest.segment));
+  double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
+                  std::abs(std::cos(relative)) * world.widths[k] / 2;
+  double along = std::abs(std::cos(relative)) * world.lengths[k] / 2 +
+                 std::abs(std::sin(relative)) * world.widths[k] / 2;
+  if (std::abs(nearest.lateral) > half_width + across + settings_.path_margin) return best;
+  double gap = nearest.s - s_ - body_.length / 2 - along;
+  if (gap < -along) return best;  // beside it, not ahead
+  if (best && gap >= best->gap) return best;
+  double speed_along =
+      which != 0 ? 0
+                 : std::max(0.0, longitudinal_velocity(other) *
+                                     std::cos(angle_difference(other.heading, state_.heading)));
+  return Stop{gap, settings_.standstill_gap, speed_along,
+              world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
+                                                           : FollowerReason::leader,
+              which != 0};
 }
 
 void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,

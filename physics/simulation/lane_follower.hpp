@@ -130,6 +130,9 @@ class LaneFollower {
   void watch_lanes(const LaneOccupancy& occupancy, double from, double to);
   bool behind_in_lane(const WorldSnapshot& world, std::uint32_t k) const;
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
+  std::optional<Stop> stop_at(const WorldSnapshot& world, std::uint32_t k, MapPoint point,
+                              int which, double reach, std::optional<Stop> best);
+  bool may_cross(const WorldSnapshot& world, std::uint32_t k, double way) const;
   PolylineProjection beyond_end(MapPoint point, double reach) const;
   MapPoint predicted_of(const WorldSnapshot& world, std::uint32_t k) const;
   // in_path's first tests, inlined into the scan: whether actor k is surely not in the path
