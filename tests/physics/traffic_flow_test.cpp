@@ -34,6 +34,15 @@ std::string straight_scenario(const std::string& map, const std::string& ego,
 // The ego stands at the start of a lane the flows do not use.
 const std::string kParkedEgo = "(\"west_0\"->480, , 0), (\"west_0\"->490)";
 
+// corpora/benchmarks/san_francisco_100_background.avu: eight flows crossing in junctions.
+std::optional<SourceFile> background_benchmark() {
+  return read_source_file((std::filesystem::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "benchmarks" /
+                           "san_francisco_100_background.avu")
+                              .string());
+}
+
+MapSearchPath apollo_maps() { return map_search_path({test::shared_dir() / "maps" / "apollo"}); }
+
 SimulationOptions lasting(double duration, std::uint64_t seed = 1) {
   SimulationOptions options;
   options.duration = duration;
@@ -227,8 +236,7 @@ TEST(TrafficFlowTest, SanFranciscoTwentyBackgroundVehiclesForSixtySecondsNeverCo
       "scenario = CreateScenario{load(\"san_francisco\");\nego;\n{};\n{};\n{};\n{};\n"
       "{Flow(\"lane_90\", 600, 10), Flow(\"lane_655\", 600, 11), Flow(\"lane_611\", 500, 9),"
       " Flow(\"lane_480\", 500, 10)}};\n";
-  auto run = test::simulate_file(SourceFile("sf.avu", text), lasting(60),
-                                 map_search_path({test::shared_dir() / "maps" / "apollo"}));
+  auto run = test::simulate_file(SourceFile("sf.avu", text), lasting(60), apollo_maps());
   ASSERT_TRUE(run.trace) << run.errors;
   const Trace& trace = *run.trace;
   std::size_t present = 0;
@@ -260,13 +268,11 @@ TEST(TrafficFlowTest, SanFranciscoTwentyBackgroundVehiclesForSixtySecondsNeverCo
 // pre-filled there now, and those starts are quiet.
 TEST(TrafficFlowTest, NoCarIsPrefilledInAJunctionOrTooNearOneToStop) {
   SCENFUZZ_REQUIRE_SHARED_DIR();
-  const auto file = std::filesystem::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "benchmarks" /
-                    "san_francisco_100_background.avu";
-  auto source = read_source_file(file.string());
+  auto source = background_benchmark();
   ASSERT_TRUE(source);
   auto parsed = avunit::parse(*source);
   ASSERT_TRUE(parsed.ok());
-  const MapSearchPath maps = map_search_path({test::shared_dir() / "maps" / "apollo"});
+  const MapSearchPath maps = apollo_maps();
   RoadMap map = load_scenario_map(parsed.scenario.map, maps, {});
   const ActorClass body = flow_vehicle_body();
   std::size_t prefilled = 0, junctions = 0;
@@ -301,16 +307,13 @@ TEST(TrafficFlowTest, NoCarIsPrefilledInAJunctionOrTooNearOneToStop) {
 // flows meet in junctions. A follower looked at where a crossing car is and where it will be
 // 1.5 s on: a car about to cross its path is off the path at both (seed 17: flow6.1 drove on into
 // flow5.11's side at 42.45 s; seed 59: flow4.1 into flow8.6's at 33.95 s). Points in between are
-// looked at too, and both runs are quiet for a minute.
+// looked at too, and both runs are quiet past those times.
 TEST(TrafficFlowTest, FollowersSeeACarCrossingTheirPathBetweenWhereItIsAndWhereItWillBe) {
   SCENFUZZ_REQUIRE_SHARED_DIR();
-  const auto file = std::filesystem::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "benchmarks" /
-                    "san_francisco_100_background.avu";
-  auto source = read_source_file(file.string());
+  auto source = background_benchmark();
   ASSERT_TRUE(source);
-  const MapSearchPath maps = map_search_path({test::shared_dir() / "maps" / "apollo"});
   for (std::uint64_t seed : {17u, 59u}) {
-    auto run = test::simulate_file(*source, lasting(45, seed), maps);
+    auto run = test::simulate_file(*source, lasting(45, seed), apollo_maps());
     ASSERT_TRUE(run.trace) << run.errors;
     EXPECT_EQ(npc_collisions(*run.trace), 0)
         << "seed " << seed << ": " << npc_collision_text(*run.trace);
