@@ -502,7 +502,7 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
   const double reach =
       body_.width / 2 + world.lengths[k] / 2 + world.widths[k] / 2 + settings_.path_margin;
   const MapPoint here{other.x, other.y};
-  std::optional<Stop> best = stop_at(world, k, here, 0, reach, std::nullopt);
+  std::optional<Stop> best = stop_at(world, k, here, Sighting::is, reach, std::nullopt);
   if (!(tau > 0) || behind_in_lane(world, k)) return best;
   // Where it will be: the simulation's prediction for every follower of the step when it made one
   // for this horizon, else the same computed here.
@@ -513,9 +513,9 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
     const double fraction = static_cast<double>(j) / (between + 1);
     const MapPoint on_the_way{here.x + fraction * (there.x - here.x),
                               here.y + fraction * (there.y - here.y)};
-    best = stop_at(world, k, on_the_way, 2, reach, best);
+    best = stop_at(world, k, on_the_way, Sighting::on_the_way, reach, best);
   }
-  return stop_at(world, k, there, 1, reach, best);
+  return stop_at(world, k, there, Sighting::will_be, reach, best);
 }
 
 // Whether actor k may cross this follower's path on its next `way` metres: off the lanes, in a
@@ -530,11 +530,11 @@ bool LaneFollower::may_cross(const WorldSnapshot& world, std::uint32_t k, double
                      [&](LaneIndex next) { return map_->lane(next).junction.has_value(); });
 }
 
-// in_path's search for actor k at `point` (`which`: 0 where it is, 1 where it will be, 2 on its
-// way there, standing at either of the last two): the nearer of that stop and `best`.
+// in_path's search for actor k at `point` (where it is, where it will be, or on its way there;
+// standing at either of the last two): the nearer of that stop and `best`.
 std::optional<LaneFollower::Stop> LaneFollower::stop_at(const WorldSnapshot& world, std::uint32_t k,
-                                                        MapPoint point, int which, double reach,
-                                                        std::optional<Stop> best) {
+                                                        MapPoint point, Sighting which,
+                                                        double reach, std::optional<Stop> best) {
   const KinematicState& other = world.states[k];
   // Where it will be cannot be nearer than where it is when the path is too far along there
   // (most leaders drive on ahead): the search would be rejected by the gap test below.
@@ -544,9 +544,10 @@ std::optional<LaneFollower::Stop> LaneFollower::stop_at(const WorldSnapshot& wor
   // Where it is and where it will be keep the nearest segment and first_within's answer of the
   // last look as hints (their slots); points on its way are searched afresh.
   std::uint32_t unhinted = 0, unstarted = 0;
-  const std::size_t slot = 2 * std::size_t{k} + static_cast<std::size_t>(which == 1);
-  std::uint32_t& hint = which == 2 ? unhinted : hints_[slot];
-  std::uint32_t& start = which == 2 ? unstarted : starts_[slot];
+  const std::size_t slot =
+      2 * std::size_t{k} + static_cast<std::size_t>(which == Sighting::will_be);
+  std::uint32_t& hint = which == Sighting::on_the_way ? unhinted : hints_[slot];
+  std::uint32_t& start = which == Sighting::on_the_way ? unstarted : starts_[slot];
   double known = kInfinity;
   std::size_t first = 0;
   if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
@@ -578,13 +579,14 @@ std::optional<LaneFollower::Stop> LaneFollower::stop_at(const WorldSnapshot& wor
   if (gap < -along) return best;  // beside it, not ahead
   if (best && gap >= best->gap) return best;
   double speed_along =
-      which != 0 ? 0
-                 : std::max(0.0, longitudinal_velocity(other) *
-                                     std::cos(angle_difference(other.heading, state_.heading)));
+      which != Sighting::is
+          ? 0
+          : std::max(0.0, longitudinal_velocity(other) *
+                              std::cos(angle_difference(other.heading, state_.heading)));
   return Stop{gap, settings_.standstill_gap, speed_along,
               world.kinds[k] == TraceActorKind::pedestrian ? FollowerReason::pedestrian
                                                            : FollowerReason::leader,
-              which != 0};
+              which != Sighting::is};
 }
 
 void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,

@@ -130,8 +130,10 @@ class LaneFollower {
   void watch_lanes(const LaneOccupancy& occupancy, double from, double to);
   bool behind_in_lane(const WorldSnapshot& world, std::uint32_t k) const;
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
+  // Where in_path looks for an actor: where it is, where it will be, or on its way there.
+  enum class Sighting { is, will_be, on_the_way };
   std::optional<Stop> stop_at(const WorldSnapshot& world, std::uint32_t k, MapPoint point,
-                              int which, double reach, std::optional<Stop> best);
+                              Sighting which, double reach, std::optional<Stop> best);
   bool may_cross(const WorldSnapshot& world, std::uint32_t k, double way) const;
   PolylineProjection beyond_end(MapPoint point, double reach) const;
   MapPoint predicted_of(const WorldSnapshot& world, std::uint32_t k) const;
