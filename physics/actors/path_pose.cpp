@@ -139,6 +139,33 @@ KinematicState state_on_segment(const Polyline& path, std::span<const double> he
 
 }  // namespace
 
+VertexBlend vertex_blend(const Polyline& path, std::span<const double> headings,
+                         std::size_t vertex) {
+  return {blend_half_width(path, vertex), angle_difference(headings[vertex], headings[vertex - 1])};
+}
+
+// direction_on's heading and state_on_segment's position, in their arithmetic.
+MapPose pose_on_segment(const Polyline& path, std::span<const double> headings,
+                        std::span<const VertexBlend> blends, std::size_t segment, double s) {
+  const auto& arc = path.arc_lengths();
+  const MapPoint& a = path.points()[segment];
+  const MapPoint& b = path.points()[segment + 1];
+  const double from_start = s - arc[segment];
+  const double to_end = arc[segment + 1] - s;
+  const double t = from_start / (arc[segment + 1] - arc[segment]);
+  const MapPoint position{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+  const double heading = headings[segment];
+  if (segment > 0 && from_start < blends[segment].half_width) {
+    const VertexBlend& blend = blends[segment];
+    return {position, wrap_angle(heading - 0.5 * blend.turn * (1 - from_start / blend.half_width))};
+  }
+  if (segment + 1 < path.segment_count() && to_end < blends[segment + 1].half_width) {
+    const VertexBlend& blend = blends[segment + 1];
+    return {position, wrap_angle(heading + 0.5 * blend.turn * (1 - to_end / blend.half_width))};
+  }
+  return {position, heading};
+}
+
 KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
                              double speed, double acceleration) {
   s = std::clamp(s, 0.0, path.length());

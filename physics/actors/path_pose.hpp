@@ -54,4 +54,19 @@ KinematicState state_on_path(const Polyline& path, std::span<const double> headi
 KinematicState state_on_path(const Polyline& path, std::span<const double> headings, double s,
                              double speed, double acceleration, std::size_t hint);
 
+// The blend at interior vertex `vertex`: its half width and the turn from segment vertex - 1's
+// heading to segment vertex's, which state_on_path works out at every call. An actor asking for
+// its pose at every step (a lane follower) keeps them.
+struct VertexBlend {
+  double half_width = 0;
+  double turn = 0;
+};
+VertexBlend vertex_blend(const Polyline& path, std::span<const double> headings,
+                         std::size_t vertex);
+
+// state_on_path's position and heading at s (within the path) on `segment`, bit for bit, from
+// the kept blends of the segment's two vertices (`blends` by vertex: those two must be known).
+MapPose pose_on_segment(const Polyline& path, std::span<const double> headings,
+                        std::span<const VertexBlend> blends, std::size_t segment, double s);
+
 }  // namespace scenfuzz

@@ -5,12 +5,9 @@
 
 namespace scenfuzz {
 
-double angle_difference(double a, double b) {
-  // Already in (-pi, pi]: remainder would return it unchanged (it is exact, and rounds the half
-  // turn at +-pi to the even quotient 0), so skip glibc's slow remainder. Every scripted actor's
-  // heading goes through here at every step.
-  const double raw = a - b;
-  if (raw > -std::numbers::pi && raw <= std::numbers::pi) return raw;
+// remainder is exact, and rounds the half turn at +-pi to the even quotient 0: the result is in
+// [-pi, pi], and -pi is turned into pi.
+double wrapped_difference(double raw) {
   double difference = std::remainder(raw, 2 * std::numbers::pi);
   if (difference <= -std::numbers::pi) difference += 2 * std::numbers::pi;
   return difference;

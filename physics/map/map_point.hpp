@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 
 namespace scenfuzz {
 
@@ -25,7 +26,16 @@ inline double distance(MapPoint a, MapPoint b) {
   return std::sqrt(dx * dx + dy * dy);
 }
 
-// The angle a - b wrapped to (-pi, pi].
-double angle_difference(double a, double b);
+// a - b wrapped to (-pi, pi] when it lies outside (angle_difference's rare case).
+double wrapped_difference(double raw);
+
+// The angle a - b wrapped to (-pi, pi]. Inline: the simulation asks for it tens of times per
+// actor and step, and nearly always a - b is already in range (then it is returned as it is:
+// remainder would return it unchanged).
+inline double angle_difference(double a, double b) {
+  const double raw = a - b;
+  if (raw > -std::numbers::pi && raw <= std::numbers::pi) return raw;
+  return wrapped_difference(raw);
+}
 
 }  // namespace scenfuzz

@@ -72,6 +72,7 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   SCENFUZZ_DEMAND(path_.segment_count() > 0);
   SCENFUZZ_DEMAND(places_.empty() || places_.size() == path_.points().size());
   headings_ = lazy_headings(path_);
+  blends_.resize(path_.points().size());
   frames_.reserve(path_.segment_count());
   double lateral = body_.comfortable_lateral_acceleration > 0
                        ? body_.comfortable_lateral_acceleration
@@ -817,6 +818,9 @@ void LaneFollower::make_headings_known() {
   constexpr std::size_t kHeadingRun = 16;  // segments ahead whose headings are computed at once
   headed_until_ = segment_ + 2 + kHeadingRun;
   ensure_headings(headings_, path_, segment_ > 0 ? segment_ - 1 : 0, headed_until_ - 1);
+  const std::size_t last = std::min(headed_until_ - 1, path_.segment_count() - 1);
+  for (std::size_t vertex = std::max<std::size_t>(segment_, 1); vertex <= last; ++vertex)
+    blends_[vertex] = vertex_blend(path_, headings_.values, vertex);
 }
 
 void LaneFollower::advance(double acceleration, double dt) {
@@ -835,9 +839,15 @@ void LaneFollower::advance(double acceleration, double dt) {
     if (!leaves_at_end_) next = 0;
   }
   segment_ = segment_at_from(path_, s_, segment_);
-  // state_on_path reads the headings of segment_ and its neighbours (the blends at its ends).
+  // The pose reads the headings of segment_ and its neighbours (the blends at its ends).
   if (segment_ + 1 >= headed_until_) make_headings_known();
-  state_ = state_on_path(path_, headings_.values, s_, next, (next - v) / dt, segment_);
+  const MapPose pose = pose_on_segment(path_, headings_.values, blends_, segment_, s_);
+  state_ = KinematicState{};
+  state_.x = pose.position.x;
+  state_.y = pose.position.y;
+  state_.heading = pose.heading;
+  state_.speed = next;
+  state_.acceleration = (next - v) / dt;
   state_.yaw_rate = step_yaw_rate(heading, state_.heading, dt);
   // At a standstill the brakes hold without effort: no braking is carried into setting off.
   applied_ = next == 0 && acceleration < 0 ? 0 : acceleration;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "physics/actors/actor_class.hpp"
+#include "physics/actors/path_pose.hpp"
 #include "physics/actors/trajectory.hpp"
 #include "physics/map/junction_stretch.hpp"
 #include "physics/map/lane_route.hpp"
@@ -211,8 +212,10 @@ class LaneFollower {
   double s_ = 0;
   std::size_t segment_ = 0;  // path_.segment_at(s_), kept as s_ moves on (segment_walk.hpp)
   // The headings of the path segments from segment_ - 1 up to (not including) this one are
-  // known: advance computes them a run ahead at a time, so that most steps only compare.
+  // known, and the blends of the vertices from segment_ up to it: advance computes them a run
+  // ahead at a time, so that most steps only compare.
   std::size_t headed_until_ = 0;
+  std::vector<VertexBlend> blends_;  // by vertex (path_pose.hpp), where known
   // cos and sin of state_.heading (update_facing), for the scans; NaN: not taken yet.
   MapPoint facing_{1, 0};
   double facing_heading_ = std::numeric_limits<double>::quiet_NaN();  // whose they are
