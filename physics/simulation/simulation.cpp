@@ -26,6 +26,7 @@
 #include "physics/simulation/observed_manoeuvre.hpp"
 #include "physics/simulation/plugin_observation.hpp"
 #include "physics/simulation/predicted_points.hpp"
+#include "physics/simulation/sample_columns.hpp"
 #include "physics/simulation/simulation_limits.hpp"
 #include "physics/simulation/traffic_flows.hpp"
 #include "physics/simulation/traffic_signals.hpp"
@@ -55,20 +56,6 @@ BodyGeometry body_geometry(const ActorClass& body) {
   return {BodyShape::box, body.length, body.width, body.height};
 }
 
-// Not inlined into simulate, so that the column appends inline here: inside simulate (too big
-// for more inlining) each push_back stayed a call, 4 % of a 10-actor run's instructions.
-[[gnu::noinline]] void append_sample(TraceActor& actor, const KinematicState& state, LaneFix lane) {
-  actor.x.push_back(state.x);
-  actor.y.push_back(state.y);
-  actor.heading.push_back(state.heading);
-  actor.speed.push_back(state.speed);
-  actor.acceleration.push_back(state.acceleration);
-  actor.yaw_rate.push_back(state.yaw_rate);
-  actor.lane.push_back(lane.lane);
-  actor.s.push_back(lane.s);
-  actor.reversing.push_back(state.reversing ? 1 : 0);
-}
-
 // A scripted actor's state at t, one step of dt after `before` (null at the first sample, which
 // has no step before it). Trajectory::state_at gives the path's instantaneous turn rate, speed x
 // curvature; the trace records the heading's change over the step instead (step_yaw_rate), as the
@@ -90,17 +77,6 @@ const std::vector<WorldObject>& present_objects(const std::vector<WorldObject>& 
   for (const WorldObject& object : truth)
     if (present[object.id]) out.push_back(object);
   return out;
-}
-
-// Not inlined into simulate, for the reason append_sample is not.
-[[gnu::noinline]] void append_perceived(PerceivedActor& column, const WorldObject* seen) {
-  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  column.detected.push_back(seen ? 1 : 0);
-  column.x.push_back(seen ? seen->x : nan);
-  column.y.push_back(seen ? seen->y : nan);
-  column.heading.push_back(seen ? seen->heading : nan);
-  column.speed.push_back(seen ? seen->speed : nan);
-  column.reversing.push_back(seen && seen->reversing ? 1 : 0);
 }
 
 // The ego's signals from a plugin's control: its word when it speaks version 2 or later (an
@@ -137,27 +113,6 @@ struct ColourRuns {
 };
 
 // Room for every sample the run can take, so that recording never reallocates mid-run.
-void reserve_samples(Trace& trace, std::size_t samples) {
-  trace.time.reserve(samples);
-  for (TraceActor& actor : trace.actors)
-    for (auto* column : {&actor.x, &actor.y, &actor.heading, &actor.speed, &actor.acceleration,
-                         &actor.yaw_rate, &actor.s})
-      column->reserve(samples);
-  for (TraceActor& actor : trace.actors) {
-    actor.lane.reserve(samples);
-    actor.reversing.reserve(samples);
-    if (actor.kind == TraceActorKind::ego || actor.kind == TraceActorKind::vehicle)
-      actor.signals.reserve(samples);
-  }
-  for (PerceivedActor& perceived : trace.perceived) {
-    perceived.detected.reserve(samples);
-    perceived.reversing.reserve(samples);
-    for (auto* column : {&perceived.x, &perceived.y, &perceived.heading, &perceived.speed})
-      column->reserve(samples);
-  }
-  for (TraceLight& light : trace.lights) light.colour.reserve(samples);
-}
-
 void end_with(Trace& trace, EndReason reason, TraceEventKind kind, double time,
               std::string message = {}) {
   trace.end = reason;
@@ -366,7 +321,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   }
 
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
-  reserve_samples(trace, last_step + 1);
+  size_sample_columns(trace, last_step + 1);
   scenfuzz_observation observation{};
   observation.environment = {setup.conditions.darkness, setup.conditions.fog, setup.conditions.rain,
                              setup.conditions.snow};
@@ -401,7 +356,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     for (std::size_t k = 0; k < actor_count; ++k) {
       fixes[k] =
           lane_fix_of(k, map, states[k], present[k] != 0, followers, traffic, first_flow, lanes[k]);
-      append_sample(trace.actors[k], states[k], fixes[k]);
+      write_sample(trace.actors[k], step, states[k], fixes[k]);
     }
     // The ego's signals are what it decided at the last step, until its driver decides below.
     trace.actors[kEgo].signals.push_back(ego_signals_now);
@@ -429,7 +384,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     for (std::size_t k = 1, next = 0; k < actor_count; ++k) {
       while (next < seen.size() && seen[next].id < k) ++next;
       bool detected = next < seen.size() && seen[next].id == k;
-      append_perceived(trace.perceived[k - 1], detected ? &seen[next] : nullptr);
+      write_perceived(trace.perceived[k - 1], step, detected ? &seen[next] : nullptr);
     }
 
     WorldSnapshot snapshot;
@@ -524,6 +479,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     trace.actors[kEgo].signals.back() = ego_signals_now;
     states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
   }
+  trim_sample_columns(trace);
   colour_runs.write(trace.lights);
   traffic.finish(trace.actors, trace.sample_count());
   npc_signals.finish(trace.actors, first_flow);
