@@ -185,17 +185,23 @@ double LaneFollower::choose_acceleration(double now) {
     return v > 0 ? -body_.comfortable_deceleration : 0;
   }
   const double a = std::min(settings_.acceleration, body_.max_acceleration);
-  double best = a * (1 - fourth_power(v / desired_speed_));
+  const double free_road = 1 - fourth_power(v / desired_speed_);
+  double best = a * free_road;
   reason_ = FollowerReason::cruise;
   double bend = bend_acceleration();
   if (bend < best) {
     best = bend;
     reason_ = FollowerReason::bend;
   }
+  // IDM behind each stop: the free road's term less the interaction term (computed here, once a
+  // step for every stop, rather than in a call per stop).
   const double driven = s_ - looked_from_, elapsed = now - looked_at_;
-  for (Stop stop : stops_) {
-    stop.gap = stop.gap - driven + stop.speed * elapsed;
-    double wanted = idm(stop);
+  const double headway = v * settings_.time_gap, braking = 2 * root_ab_;
+  for (const Stop& stop : stops_) {
+    const double gap = std::max(stop.gap - driven + stop.speed * elapsed, kMinimumGap);
+    const double desired_gap = stop.clearance + headway + v * (v - stop.speed) / braking;
+    const double ratio = std::max(desired_gap, 0.0) / gap;
+    const double wanted = a * (free_road - ratio * ratio);
     if (wanted < best) {
       best = wanted;
       reason_ = stop.reason;
@@ -211,16 +217,6 @@ double LaneFollower::bend_acceleration() const {
   if (!(v > limit)) return kInfinity;
   double to_vertex = std::max(path_.arc_lengths()[next] - s_, 0.5);
   return (limit * limit - v * v) / (2 * to_vertex);
-}
-
-double LaneFollower::idm(const Stop& stop) const {
-  const double v = state_.speed;
-  const double a = std::min(settings_.acceleration, body_.max_acceleration);
-  double desired_gap =
-      stop.clearance + v * settings_.time_gap + v * (v - stop.speed) / (2 * root_ab_);
-  double gap = std::max(stop.gap, kMinimumGap);
-  double ratio = std::max(desired_gap, 0.0) / gap;
-  return a * (1 - fourth_power(v / std::max(desired_speed_, kStandingDesire)) - ratio * ratio);
 }
 
 bool LaneFollower::surely_not_in_path(const WorldSnapshot& world, std::uint32_t k) const {

@@ -160,7 +160,6 @@ class LaneFollower {
                              const JunctionStretch& stretch);
   // The junction lane a stop line at `feature` leads into (the feature's own lane if it is one).
   std::optional<LaneIndex> junction_lane_after(const FeatureAhead& feature) const;
-  double idm(const Stop& stop) const;
   void advance(double acceleration, double dt);
   // Extends boxes_, frames_ and envelope_ over what this step can read (prepare_further), when
   // they do not cover it yet.
@@ -206,7 +205,8 @@ class LaneFollower {
   double desired_speed_ = 0;
   bool leaves_at_end_ = false;
   FollowerSettings settings_;
-  double root_ab_ = 0;  // sqrt(a b) of IDM's braking term, of a and b as idm() takes them
+  double root_ab_ =
+      0;  // sqrt(a b) of IDM's braking term, of a and b as choose_acceleration takes them
 
   KinematicState state_;
   double s_ = 0;
