@@ -15,6 +15,7 @@ void MotionFilter::update(std::span<const WorldObject> objects, double dt) {
   next.reserve(objects.size());
   auto old = tracks_.begin();
   for (const WorldObject& object : objects) {
+    if (object.kind != TraceActorKind::pedestrian) continue;
     double velocity = object.reversing ? -object.speed : object.speed;
     // Standing (perception clamps noisy speeds at 0): no sine and cosine for a zero vector. Only
     // the sign of a zero could differ, and speed() reads magnitudes only.

@@ -1,5 +1,6 @@
-// MotionFilter skips the sine and cosine of standing objects and reuses its storage: the smoothed
-// speeds must be those of the plain computation, bit for bit.
+// MotionFilter skips the sine and cosine of standing objects, tracks only pedestrians and reuses
+// its storage: the smoothed speeds of pedestrians must be those of the plain computation, bit for
+// bit.
 #include "physics/ego/motion_filter.hpp"
 
 #include <gtest/gtest.h>
@@ -48,6 +49,8 @@ TEST(MotionFilter, SmoothedSpeedsAreThePlainComputationsBitForBit) {
       if (unit(random) < 0.1) continue;  // unseen this step: forgotten
       WorldObject object;
       object.id = id;
+      // Ids 1 to 8 pedestrians, the rest vehicles (passed over).
+      object.kind = id <= 8 ? TraceActorKind::pedestrian : TraceActorKind::vehicle;
       object.heading = (unit(random) - 0.5) * 7;
       // Perception clamps noisy speeds at zero: standing objects often read exactly 0.
       object.speed = unit(random) < 0.4 ? 0.0 : 10 * unit(random);
@@ -58,7 +61,8 @@ TEST(MotionFilter, SmoothedSpeedsAreThePlainComputationsBitForBit) {
     filter.update(objects, dt);
     plain.update(objects, std::clamp(dt / 0.5, 0.0, 1.0));
     for (ActorId id = 0; id <= 13; ++id)
-      ASSERT_EQ(filter.speed(id), plain.speed(id)) << "step " << step << " id " << id;
+      ASSERT_EQ(filter.speed(id), id <= 8 ? plain.speed(id) : 0.0)
+          << "step " << step << " id " << id;
   }
   EXPECT_GT(standing, 5000) << "standing objects were tried";
 }
@@ -67,10 +71,25 @@ TEST(MotionFilter, AStandingObjectWithANonFiniteHeadingStaysAsThePlainComputatio
   MotionFilter filter(0.5);
   WorldObject object;
   object.id = 3;
+  object.kind = TraceActorKind::pedestrian;
   object.speed = 0;
   object.heading = std::nan("");
   filter.update(std::vector<WorldObject>{object}, 0.05);
   EXPECT_TRUE(std::isnan(filter.speed(3)));  // 0 * cos(NaN), as before
+}
+
+TEST(MotionFilter, OnlyPedestriansAreTracked) {
+  MotionFilter filter(0.5);
+  WorldObject walker, car;
+  walker.id = 1;
+  walker.kind = TraceActorKind::pedestrian;
+  walker.speed = 1.2;
+  car.id = 2;
+  car.kind = TraceActorKind::vehicle;
+  car.speed = 10;
+  filter.update(std::vector<WorldObject>{walker, car}, 0.05);
+  EXPECT_EQ(filter.speed(1), std::hypot(1.2 * std::cos(0.0), 1.2 * std::sin(0.0)));
+  EXPECT_EQ(filter.speed(2), 0.0);  // nobody asks for a vehicle's
 }
 
 }  // namespace
