@@ -121,11 +121,22 @@ PassTiming pass_timing(const OvertakeContext& context, double gap, const Cluster
       1.01 * (passing_speed - cluster.speed) * (kLongestPass + 2 * kTimingStep) + 1e-6;
   if (needed > most_gained) return timing;
   double speed = context.ego.speed, relative = 0;
-  while (relative < needed) {
+  const double gain = context.comfortable_acceleration * kTimingStep;
+  // Speeding up, until the passing speed: from then on min() keeps it there (a gain >= 0 added
+  // cannot round below it), and every step adds the same amounts (the loop below).
+  while (relative < needed && !(speed == passing_speed && gain >= 0)) {
     if (timing.time > kLongestPass) return timing;
-    speed = std::min(passing_speed, speed + context.comfortable_acceleration * kTimingStep);
+    speed = std::min(passing_speed, speed + gain);
     relative += (speed - cluster.speed) * kTimingStep;
     timing.travel += speed * kTimingStep;
+    timing.time += kTimingStep;
+  }
+  const double relative_step = (speed - cluster.speed) * kTimingStep;
+  const double travel_step = speed * kTimingStep;
+  while (relative < needed) {
+    if (timing.time > kLongestPass) return timing;
+    relative += relative_step;
+    timing.travel += travel_step;
     timing.time += kTimingStep;
   }
   // The ego has left the passing lane about 70 % of the way through its move back.
