@@ -8,6 +8,7 @@
 
 #include "physics/ego/pull_out_sweep.hpp"
 #include "physics/map/lane_queries.hpp"
+#include "physics/map/point_at_from.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -172,12 +173,15 @@ bool room_to_stop_after(const OvertakeContext& context, const Cluster& cluster, 
 // whether the lane runs beside the path there.
 std::optional<double> lane_offset(const OvertakeContext& context, LaneIndex lane, double s) {
   const Polyline& path = context.route.path();
-  MapPoint p = path.point_at(s);
+  // The point and the heading lie on one segment: it is searched for once.
+  const std::size_t segment = path.segment_at(std::clamp(s, 0.0, path.length()));
+  MapPoint p = point_at_from(path, s, segment);
   // The route's kept segment headings: path.heading_at's atan2, computed once.
-  double heading = context.route.heading_at(s);
-  PolylineProjection on = context.map.lane(lane).centre_line.project(p);
+  double heading = context.route.heading_at(s, segment);
+  const Polyline& centre_line = context.map.lane(lane).centre_line;
+  PolylineProjection on = centre_line.project(p);
   if (on.distance > std::abs(on.lateral) + 1e-6) return std::nullopt;  // off its ends
-  MapPoint q = context.map.lane(lane).centre_line.point_at(on.s);
+  MapPoint q = point_at_from(centre_line, on.s, on.segment);
   return std::cos(heading) * (q.y - p.y) - std::sin(heading) * (q.x - p.x);
 }
 
