@@ -142,7 +142,6 @@ std::optional<LaneFix> LaneFollower::lane_fix() const {
 
 void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   if (finished_) return;
-  update_facing(world, self);
   prepare_ahead();
   if (world.time + 1e-9 >= next_look_) {
     next_look_ = world.time + kLookInterval;
@@ -151,15 +150,15 @@ void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double d
   advance(choose_acceleration(world.time), dt);
 }
 
-// The simulation has taken the cosine and sine of every actor's heading this step (this one's
-// among them, the same numbers): no sincos of its own when the heading changed.
+// The cosine and sine of its heading, for the look (surely_not_in_path, lane_lead): the
+// simulation's (PointPredictor::facing, the same numbers, shared with whoever else asks this
+// step), or its own when the world has none.
 void LaneFollower::update_facing(const WorldSnapshot& world, std::uint32_t self) {
   if (state_.heading == facing_heading_) return;
   facing_heading_ = state_.heading;
-  facing_ =
-      world.facings.size() == world.states.size() && world.states[self].heading == state_.heading
-          ? world.facings[self]
-          : MapPoint{std::cos(state_.heading), std::sin(state_.heading)};
+  facing_ = world.predictions != nullptr && world.states[self].heading == state_.heading
+                ? world.predictions->facing(self)
+                : MapPoint{std::cos(state_.heading), std::sin(state_.heading)};
 }
 
 // What to stop behind, as far as it can see now: whatever is in its path, stop lines, the
@@ -169,6 +168,7 @@ void LaneFollower::look_ahead(const WorldSnapshot& world, std::uint32_t self, do
   looked_from_ = s_;
   stops_.clear();
   if (desired_speed_ < kStandingDesire) return;
+  update_facing(world, self);
   find_leader(world, self, stops_);
   find_stop_lines(world, self, dt, stops_);
   hold_at_junction(world, self, stops_);
@@ -331,9 +331,10 @@ std::optional<LaneFollower::Stop> LaneFollower::lane_lead(const WorldSnapshot& w
   if (gap < -world.lengths[k] / 2 || gap > lookahead()) return std::nullopt;
   const KinematicState& other = world.states[k];
   // The cosine of the heading difference, as in_path's, from the step's cosines and sines.
-  const double alignment = world.facings.size() == world.states.size()
-                               ? facing_.x * world.facings[k].x + facing_.y * world.facings[k].y
-                               : std::cos(angle_difference(other.heading, state_.heading));
+  const double alignment =
+      world.predictions != nullptr
+          ? facing_.x * world.predictions->facing(k).x + facing_.y * world.predictions->facing(k).y
+          : std::cos(angle_difference(other.heading, state_.heading));
   const double speed_along = std::max(0.0, longitudinal_velocity(other) * alignment);
   return Stop{gap, settings_.standstill_gap, speed_along, FollowerReason::leader, false};
 }
@@ -381,7 +382,7 @@ void LaneFollower::watch_lanes(const LaneOccupancy& occupancy, double from, doub
 // world has no grid, or predicts for another horizon than this follower (then every actor is
 // looked at).
 bool LaneFollower::near_path(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) const {
-  if (world.grid == nullptr || world.predicted.size() != world.states.size() ||
+  if (world.grid == nullptr || world.predictions == nullptr ||
       world.prediction_time != settings_.prediction_time)
     return false;
   const double until = s_ + lookahead();
@@ -444,9 +445,8 @@ bool LaneFollower::surely_no_nearer(MapPoint point, double reach, double extent,
 MapPoint LaneFollower::predicted_of(const WorldSnapshot& world, std::uint32_t k) const {
   const KinematicState& other = world.states[k];
   if (!(other.speed > kPredictedMinSpeed)) return {other.x, other.y};
-  return world.predicted.size() == world.states.size() &&
-                 world.prediction_time == settings_.prediction_time
-             ? world.predicted[k]
+  return world.predictions != nullptr && world.prediction_time == settings_.prediction_time
+             ? world.predictions->point(k)
              : predicted_point(other, settings_.prediction_time);
 }
 

@@ -216,7 +216,7 @@ class LaneFollower {
   // ahead at a time, so that most steps only compare.
   std::size_t headed_until_ = 0;
   std::vector<VertexBlend> blends_;  // by vertex (path_pose.hpp), where known
-  // cos and sin of state_.heading (update_facing), for the scans; NaN: not taken yet.
+  // cos and sin of state_.heading (update_facing, at each look); NaN: not taken yet.
   MapPoint facing_{1, 0};
   double facing_heading_ = std::numeric_limits<double>::quiet_NaN();  // whose they are
   double applied_ = 0;  // m/s^2 asked of the vehicle at the last step, for the jerk limit

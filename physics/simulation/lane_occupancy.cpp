@@ -171,7 +171,7 @@ bool LaneOccupancy::file_on_lanes(std::uint32_t k) const {
   if (!(length > 0)) return false;
   const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
   const double lateral = ux * (state.y - a.y) - uy * (state.x - a.x);
-  const MapPoint facing = inputs.facings[k];
+  const MapPoint facing = inputs.facings->facing(k);
   const double cos_relative = ux * facing.x + uy * facing.y;
   const double sin_relative = ux * facing.y - uy * facing.x;
   const double half_length = inputs.lengths[k] / 2, half_width = inputs.widths[k] / 2;

@@ -24,6 +24,7 @@
 #include "physics/map/map_point.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/lane_tracker.hpp"
+#include "physics/simulation/predicted_points.hpp"
 #include "physics/trace/trace.hpp"
 
 namespace scenfuzz {
@@ -31,7 +32,7 @@ namespace scenfuzz {
 // What LaneOccupancy::build reads of one step, by actor id.
 struct OccupancyInputs {
   std::span<const KinematicState> states;
-  std::span<const MapPoint> facings;  // cos and sin of each actor's heading
+  const PointPredictor* facings = nullptr;  // cos and sin of each actor's heading (facing)
   std::span<const LaneFix> lanes;
   std::span<const double> lengths;
   std::span<const double> widths;

@@ -289,7 +289,8 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     kinds[k] = trace.actors[k].kind;
   }
 
-  // Where every actor will be, predicted once per step for every lane follower's scan.
+  // Where every actor will be, shared by every lane follower's scan (worked out when asked for;
+  // for all actors at once only for the grid).
   const double prediction_time = FollowerSettings{}.prediction_time;
   std::vector<MapPoint> predicted;
   PointPredictor predictor;
@@ -392,7 +393,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
       if (watches_manoeuvres)
         for (std::size_t k = 0; k < first_obstacle; ++k)
           manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
-      predictor.predict(states, prediction_time, predicted);
+      predictor.set_step(states, prediction_time);
       arrivals.update(map, t, fixes, kinds,
                       traffic.empty() ? std::span<const std::uint8_t>{}
                                       : std::span<const std::uint8_t>(present));
@@ -400,12 +401,14 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
           traffic.empty() ? std::span<const std::uint8_t>{}
                           : std::span<const std::uint8_t>(present);
       if (occupancy)
-        occupancy->set_step({states, predictor.facings(), fixes, lengths, widths, kinds,
-                             present_now, prediction_time});
-      if (uses_grid)
+        occupancy->set_step(
+            {states, &predictor, fixes, lengths, widths, kinds, present_now, prediction_time});
+      if (uses_grid) {
+        predictor.predict(states, prediction_time, predicted);
         grid.build(states, predicted, lengths, widths,
                    traffic.empty() ? std::span<const std::uint8_t>{}
                                    : std::span<const std::uint8_t>(present));
+      }
       for (std::size_t k = 1; k <= drivers.size(); ++k)
         if (drivers[k - 1]) sequence_starts[k] = drivers[k - 1]->sequence_start();
       snapshot = {&map,
@@ -421,11 +424,10 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
                   kinds,
                   traffic.empty() ? std::span<const std::uint8_t>{}
                                   : std::span<const std::uint8_t>(present),
-                  predicted,
+                  &predictor,
                   prediction_time,
                   uses_grid ? &grid : nullptr,
                   occupancy ? &*occupancy : nullptr,
-                  predictor.facings(),
                   arrivals.arrivals()};
     }
 

@@ -13,6 +13,7 @@
 #include "physics/simulation/lane_occupancy.hpp"
 #include "physics/simulation/lane_tracker.hpp"
 #include "physics/simulation/observed_manoeuvre.hpp"
+#include "physics/simulation/predicted_points.hpp"
 #include "physics/trace/trace.hpp"
 
 namespace scenfuzz {
@@ -34,18 +35,15 @@ struct WorldSnapshot {
   // every actor is, as without background traffic. An absent actor's state is a parked pose that
   // nobody may see.
   std::span<const std::uint8_t> present;
-  // By actor id, predict_points(states, prediction_time): where each actor will be, for the lane
-  // followers' scans; empty when not computed (followers then compute their own).
-  std::span<const MapPoint> predicted;
+  // Where each actor will be within prediction_time, and the cosines and sines of their headings,
+  // for the lane followers' scans; null when not computed (followers then compute their own).
+  const PointPredictor* predictions = nullptr;
   double prediction_time = 0;  // s
   // The actors' positions and predicted points on a grid, for the lane followers' scans; null
   // when not built (followers then look at every actor).
   const ActorGrid* grid = nullptr;
   // The actors by the lanes they occupy, for the lane followers' scans; null when not built.
   const LaneOccupancy* occupancy = nullptr;
-  // By actor id, the cosine and sine of each actor's heading (PointPredictor::facings), for the
-  // lane followers' leaders between scans; empty when not computed (followers then compute them).
-  std::span<const MapPoint> facings;
   // By actor id, when each vehicle arrived at the junction it is at (JunctionArrivals), NaN at
   // none; empty when not computed (followers then order nobody by arrival).
   std::span<const double> junction_arrivals;

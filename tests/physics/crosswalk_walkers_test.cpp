@@ -61,7 +61,7 @@ TEST(LaneOccupancy, WalkersAtEqualsEachPedestrianTestedAgainstTheCrosswalk) {
       if (unit(random) < 0.1) present[k] = 0;
     }
     predictor.predict(states, 1.5, predicted);
-    occupancy.set_step({states, predictor.facings(), fixes, lengths, widths, kinds, present, 1.5});
+    occupancy.set_step({states, &predictor, fixes, lengths, widths, kinds, present, 1.5});
     // Several followers ask in a step; now and then one with settings of its own.
     for (int ask = 0; ask < 3; ++ask) {
       const bool own = unit(random) < 0.2;

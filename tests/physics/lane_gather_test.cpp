@@ -60,7 +60,7 @@ TEST(LaneOccupancy, GatherEqualsTheWatchedLanesActorsAndTheLooseOnesSorted) {
       if (unit(random) < 0.1) present[k] = 0;
     }
     predictor.predict(states, 1.5, predicted);
-    occupancy.set_step({states, predictor.facings(), fixes, lengths, widths, kinds, present, 1.5});
+    occupancy.set_step({states, &predictor, fixes, lengths, widths, kinds, present, 1.5});
     std::vector<LaneIndex> watched;
     for (LaneIndex lane = 0; lane < lanes; ++lane)
       if (unit(random) < 0.4) watched.push_back(lane);

@@ -48,8 +48,7 @@ class Filing {
     lengths_.assign(actors.size(), 4.6);
     widths_.assign(actors.size(), 1.9);
     predictor_.predict(states_, 1.5, predicted_);
-    occupancy_.set_step(
-        {states_, predictor_.facings(), fixes_, lengths_, widths_, kinds_, {}, 1.5});
+    occupancy_.set_step({states_, &predictor_, fixes_, lengths_, widths_, kinds_, {}, 1.5});
   }
 
   std::vector<std::uint32_t> on(const char* id) const {
