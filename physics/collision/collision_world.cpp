@@ -234,7 +234,10 @@ struct CollisionWorld::Impl {
     MapPose pose;
     bool is_static = false;
     bool placed = true;  // object's transform is at pose
-    Reach reach;         // of the footprint at pose.heading (a car keeps its heading for long)
+    // Of the footprint at reach_heading, a bound (turned_reach.hpp); kept while the heading
+    // stays within kReachTurn of it (a car's heading drifts a little at every step).
+    Reach reach;
+    double reach_heading = 0;
     std::shared_ptr<fcl::CollisionGeometryd> shape;
     std::unique_ptr<fcl::CollisionObjectd> object;
   };
@@ -251,6 +254,27 @@ struct CollisionWorld::Impl {
   bool collide(const fcl::CollisionObjectd& a, const fcl::CollisionObjectd& b) const {
     narrowphase_checks.fetch_add(1, std::memory_order_relaxed);
     return fcl_collide(a, b);
+  }
+
+  // The body's reach at its pose's heading, as a bound: a disc's does not turn; a box's is bounded
+  // without libm's sincos (turned_reach.hpp), and kept while the heading stays within kReachTurn
+  // of the one it was taken at, widened by (half length + half width) x the turn since (|cos| and
+  // |sin| change no faster than the angle). The sweep box only selects candidates for FCL, so a
+  // little wider changes no contact.
+  static Reach turned_reach(Body& body) {
+    constexpr double kReachTurn = 0.01;  // rad: at most 3 cm wider on a car
+    if (is_round(body.geometry.shape)) return body.reach;
+    const double half_length = body.geometry.length / 2, half_width = body.geometry.width / 2;
+    const double turn = std::abs(body.pose.heading - body.reach_heading);
+    if (!(turn <= kReachTurn)) {
+      const TurnedReach bound = turned_reach_bound(half_length, half_width, body.pose.heading);
+      body.reach = {bound.x, bound.y};
+      body.reach_heading = body.pose.heading;
+      return body.reach;
+    }
+    // The turn allowance, and turned_reach_bound's relative margin over the exact reach.
+    const double widening = (half_length + half_width) * (turn + 1e-9);
+    return {body.reach.x + widening, body.reach.y + widening};
   }
 
   const fcl::CollisionObjectd& placed_object(Body& body) {
@@ -285,7 +309,7 @@ BodyId CollisionWorld::add_body(const BodyGeometry& geometry, const MapPose& pos
   const Reach reach = reach_of(footprint_of(geometry, pose));
   impl_->sweep.add(sweep_box_around(pose.position, reach), is_static);
   impl_->bodies.push_back(
-      {geometry, pose, is_static, true, reach, std::move(shape), std::move(object)});
+      {geometry, pose, is_static, true, reach, pose.heading, std::move(shape), std::move(object)});
   return id;
 }
 
@@ -294,16 +318,9 @@ void CollisionWorld::set_pose(BodyId body, const MapPose& pose) {
   Impl::Body& moving = impl_->bodies[body];
   SCENFUZZ_DEMAND(!moving.is_static && "a static body keeps the pose it was added with");
   check_pose(pose);
-  // A disc's reach does not turn; a box's is bounded without libm's sincos (turned_reach.hpp):
-  // the sweep box only selects candidates for FCL, so a hair wider changes no contact.
-  if (pose.heading != moving.pose.heading && !is_round(moving.geometry.shape)) {
-    const TurnedReach bound =
-        turned_reach_bound(moving.geometry.length / 2, moving.geometry.width / 2, pose.heading);
-    moving.reach = {bound.x, bound.y};
-  }
   moving.pose = pose;
   moving.placed = false;
-  impl_->sweep.move(body, sweep_box_around(pose.position, moving.reach));
+  impl_->sweep.move(body, sweep_box_around(pose.position, Impl::turned_reach(moving)));
 }
 
 void CollisionWorld::set_enabled(BodyId body, bool enabled) {
