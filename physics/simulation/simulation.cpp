@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -97,7 +98,11 @@ struct ColourRuns {
   std::vector<std::size_t> steps;                  // in each run
 
   void add(const std::vector<SignalColour>& now) {
-    if (!colours.empty() && colours.back() == now) {
+    // Compared as bytes: vector's == compares enum elements one at a time, and a city map has
+    // hundreds of lights at every step.
+    if (!colours.empty() && colours.back().size() == now.size() &&
+        (now.empty() ||
+         std::memcmp(colours.back().data(), now.data(), now.size() * sizeof(SignalColour)) == 0)) {
       ++steps.back();
       return;
     }
