@@ -331,10 +331,13 @@ std::optional<LaneFollower::Stop> LaneFollower::lane_lead(const WorldSnapshot& w
   if (gap < -world.lengths[k] / 2 || gap > lookahead()) return std::nullopt;
   const KinematicState& other = world.states[k];
   // The cosine of the heading difference, as in_path's, from the step's cosines and sines.
-  const double alignment =
-      world.predictions != nullptr
-          ? facing_.x * world.predictions->facing(k).x + facing_.y * world.predictions->facing(k).y
-          : std::cos(angle_difference(other.heading, state_.heading));
+  double alignment = 0;
+  if (world.predictions != nullptr) {
+    const MapPoint theirs = world.predictions->facing(k);
+    alignment = facing_.x * theirs.x + facing_.y * theirs.y;
+  } else {
+    alignment = std::cos(angle_difference(other.heading, state_.heading));
+  }
   const double speed_along = std::max(0.0, longitudinal_velocity(other) * alignment);
   return Stop{gap, settings_.standstill_gap, speed_along, FollowerReason::leader, false};
 }

@@ -117,7 +117,6 @@ struct ColourRuns {
   }
 };
 
-// Room for every sample the run can take, so that recording never reallocates mid-run.
 void end_with(Trace& trace, EndReason reason, TraceEventKind kind, double time,
               std::string message = {}) {
   trace.end = reason;
