@@ -136,6 +136,7 @@ class LaneFollower {
   std::optional<Stop> stop_at(const WorldSnapshot& world, std::uint32_t k, MapPoint point,
                               Sighting which, double reach, std::optional<Stop> best);
   bool may_cross(const WorldSnapshot& world, std::uint32_t k, double way) const;
+  bool surely_clear_of_path(MapPoint a, MapPoint b, double reach) const;
   PolylineProjection beyond_end(MapPoint point, double reach) const;
   MapPoint predicted_of(const WorldSnapshot& world, std::uint32_t k) const;
   // in_path's first tests, inlined into the scan: whether actor k is surely not in the path
