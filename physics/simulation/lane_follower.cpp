@@ -55,13 +55,13 @@ double fourth_power(double x) {
 
 }  // namespace
 
-LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
+LaneFollower::LaneFollower(const RoadMap& map, const LaneRoute& route, const Polyline& path,
                            std::span<const PathPlace> places, const ActorClass& body,
                            double desired_speed, double initial_speed, bool leaves_at_end,
                            const FollowerSettings& settings)
     : map_(&map),
-      route_(std::move(route)),
-      path_(std::move(path)),
+      route_(&route),
+      path_(&path),
       places_(places),
       body_(body),
       desired_speed_(std::min(desired_speed, body.max_speed)),
@@ -69,11 +69,11 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
       settings_(settings),
       root_ab_(std::sqrt(std::min(settings.acceleration, body.max_acceleration) *
                          body.comfortable_deceleration)) {
-  SCENFUZZ_DEMAND(path_.segment_count() > 0);
-  SCENFUZZ_DEMAND(places_.empty() || places_.size() == path_.points().size());
-  headings_ = lazy_headings(path_);
-  blends_.resize(path_.points().size());
-  frames_.reserve(path_.segment_count());
+  SCENFUZZ_DEMAND(path_->segment_count() > 0);
+  SCENFUZZ_DEMAND(places_.empty() || places_.size() == path_->points().size());
+  headings_ = lazy_headings(*path_);
+  blends_.resize(path_->points().size());
+  frames_.reserve(path_->segment_count());
   double lateral = body_.comfortable_lateral_acceleration > 0
                        ? body_.comfortable_lateral_acceleration
                        : body_.max_deceleration;
@@ -81,14 +81,14 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   // it ever be faster than the bound, prepare_ahead raises it.
   const double bound =
       std::min(body_.max_speed, std::max(desired_speed_, initial_speed) + kSpeedBoundMargin);
-  envelope_ = BendEnvelope(path_, lateral, body_.comfortable_deceleration, bound);
+  envelope_ = BendEnvelope(*path_, lateral, body_.comfortable_deceleration, bound);
   double distance = 0;
-  for (const RouteSegment& segment : route_.segments) {
+  for (const RouteSegment& segment : route_->segments) {
     route_starts_.push_back(distance);
     distance += segment.s_end - segment.s_begin;
   }
   for (double from = 0; features_.size() < kFeatureLimit;) {
-    auto next = next_feature_ahead(map, route_, from);
+    auto next = next_feature_ahead(map, *route_, from);
     if (!next) break;
     features_.push_back({*next, from + next->distance, false});
     from += next->distance + 0.01;
@@ -97,20 +97,20 @@ LaneFollower::LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
   prepare_ahead();
   double speed = std::min({initial_speed, body_.max_speed, envelope_.at(0)});
   make_headings_known();
-  state_ = state_on_path(path_, headings_.values, 0, speed, 0);
+  state_ = state_on_path(*path_, headings_.values, 0, speed, 0);
   state_.yaw_rate = 0;
 }
 
 void LaneFollower::start_at(double progress) {
-  SCENFUZZ_DEMAND(std::isfinite(progress) && progress >= 0 && progress <= path_.length());
+  SCENFUZZ_DEMAND(std::isfinite(progress) && progress >= 0 && progress <= path_->length());
   s_ = progress;
   // No faster than the bends ahead can be taken from: a car placed in a bend drives it as one
   // that came to it would.
-  segment_ = path_.segment_at(s_);
+  segment_ = path_->segment_at(s_);
   prepare_ahead();
-  const double limit = envelope_.at(std::min(segment_ + 1, path_.points().size() - 1));
+  const double limit = envelope_.at(std::min(segment_ + 1, path_->points().size() - 1));
   make_headings_known();
-  state_ = state_on_path(path_, headings_.values, s_, std::min(state_.speed, limit), 0);
+  state_ = state_on_path(*path_, headings_.values, s_, std::min(state_.speed, limit), 0);
   state_.yaw_rate = 0;
 }
 
@@ -123,14 +123,14 @@ std::optional<LaneFix> LaneFollower::lane_fix() const {
   const PathPlace& from = places_[segment_];
   const PathPlace& to = places_[segment_ + 1];
   if (!from.on_lane || !to.on_lane) return std::nullopt;
-  const auto& arc = path_.arc_lengths();
+  const auto& arc = path_->arc_lengths();
   const double fraction = (s_ - arc[segment_]) / (arc[segment_ + 1] - arc[segment_]);
-  const RouteSegment& on = route_.segments[from.segment];
+  const RouteSegment& on = route_->segments[from.segment];
   if (to.segment == from.segment)
     return LaneFix{static_cast<std::int32_t>(on.lane), from.s + fraction * (to.s - from.s)};
   // Over a successor link: as far on the next lane as it is past the end of this one.
   if (to.segment != from.segment + 1) return std::nullopt;
-  const RouteSegment& next = route_.segments[to.segment];
+  const RouteSegment& next = route_->segments[to.segment];
   const std::vector<LaneIndex>& successors = map_->lane(on.lane).successors;
   if (std::find(successors.begin(), successors.end(), next.lane) == successors.end())
     return std::nullopt;  // a lane change with no room for a sideways move: a jump aside
@@ -172,7 +172,7 @@ void LaneFollower::look_ahead(const WorldSnapshot& world, std::uint32_t self, do
   find_leader(world, self, stops_);
   find_stop_lines(world, self, dt, stops_);
   hold_at_junction(world, self, stops_);
-  if (!leaves_at_end_) stops_.push_back({path_.length() - s_, 0, 0, FollowerReason::path_end});
+  if (!leaves_at_end_) stops_.push_back({path_->length() - s_, 0, 0, FollowerReason::path_end});
 }
 
 // The most cautious of IDM's answers: for the free road, the bend ahead and each stop found at the
@@ -211,11 +211,11 @@ double LaneFollower::choose_acceleration(double now) {
 }
 
 double LaneFollower::bend_acceleration() const {
-  std::size_t next = std::min(segment_ + 1, path_.points().size() - 1);
+  std::size_t next = std::min(segment_ + 1, path_->points().size() - 1);
   double limit = envelope_.at(next);
   double v = state_.speed;
   if (!(v > limit)) return kInfinity;
-  double to_vertex = std::max(path_.arc_lengths()[next] - s_, 0.5);
+  double to_vertex = std::max(path_->arc_lengths()[next] - s_, 0.5);
   return (limit * limit - v * v) / (2 * to_vertex);
 }
 
@@ -283,19 +283,19 @@ void LaneFollower::find_leader(const WorldSnapshot& world, std::uint32_t self,
 // driven in a run. Most steps only compare (prepare_ahead, inline).
 void LaneFollower::prepare_further() {
   if (state_.speed > envelope_.speed_bound())
-    envelope_.raise_bound(path_, headings_, std::max(body_.max_speed, state_.speed));
+    envelope_.raise_bound(*path_, headings_, std::max(body_.max_speed, state_.speed));
   const double until = s_ + lookahead();
   if (until > prepared_until_) {
     prepared_until_ = until + kPreparedChunk;
     constexpr std::size_t unit = PolylineBoxes::kRun * PolylineBoxes::kGroup;
-    const std::size_t last = path_.segment_at(std::min(prepared_until_, path_.length()));
-    if (prepared_until_ >= path_.length()) prepared_until_ = kInfinity;  // the whole path
-    const std::size_t segments = std::min(path_.segment_count(), (last / unit + 1) * unit);
-    boxes_.extend(path_, segments);
-    frames_.extend(path_, segments);
-    envelope_.extend(path_, headings_, last + 1);
+    const std::size_t last = path_->segment_at(std::min(prepared_until_, path_->length()));
+    if (prepared_until_ >= path_->length()) prepared_until_ = kInfinity;  // the whole path
+    const std::size_t segments = std::min(path_->segment_count(), (last / unit + 1) * unit);
+    boxes_.extend(*path_, segments);
+    frames_.extend(*path_, segments);
+    envelope_.extend(*path_, headings_, last + 1);
   }
-  envelope_.extend(path_, headings_, segment_ + 1);
+  envelope_.extend(*path_, headings_, segment_ + 1);
 }
 
 // A vehicle (or the ego) found by where it is, on a lane of the route ahead: between scans its gap
@@ -311,7 +311,7 @@ void LaneFollower::start_lane_lead(const WorldSnapshot& world, const Stop& stop)
   const auto after = std::upper_bound(route_starts_.begin(), route_starts_.end(), s_);
   const auto mine =
       static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - route_starts_.begin() - 2, 0));
-  auto place = place_on_route(route_, route_starts_, world.lanes[k], mine,
+  auto place = place_on_route(*route_, route_starts_, world.lanes[k], mine,
                               s_ + lookahead() + kWatchedBeyond, kLaneLeadTolerance);
   if (!place) return;
   const double offset = stop.gap - (place->distance - s_);
@@ -322,7 +322,7 @@ void LaneFollower::start_lane_lead(const WorldSnapshot& world, const Stop& stop)
 std::optional<LaneFollower::Stop> LaneFollower::lane_lead(const WorldSnapshot& world) {
   const auto k = static_cast<std::uint32_t>(leader_);
   const double until = s_ + lookahead() + kWatchedBeyond;
-  auto place = place_on_route(route_, route_starts_, world.lanes[k], lane_lead_->segment, until,
+  auto place = place_on_route(*route_, route_starts_, world.lanes[k], lane_lead_->segment, until,
                               kLaneLeadTolerance);
   if (!place) return std::nullopt;
   lane_lead_->segment = place->segment;
@@ -366,8 +366,8 @@ void LaneFollower::watch_lanes(const LaneOccupancy& occupancy, double from, doub
   watched_first_ = first;
   watched_last_ = last;
   watched_.clear();
-  for (std::size_t k = first; k <= last && k < route_.segments.size(); ++k) {
-    const LaneIndex lane = route_.segments[k].lane;
+  for (std::size_t k = first; k <= last && k < route_->segments.size(); ++k) {
+    const LaneIndex lane = route_->segments[k].lane;
     watched_.push_back(lane);
     // Every lane of its junction: more than those crossing or merging with it (conflicts_of),
     // whose centre lines cost far more to test than the few actors more to look at.
@@ -392,12 +392,12 @@ bool LaneFollower::near_path(const WorldSnapshot& world, std::vector<std::uint32
   // in_path's boxes run from the one holding this actor's segment to the last starting by
   // `until`; every point of them is at most `along` metres of path, so as many in a straight
   // line, from this actor, which is on the path at s_.
-  const auto& arc = path_.arc_lengths();
+  const auto& arc = path_->arc_lengths();
   constexpr std::size_t run = PolylineBoxes::kRun;
   std::size_t last = segment_ / run;
   while (last + 1 < boxes_.size() && arc[(last + 1) * run] <= until) ++last;
   const double along = std::max(s_ - arc[segment_ / run * run],
-                                arc[std::min((last + 1) * run, path_.segment_count())] - s_);
+                                arc[std::min((last + 1) * run, path_->segment_count())] - s_);
   // Beyond that, the most any actor's reach (in_path's) can be, and a margin far above rounding.
   const double reach =
       along + body_.width / 2 + world.grid->largest_half_extent() + settings_.path_margin + 1e-3;
@@ -416,8 +416,8 @@ std::size_t LaneFollower::first_within(MapPoint point, double reach) const {
   // Far above the rounding of arc lengths and of the follower's position on its path.
   constexpr double kMargin = 1e-3;
   const double clear = std::sqrt(dx * dx + dy * dy) - reach - kMargin;
-  if (!(clear > s_ - path_.arc_lengths()[segment_])) return segment_;
-  return first_segment_reaching(path_, segment_, s_ + clear);
+  if (!(clear > s_ - path_->arc_lengths()[segment_])) return segment_;
+  return first_segment_reaching(*path_, segment_, s_ + clear);
 }
 
 // first_within's answer exactly, walking from segment `from` (where the answer was at the last
@@ -427,9 +427,9 @@ std::size_t LaneFollower::first_within_from(MapPoint point, double reach, std::s
   const double dx = point.x - state_.x, dy = point.y - state_.y;
   constexpr double kMargin = 1e-3;  // as first_within's
   const double clear = std::sqrt(dx * dx + dy * dy) - reach - kMargin;
-  const auto& arc = path_.arc_lengths();
+  const auto& arc = path_->arc_lengths();
   if (!(clear > s_ - arc[segment_])) return segment_;
-  return first_segment_reaching_from(path_, segment_, s_ + clear, from);
+  return first_segment_reaching_from(*path_, segment_, s_ + clear, from);
 }
 
 // Whether anything in the path within `reach` of `point` (reaching `extent` along it either way)
@@ -458,7 +458,7 @@ MapPoint LaneFollower::predicted_of(const WorldSnapshot& world, std::uint32_t k)
 // behind (its point 1.5 s on lies ahead of the follower).
 bool LaneFollower::behind_in_lane(const WorldSnapshot& world, std::uint32_t k) const {
   const KinematicState& other = world.states[k];
-  const PolylineProjection p = frames_.project(path_, {other.x, other.y}, segment_);
+  const PolylineProjection p = frames_.project(*path_, {other.x, other.y}, segment_);
   return p.s < s_ && std::abs(p.lateral) <= body_.width / 2 + world.widths[k] / 2;
 }
 
@@ -468,15 +468,15 @@ bool LaneFollower::behind_in_lane(const WorldSnapshot& world, std::uint32_t k) c
 PolylineProjection LaneFollower::beyond_end(MapPoint point, double reach) const {
   PolylineProjection none;
   none.distance = kInfinity;
-  const std::size_t last = path_.segment_count() - 1;
-  const MapPoint end = path_.points().back();
+  const std::size_t last = path_->segment_count() - 1;
+  const MapPoint end = path_->points().back();
   const MapPoint u = frames_.direction(last);
   const double px = point.x - end.x, py = point.y - end.y;
   const double along = px * u.x + py * u.y;
   const double lateral = u.x * py - u.y * px;
   if (!(along > 0) || !(std::abs(lateral) <= reach)) return none;
   PolylineProjection beyond;
-  beyond.s = path_.length() + along;
+  beyond.s = path_->length() + along;
   beyond.lateral = lateral;
   beyond.distance = std::abs(lateral);
   beyond.segment = last;
@@ -529,12 +529,12 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
 bool LaneFollower::surely_clear_of_path(MapPoint a, MapPoint b, double reach) const {
   const double until = s_ + lookahead();
   // Beyond the path's end in_path finds what stands ahead of its last segment (beyond_end).
-  if (!leaves_at_end_ && path_.length() <= until) return false;
+  if (!leaves_at_end_ && path_->length() <= until) return false;
   constexpr double kMargin = 1e-3;  // far above the rounding of boxes and coordinates
   const double wide = reach + kMargin;
   const MapPoint low{std::min(a.x, b.x) - wide, std::min(a.y, b.y) - wide};
   const MapPoint high{std::max(a.x, b.x) + wide, std::max(a.y, b.y) + wide};
-  const auto& arc = path_.arc_lengths();
+  const auto& arc = path_->arc_lengths();
   constexpr std::size_t run = PolylineBoxes::kRun;
   for (std::size_t box = segment_ / run; box < boxes_.size() && arc[box * run] <= until; ++box) {
     const MapPoint box_low = boxes_.low(box), box_high = boxes_.high(box);
@@ -576,11 +576,11 @@ std::optional<LaneFollower::Stop> LaneFollower::stop_at(const WorldSnapshot& wor
   std::uint32_t& start = which == Sighting::on_the_way ? unstarted : starts_[slot];
   double known = kInfinity;
   std::size_t first = 0;
-  if (hint > segment_ && path_.arc_lengths()[hint - 1] <= until) {
+  if (hint > segment_ && path_->arc_lengths()[hint - 1] <= until) {
     // The segment nearest at the last look, as it is: walking on to a nearer neighbour cost
     // more than the tighter bound saved (measured).
     const std::size_t near = hint - 1;
-    known = std::sqrt(frames_.distance_squared(path_, point, near));
+    known = std::sqrt(frames_.distance_squared(*path_, point, near));
     first = first_within_from(point, std::min(reach, known), near);
   } else if (start != 0) {
     first = first_within_from(point, reach, start - 1);
@@ -589,13 +589,13 @@ std::optional<LaneFollower::Stop> LaneFollower::stop_at(const WorldSnapshot& wor
   }
   start = static_cast<std::uint32_t>(first + 1);
   PolylineProjection nearest =
-      nearest_on_path(path_, boxes_, frames_, point, first, until, reach, known);
-  if (!std::isfinite(nearest.distance) && !leaves_at_end_ && path_.length() <= until)
+      nearest_on_path(*path_, boxes_, frames_, point, first, until, reach, known);
+  if (!std::isfinite(nearest.distance) && !leaves_at_end_ && path_->length() <= until)
     nearest = beyond_end(point, reach);
   hint = std::isfinite(nearest.distance) ? static_cast<std::uint32_t>(nearest.segment + 1) : 0;
   if (!std::isfinite(nearest.distance) || nearest.s <= s_) return best;
   const double half_width = body_.width / 2;
-  double relative = angle_difference(other.heading, heading_of(headings_, path_, nearest.segment));
+  double relative = angle_difference(other.heading, heading_of(headings_, *path_, nearest.segment));
   double across = std::abs(std::sin(relative)) * world.lengths[k] / 2 +
                   std::abs(std::cos(relative)) * world.widths[k] / 2;
   double along = std::abs(std::cos(relative)) * world.lengths[k] / 2 +
@@ -678,9 +678,9 @@ void LaneFollower::find_stop_lines(const WorldSnapshot& world, std::uint32_t sel
 
 std::optional<LaneIndex> LaneFollower::junction_lane_after(const FeatureAhead& feature) const {
   if (map_->lane(feature.lane).junction) return feature.lane;
-  for (std::size_t k = 0; k + 1 < route_.segments.size(); ++k)
-    if (route_.segments[k].lane == feature.lane) {
-      LaneIndex next = route_.segments[k + 1].lane;
+  for (std::size_t k = 0; k + 1 < route_->segments.size(); ++k)
+    if (route_->segments[k].lane == feature.lane) {
+      LaneIndex next = route_->segments[k + 1].lane;
       if (map_->lane(next).junction) return next;
     }
   return std::nullopt;
@@ -769,7 +769,7 @@ void LaneFollower::hold_at_junction(const WorldSnapshot& world, std::uint32_t se
                                     std::vector<Stop>& stops) {
   const double front = s_ + body_.length / 2;
   if (!stretch_known_ || (stretch_ && stretch_->exit <= front)) {
-    stretch_ = junction_stretch_ahead(*map_, route_.segments, route_starts_, front);
+    stretch_ = junction_stretch_ahead(*map_, route_->segments, route_starts_, front);
     stretch_known_ = true;
   }
   const std::optional<JunctionStretch>& stretch = stretch_;
@@ -817,7 +817,7 @@ bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32
   const bool arrivals = world.junction_arrivals.size() == world.states.size() &&
                         !std::isnan(world.junction_arrivals[self]);
   for (std::size_t segment = stretch.first; segment <= stretch.last; ++segment) {
-    const LaneIndex mine = route_.segments[segment].lane;
+    const LaneIndex mine = route_->segments[segment].lane;
     const std::vector<LaneIndex>& conflicts = conflicts_of(world, mine);
     const bool first_come = arrivals && !controlled_entry(*map_, mine);
     for (std::uint32_t k = 0; k < world.states.size(); ++k) {
@@ -842,10 +842,10 @@ bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32
 void LaneFollower::make_headings_known() {
   constexpr std::size_t kHeadingRun = 16;  // segments ahead whose headings are computed at once
   headed_until_ = segment_ + 2 + kHeadingRun;
-  ensure_headings(headings_, path_, segment_ > 0 ? segment_ - 1 : 0, headed_until_ - 1);
-  const std::size_t last = std::min(headed_until_ - 1, path_.segment_count() - 1);
+  ensure_headings(headings_, *path_, segment_ > 0 ? segment_ - 1 : 0, headed_until_ - 1);
+  const std::size_t last = std::min(headed_until_ - 1, path_->segment_count() - 1);
   for (std::size_t vertex = std::max<std::size_t>(segment_, 1); vertex <= last; ++vertex)
-    blends_[vertex] = vertex_blend(path_, headings_.values, vertex);
+    blends_[vertex] = vertex_blend(*path_, headings_.values, vertex);
 }
 
 void LaneFollower::advance(double acceleration, double dt) {
@@ -858,15 +858,15 @@ void LaneFollower::advance(double acceleration, double dt) {
   if (acceleration < 0 && next == 0) moved = v * v / (2 * -acceleration);
   const double heading = state_.heading;
   s_ += moved;
-  if (s_ >= path_.length()) {
-    s_ = path_.length();
+  if (s_ >= path_->length()) {
+    s_ = path_->length();
     if (leaves_at_end_) finished_ = true;
     if (!leaves_at_end_) next = 0;
   }
-  segment_ = segment_at_from(path_, s_, segment_);
+  segment_ = segment_at_from(*path_, s_, segment_);
   // The pose reads the headings of segment_ and its neighbours (the blends at its ends).
   if (segment_ + 1 >= headed_until_) make_headings_known();
-  const MapPose pose = pose_on_segment(path_, headings_.values, blends_, segment_, s_);
+  const MapPose pose = pose_on_segment(*path_, headings_.values, blends_, segment_, s_);
   state_ = KinematicState{};
   state_.x = pose.position.x;
   state_.y = pose.position.y;

@@ -64,9 +64,10 @@ class LaneFollower {
   // Drives `path` (drawn from `route` by route_path, so that its arc length is the route's
   // distance) from its start at `initial_speed`, aiming for `desired_speed`. At the path's end it
   // stops there, or, when `leaves_at_end`, drives on out of the world (finished()).
-  // `places`, route_path's for `path` (empty when not known), say which lane it is on where; they
-  // are read, not copied (a flow's vehicles share theirs), and must outlive the follower.
-  LaneFollower(const RoadMap& map, LaneRoute route, Polyline path,
+  // `places`, route_path's for `path` (empty when not known), say which lane it is on where. The
+  // route, path and places are read, not copied (a flow's vehicles share theirs, and a run need
+  // not copy kilometres of path for every follower), and must outlive the follower.
+  LaneFollower(const RoadMap& map, const LaneRoute& route, const Polyline& path,
                std::span<const PathPlace> places, const ActorClass& body, double desired_speed,
                double initial_speed, bool leaves_at_end, const FollowerSettings& settings = {});
 
@@ -174,8 +175,8 @@ class LaneFollower {
   void make_headings_known();
 
   const RoadMap* map_;
-  LaneRoute route_;
-  Polyline path_;
+  const LaneRoute* route_;
+  const Polyline* path_;
   std::span<const PathPlace> places_;  // of path_'s points (lane_fix), or none
   LazyHeadings headings_;              // of each path segment, computed where needed
   PolylineBoxes boxes_;                // of runs of path segments, for nearest_on_path
@@ -211,7 +212,7 @@ class LaneFollower {
 
   KinematicState state_;
   double s_ = 0;
-  std::size_t segment_ = 0;  // path_.segment_at(s_), kept as s_ moves on (segment_walk.hpp)
+  std::size_t segment_ = 0;  // path_->segment_at(s_), kept as s_ moves on (segment_walk.hpp)
   // The headings of the path segments from segment_ - 1 up to (not including) this one are
   // known, and the blends of the vertices from segment_ up to it: advance computes them a run
   // ahead at a time, so that most steps only compare.
