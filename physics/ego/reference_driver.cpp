@@ -137,10 +137,8 @@ std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) 
       continue;
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
-    // Farther from the path than any extent across it reaches: not across the lane (below).
-    if (route_.surely_farther({object.x, object.y}, located_window_,
-                              greatest_extent(object) + half_width + kSurelyAside))
-      continue;
+    // Located without a bound first (collect_object_constraints locates nearly every object near
+    // the ego anyway): one surely_farther rules out is as far aside in its location (below).
     const auto& at = located(k, object);
     if (!at || at->beyond_end) continue;
     double relative = angle_difference(object.heading, route_.heading_at(at->s, at->segment));
@@ -263,10 +261,13 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
     // Too far aside to be in the path or to enter it in time, however it moves (below; off the
-    // path, the ego's own lateral plan would shift it).
-    if (!overtake_.active && route_.surely_farther({object.x, object.y}, ahead,
-                                                   greatest_extent(object) + half_width +
-                                                       farthest_entry(object) + kSurelyAside))
+    // path, the ego's own lateral plan would shift it). A vehicle located already needs no bound:
+    // its location is then as far aside, and only a pedestrian is heeded beyond (as crossing).
+    const bool bounded = object.kind == TraceActorKind::pedestrian || !located_known_[k];
+    if (!overtake_.active && bounded &&
+        route_.surely_farther(
+            {object.x, object.y}, ahead,
+            greatest_extent(object) + half_width + farthest_entry(object) + kSurelyAside))
       continue;
     const auto& at = located(k, object);
     // Beside or behind the ego's centre, or past the end of the route (where the ego stops).
