@@ -132,6 +132,9 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
   const Snapshot& sample = history_[history_head_];
 
   const bool all_round = settings_.field_of_view >= kTwoPi - 1e-3;
+  // The objects come in id order, as the tracks are kept: each one's track lies at or after the
+  // previous one's, and is found by walking on from there.
+  std::size_t next_track = 0;
   for (const WorldObject& object : sample.objects) {
     if (object.kind == TraceActorKind::ego) continue;
     const double range = object.kind == TraceActorKind::pedestrian ? settings_.pedestrian_range
@@ -151,7 +154,13 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
     const double miss = add_miss(settings_.miss_probability, edge);
     if (uniform01(random_) < miss) continue;
 
-    WorldObject seen = object;
+    while (next_track < tracks_.size() && tracks_[next_track].object.id < object.id) ++next_track;
+    if (next_track == tracks_.size() || tracks_[next_track].object.id != object.id)
+      tracks_.insert(tracks_.begin() + static_cast<std::ptrdiff_t>(next_track), Track{});
+    Track& track = tracks_[next_track];
+    WorldObject& seen = track.object;
+    seen = object;
+    track.last_seen = time_;
     // xoshiro256** and the ziggurat: both written out, so a seed gives the same noise with
     // every standard library, and several times cheaper than mt19937_64 and the polar method.
     const double noise_x = standard_normal(random_);
@@ -162,13 +171,6 @@ const std::vector<WorldObject>& Perception::observe(const KinematicState& ego,
     seen.y += settings_.position_noise * noise_y;
     seen.heading = angle_difference(object.heading + settings_.heading_noise * noise_heading, 0);
     seen.speed = std::max(0.0, object.speed + settings_.speed_noise * noise_speed);
-
-    auto track = std::lower_bound(tracks_.begin(), tracks_.end(), object.id,
-                                  [](const Track& t, ActorId id) { return t.object.id < id; });
-    if (track == tracks_.end() || track->object.id != object.id) {
-      track = tracks_.insert(track, Track{});
-    }
-    *track = Track{seen, time_};
   }
 
   // A track not refreshed this step coasts on its last detection, then is dropped.
