@@ -174,7 +174,7 @@ bool room_to_stop_after(const OvertakeContext& context, const Cluster& cluster, 
 std::optional<double> lane_offset(const OvertakeContext& context, LaneIndex lane, double s) {
   const Polyline& path = context.route.path();
   // The point and the heading lie on one segment: it is searched for once.
-  const std::size_t segment = path.segment_at(std::clamp(s, 0.0, path.length()));
+  const std::size_t segment = context.route.segment_at(s);
   MapPoint p = point_at_from(path, s, segment);
   // The route's kept segment headings: path.heading_at's atan2, computed once.
   double heading = context.route.heading_at(s, segment);

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "physics/map/point_at_from.hpp"
+
 namespace scenfuzz {
 
 double pursuit_steering(const RouteTracker& route, const OvertakePlan& plan, double progress,
@@ -15,9 +17,10 @@ double pursuit_steering(const RouteTracker& route, const OvertakePlan& plan, dou
   MapPoint target;
   if (target_s <= route.length()) {
     // Overtaking moves the aim sideways, as the plan has it at the target point.
-    target = route.path().point_at(target_s);
+    const std::size_t segment = route.segment_at(target_s);  // once, for the point and heading
+    target = point_at_from(route.path(), target_s, segment);
     double offset = planned_lateral(plan, target_s);
-    double heading = route.heading_at(target_s);
+    double heading = route.heading_at(target_s, segment);
     target = {target.x - offset * std::sin(heading), target.y + offset * std::cos(heading)};
   } else {
     // Beyond the end, keep aiming along the path's last direction.

@@ -107,6 +107,11 @@ std::optional<RouteLanePosition> RouteTracker::lane_at(double s) const {
                            begin + segment.s_end - segment.s_begin};
 }
 
+std::size_t RouteTracker::segment_at(double s) const {
+  // segment_ is path_.segment_at(progress_), kept by update().
+  return segment_near(std::clamp(s, 0.0, length()), segment_);
+}
+
 double RouteTracker::heading_at(double s) const {
   // Polyline::heading_at's segment, and the same atan2 of it (segment_headings).
   return headings_[path_.segment_at(std::clamp(s, 0.0, length()))];

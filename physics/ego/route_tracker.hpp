@@ -71,6 +71,9 @@ class RouteTracker {
   // The route lane at path arc length s (nullopt for an empty route). Inside a lane change
   // stretch the path lies between two lanes; this is the lane the route is on at s.
   std::optional<RouteLanePosition> lane_at(double s) const;
+  // path().segment_at(s) of s clamped to the path: walked to from the progress's segment when s
+  // lies a few metres from it (the driver's aim and the lanes beside it are looked up there).
+  std::size_t segment_at(double s) const;
   // path().heading_at(s), from headings computed once (the driver asks for several a step).
   double heading_at(double s) const;
   // The same, walking from segment `hint` (a located coordinate's) instead of a binary search.
