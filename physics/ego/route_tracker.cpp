@@ -70,8 +70,9 @@ RouteTracker::RouteTracker(const RoadMap& map, const LaneRoute& route,
     std::size_t after = std::min(i + kCurvatureReach, segments);
     if (after <= before + 1) continue;
     // Segment headings belong to segment midpoints: the turn between two of them happens over
-    // the distance between those midpoints.
-    double turn = angle_difference(path_.heading_at(arc[after - 1]), path_.heading_at(arc[before]));
+    // the distance between those midpoints. (headings_[k] is path_.heading_at(arc[k]), the same
+    // atan2 of segment k.)
+    double turn = angle_difference(headings_[after - 1], headings_[before]);
     double from = (arc[before] + arc[before + 1]) / 2;
     double to = (arc[after - 1] + arc[after]) / 2;
     if (to > from) curvature_[i] = std::abs(turn) / (to - from);
