@@ -200,10 +200,12 @@ bool route_allows(const OvertakeContext& context, LaneIndex lane, double from, d
   return true;
 }
 
-// Whether the traffic in the passing lane leaves room for the whole pass.
+// Whether the traffic in the passing lane leaves room for the whole pass. `ignored(id)` tells the
+// objects being passed.
+template <typename Ignored>
 bool passing_lane_clear(const OvertakeContext& context, const Candidate& candidate,
                         const Cluster& cluster, const PassTiming& timing,
-                        const OvertakingSettings& settings, std::span<const ActorId> ignored) {
+                        const OvertakingSettings& settings, const Ignored& ignored) {
   const Lane& lane = context.map.lane(candidate.lane);
   const KinematicState& ego = context.ego;
   if (candidate.oncoming) {
@@ -217,7 +219,7 @@ bool passing_lane_clear(const OvertakeContext& context, const Candidate& candida
   }
   PolylineProjection ego_on = lane.centre_line.project({ego.x, ego.y});
   for (const WorldObject& o : context.objects) {
-    if (std::find(ignored.begin(), ignored.end(), o.id) != ignored.end()) continue;
+    if (ignored(o.id)) continue;
     PolylineProjection on = lane.centre_line.project({o.x, o.y});
     double half_width = on.lateral >= 0 ? lane_left_width_at(context.map, candidate.lane, on.s)
                                         : lane_right_width_at(context.map, candidate.lane, on.s);
@@ -261,12 +263,6 @@ std::vector<Candidate> candidates(const Lane& lane, bool standing) {
   for (LaneIndex next : lane.left_reverse_neighbours)
     found.push_back({next, true, lane.left_boundary_type});
   return found;
-}
-
-std::vector<ActorId> passed_ids(std::span<const Blocker> blockers, std::size_t count) {
-  std::vector<ActorId> ids;
-  for (std::size_t i = 0; i < count; ++i) ids.push_back(blockers[i].object->id);
-  return ids;
 }
 
 void start_back(OvertakePlan& plan, double s, double speed, const OvertakingSettings& settings) {
@@ -331,7 +327,11 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
   // A blocker crawling at walking pace is swept as if standing where it is: it only moves away
   // during the pull-out, so the check errs on the safe side (a 0.6 m/s car was clipped unchecked).
   bool crawling = cluster.speed < kWalkingPace;
-  std::vector<ActorId> ignored = passed_ids(blockers, cluster.count);
+  const std::span<const Blocker> passed = blockers.first(cluster.count);
+  auto ignored = [&](ActorId id) {
+    return std::any_of(passed.begin(), passed.end(),
+                       [&](const Blocker& b) { return b.object->id == id; });
+  };
 
   for (const Candidate& candidate : candidates(context.map.lane(here->lane), standing)) {
     if (!may_cross(candidate.boundary, cluster.speed, settings)) continue;
@@ -427,8 +427,10 @@ void update_overtake(OvertakePlan& plan, const OvertakeContext& context,
   if ((plan.oncoming && front < first_rear) || (!plan.oncoming && mostly_in_own_lane)) {
     Cluster cluster{first_rear, last_front, slowest, plan.passing.size()};
     PassTiming timing = pass_timing(context, first_rear - front, cluster, plan.offset, settings);
-    std::vector<ActorId> ignored;
-    for (const auto& passed : plan.passing) ignored.push_back(passed.id);
+    auto ignored = [&](ActorId id) {
+      return std::any_of(plan.passing.begin(), plan.passing.end(),
+                         [&](const auto& passed) { return passed.id == id; });
+    };
     Candidate lane{plan.lane, plan.oncoming, BoundaryType::unknown};
     if (!timing.possible ||
         !passing_lane_clear(context, lane, cluster, timing, settings, ignored)) {

@@ -122,11 +122,12 @@ double ReferenceDriver::steering(const KinematicState& ego) const {
   return pursuit_steering(route_, overtake_, progress, ego, vehicle_, lookahead);
 }
 
-std::vector<Blocker> ReferenceDriver::objects_in_lane(const DriverInput& input) {
+std::vector<Blocker>& ReferenceDriver::objects_in_lane(const DriverInput& input) {
   // Every vehicle and obstacle across the route's own lane (as if the ego kept to it), from a
   // little behind the ego on: what it might pass, and what it has been passing. Pedestrians
   // standing in its way count too once its patience with them is over.
-  std::vector<Blocker> found;
+  std::vector<Blocker>& found = in_lane_;
+  found.clear();
   const KinematicState& ego = input.ego;
   const double horizon = located_horizon_;
   double half_width = vehicle_.width / 2 + kCorridorMargin;
@@ -183,7 +184,7 @@ void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
                           settings_.lookahead_time,
                           settings_.min_lookahead,
                           input.time};
-  std::vector<Blocker> in_lane = objects_in_lane(input);
+  std::vector<Blocker>& in_lane = objects_in_lane(input);
   if (overtake_.active) {
     update_overtake(overtake_, context, in_lane, settings_.overtaking);
     return;

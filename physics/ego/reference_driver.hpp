@@ -106,7 +106,7 @@ class ReferenceDriver {
 
   double desired_speed(double s) const;
   double steering(const KinematicState& ego) const;
-  std::vector<Blocker> objects_in_lane(const DriverInput& input);
+  std::vector<Blocker>& objects_in_lane(const DriverInput& input);
   void start_locating(const DriverInput& input);
   // Object k of the step's input on the route (RouteTracker::locate), located at most once a
   // step: the plan and the constraints ask for the same objects.
@@ -139,6 +139,7 @@ class ReferenceDriver {
   double sight_speed_;  // m/s: it can stop within its sight distance from this speed
   std::vector<double> speed_envelope_;  // per path vertex: the speed limit and bends, braked back
   std::vector<Constraint> constraints_;
+  std::vector<Blocker> in_lane_;  // objects_in_lane's answer (kept, so as not to allocate a step)
   // This step's locations (located()): the window searched, how far aside, and per object
   // whether it was located yet and where.
   PathWindow located_window_;
