@@ -252,18 +252,30 @@ bool passing_lane_clear(const OvertakeContext& context, const Candidate& candida
   return true;
 }
 
-std::vector<Candidate> candidates(const Lane& lane, bool standing) {
-  std::vector<Candidate> found;
+// Calls `visit` on each lane the driver may pass in, in the order they are tried, until it
+// returns true.
+template <typename Visit>
+void visit_candidates(const Lane& lane, bool standing, Visit visit) {
   for (LaneIndex next : lane.left_forward_neighbours)
-    found.push_back({next, false, lane.left_boundary_type});
+    if (visit(Candidate{next, false, lane.left_boundary_type})) return;
   // Passing on the right only round something standing (a parked or broken-down car).
   if (standing)
     for (LaneIndex next : lane.right_forward_neighbours)
-      found.push_back({next, false, lane.right_boundary_type});
+      if (visit(Candidate{next, false, lane.right_boundary_type})) return;
   for (LaneIndex next : lane.left_reverse_neighbours)
-    found.push_back({next, true, lane.left_boundary_type});
-  return found;
+    if (visit(Candidate{next, true, lane.left_boundary_type})) return;
 }
+
+// What a pass in any of the lanes beside depends on: plan_overtake's findings.
+struct PassSetup {
+  const OvertakeContext& context;
+  std::span<const Blocker> blockers;
+  const OvertakingSettings& settings;
+  Cluster cluster;
+  double gap = 0;         // m from the ego's front to the first blocker's rear
+  LaneIndex lane = 0;     // the route's lane at the ego
+  bool crawling = false;  // the cluster is no faster than walking pace
+};
 
 void start_back(OvertakePlan& plan, double s, double speed, const OvertakingSettings& settings) {
   plan.back_from = planned_lateral(plan, s);
@@ -291,6 +303,88 @@ bool sweep_clears(const OvertakeContext& context, OvertakePlan& plan, const Bloc
     }
   }
   return usual >= settings.sweep_margin;
+}
+
+// The move out's length (m of travel) and the shortest it may be: at the usual sideways speed,
+// quicker when the room to the blocker (what the ego travels before it reaches the blocker's
+// rear) asks for it.
+struct MoveOut {
+  double length = 0;
+  double shortest = 0;
+};
+
+MoveOut move_out(const PassSetup& setup, double offset) {
+  const KinematicState& ego = setup.context.ego;
+  const OvertakingSettings& settings = setup.settings;
+  const double gap = setup.gap;
+  double closing = ego.speed - setup.cluster.speed;
+  double room = closing > 0.1 ? gap * ego.speed / closing : kInfinity;
+  if (ego.speed < 0.1) room = gap;
+  double usual =
+      std::max(settings.shortest_move, ego.speed * std::abs(offset) / settings.lateral_speed);
+  double quickest = std::max(settings.shortest_move,
+                             ego.speed * std::abs(offset) / settings.fastest_lateral_speed);
+  double length = std::min(usual, 0.9 * room);
+  double shortest = quickest;
+  bool at_walking_pace = ego.speed < kWalkingPace;
+  if (length < quickest && at_walking_pace && setup.crawling) {
+    // The swept-path check (sweep_clears) decides whether the pull-out is possible; where the
+    // smoothstep's bend bound doubts it, the tight pull-out may still clear.
+    std::optional<double> pull_out = standing_pull_out(room, offset, setup.context.vehicle);
+    length = pull_out ? std::min(*pull_out, usual) : length;
+    shortest = length;
+  }
+  return {length, shortest};
+}
+
+// The pass of the cluster in `candidate`'s lane, if the road, the traffic and the room ahead
+// allow it now; `waiting` is set when only the traffic or the room keeps it from starting.
+std::optional<OvertakePlan> try_pass(const PassSetup& setup, const Candidate& candidate,
+                                     bool& waiting) {
+  const OvertakeContext& context = setup.context;
+  const OvertakingSettings& settings = setup.settings;
+  const Cluster& cluster = setup.cluster;
+  const double progress = context.route.progress();
+  const double gap = setup.gap;
+  if (!may_cross(candidate.boundary, cluster.speed, settings)) return std::nullopt;
+  auto offset = lane_offset(context, candidate.lane, progress);
+  if (!offset) return std::nullopt;
+  PassTiming timing = pass_timing(context, gap, cluster, *offset, settings);
+  if (!timing.possible) return std::nullopt;
+  double end = progress + timing.travel;
+  if (!route_allows(context, setup.lane, progress, end)) return std::nullopt;
+  if (!room_to_stop_after(context, cluster, context.route.length() - end, settings))
+    return std::nullopt;
+  auto offset_at_end = lane_offset(context, candidate.lane, end);
+  if (!offset_at_end || std::abs(*offset_at_end - *offset) > kLaneTolerance) return std::nullopt;
+
+  const MoveOut out = move_out(setup, *offset);
+  const std::span<const Blocker> passed = setup.blockers.first(cluster.count);
+  auto ignored = [&](ActorId id) {
+    return std::any_of(passed.begin(), passed.end(),
+                       [&](const Blocker& b) { return b.object->id == id; });
+  };
+  if (out.length < out.shortest ||
+      !passing_lane_clear(context, candidate, cluster, timing, settings, ignored)) {
+    waiting = true;
+    return std::nullopt;
+  }
+  OvertakePlan plan;
+  plan.active = true;
+  plan.oncoming = candidate.oncoming;
+  plan.lane = candidate.lane;
+  plan.offset = *offset;
+  plan.out_begin = progress;
+  plan.out_end = progress + out.length;
+  for (const Blocker& b : passed)
+    plan.passing.push_back({b.object->id, b.rear_s, b.front_s, b.speed});
+  // A blocker crawling at walking pace is swept as if standing where it is: it only moves away
+  // during the pull-out, so the check errs on the safe side (a 0.6 m/s car was clipped unchecked).
+  if (setup.crawling && !sweep_clears(context, plan, passed.front(), settings)) {
+    waiting = true;
+    return std::nullopt;
+  }
+  return plan;
 }
 
 }  // namespace
@@ -323,69 +417,15 @@ std::optional<OvertakePlan> plan_overtake(const OvertakeContext& context,
   if (cluster.front_s - cluster.rear_s > settings.longest_cluster) return std::nullopt;
   auto here = context.route.lane_at(progress);
   if (!here) return std::nullopt;
-  bool standing = cluster.speed < kStationary;
-  // A blocker crawling at walking pace is swept as if standing where it is: it only moves away
-  // during the pull-out, so the check errs on the safe side (a 0.6 m/s car was clipped unchecked).
-  bool crawling = cluster.speed < kWalkingPace;
-  const std::span<const Blocker> passed = blockers.first(cluster.count);
-  auto ignored = [&](ActorId id) {
-    return std::any_of(passed.begin(), passed.end(),
-                       [&](const Blocker& b) { return b.object->id == id; });
-  };
-
-  for (const Candidate& candidate : candidates(context.map.lane(here->lane), standing)) {
-    if (!may_cross(candidate.boundary, cluster.speed, settings)) continue;
-    auto offset = lane_offset(context, candidate.lane, progress);
-    if (!offset) continue;
-    PassTiming timing = pass_timing(context, gap, cluster, *offset, settings);
-    if (!timing.possible) continue;
-    double end = progress + timing.travel;
-    if (!route_allows(context, here->lane, progress, end)) continue;
-    if (!room_to_stop_after(context, cluster, context.route.length() - end, settings)) continue;
-    auto offset_at_end = lane_offset(context, candidate.lane, end);
-    if (!offset_at_end || std::abs(*offset_at_end - *offset) > kLaneTolerance) continue;
-
-    // The move out: at the usual sideways speed, quicker when the room to the blocker (what
-    // the ego travels before it reaches the blocker's rear) asks for it.
-    double closing = ego.speed - cluster.speed;
-    double room = closing > 0.1 ? gap * ego.speed / closing : kInfinity;
-    if (ego.speed < 0.1) room = gap;
-    double usual =
-        std::max(settings.shortest_move, ego.speed * std::abs(*offset) / settings.lateral_speed);
-    double quickest = std::max(settings.shortest_move,
-                               ego.speed * std::abs(*offset) / settings.fastest_lateral_speed);
-    double length = std::min(usual, 0.9 * room);
-    double shortest = quickest;
-    bool at_walking_pace = ego.speed < kWalkingPace;
-    if (length < quickest && at_walking_pace && crawling) {
-      // The swept-path check below (sweep_clears) decides whether the pull-out is possible;
-      // where the smoothstep's bend bound doubts it, the tight pull-out may still clear.
-      std::optional<double> pull_out = standing_pull_out(room, *offset, context.vehicle);
-      length = pull_out ? std::min(*pull_out, usual) : length;
-      shortest = length;
-    }
-    if (length < shortest ||
-        !passing_lane_clear(context, candidate, cluster, timing, settings, ignored)) {
-      waiting = true;
-      continue;
-    }
-    OvertakePlan plan;
-    plan.active = true;
-    plan.oncoming = candidate.oncoming;
-    plan.lane = candidate.lane;
-    plan.offset = *offset;
-    plan.out_begin = progress;
-    plan.out_end = progress + length;
-    for (std::size_t i = 0; i < cluster.count; ++i)
-      plan.passing.push_back(
-          {blockers[i].object->id, blockers[i].rear_s, blockers[i].front_s, blockers[i].speed});
-    if (crawling && !sweep_clears(context, plan, first, settings)) {
-      waiting = true;
-      continue;
-    }
-    return plan;
-  }
-  return std::nullopt;
+  const PassSetup setup{
+      context, blockers, settings, cluster, gap, here->lane, cluster.speed < kWalkingPace};
+  std::optional<OvertakePlan> plan;
+  visit_candidates(context.map.lane(here->lane), cluster.speed < kStationary,
+                   [&](const Candidate& candidate) {
+                     plan = try_pass(setup, candidate, waiting);
+                     return plan.has_value();
+                   });
+  return plan;
 }
 
 void update_overtake(OvertakePlan& plan, const OvertakeContext& context,
