@@ -138,10 +138,19 @@ std::vector<Blocker>& ReferenceDriver::objects_in_lane(const DriverInput& input)
       continue;
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
-    // Located without a bound first (collect_object_constraints locates nearly every object near
-    // the ego anyway): one surely_farther rules out is as far aside in its location (below).
+    // Farther from the path than any extent across it reaches: not across the lane. Located
+    // without that bound first (collect_object_constraints locates nearly every object near the
+    // ego anyway), as its location is then as far aside; an object without a finite heading,
+    // which the tests below never reject, keeps the bound.
+    const bool finite = std::isfinite(object.heading);
+    if (!finite && route_.surely_farther({object.x, object.y}, located_window_,
+                                         greatest_extent(object) + half_width + kSurelyAside))
+      continue;
     const auto& at = located(k, object);
     if (!at || at->beyond_end) continue;
+    // The test below with greatest_extent, no less than any extent across as computed too: it
+    // rejects what that test would, without the heading's sine and cosine.
+    if (finite && std::abs(at->lateral) - greatest_extent(object) - half_width > 0) continue;
     double relative = angle_difference(object.heading, route_.heading_at(at->s, at->segment));
     if (std::abs(at->lateral) - extent_across(object, relative) - half_width > 0) continue;
     double along = extent_along(object, relative);
