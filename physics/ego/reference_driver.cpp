@@ -106,7 +106,7 @@ ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
 double ReferenceDriver::desired_speed(double s) const {
   if (speed_envelope_.empty()) return std::min(settings_.default_speed_limit, vehicle_.max_speed);
   const auto& arc = route_.path().arc_lengths();
-  std::size_t segment = route_.path().segment_at(s);
+  std::size_t segment = route_.segment_at(s);  // as path().segment_at(s), for any s
   double t = std::clamp((s - arc[segment]) / (arc[segment + 1] - arc[segment]), 0.0, 1.0);
   return std::max(
       kMinimumDesiredSpeed,
@@ -179,7 +179,7 @@ const std::optional<PathCoordinate>& ReferenceDriver::located(std::size_t k,
   return located_[k];
 }
 
-void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
+void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt, double desired) {
   waiting_to_pass_.reset();
   if (route_.empty()) return;
   OvertakeContext context{map_,
@@ -187,7 +187,7 @@ void ReferenceDriver::plan_manoeuvre(const DriverInput& input, double dt) {
                           vehicle_,
                           input.ego,
                           input.objects,
-                          desired_speed(route_.progress()),
+                          desired,
                           settings_.comfortable_acceleration,
                           dt,
                           settings_.lookahead_time,
@@ -608,7 +608,9 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   last_time_ = input.time;
   motion_.update(input.objects, dt);
   start_locating(input);
-  plan_manoeuvre(input, dt);
+  // The free road's speed here, for the plan and the acceleration alike.
+  const double free_speed = desired_speed(route_.progress());
+  plan_manoeuvre(input, dt, free_speed);
   double front_s = route_.progress() + vehicle_.length / 2;
   constraints_.clear();
   held_by_standing_ = false;
@@ -626,7 +628,7 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   hold_at_junction(input, front_s);
   watch_patience(input);
 
-  double desired = desired_speed(route_.progress());
+  double desired = free_speed;
   if (creeping_) desired = std::min(desired, settings_.creeping_speed);
   double a = settings_.comfortable_acceleration;
   double acceleration = a * (1 - fourth_power(ego.speed / desired));

@@ -111,7 +111,8 @@ class ReferenceDriver {
   // Object k of the step's input on the route (RouteTracker::locate), located at most once a
   // step: the plan and the constraints ask for the same objects.
   const std::optional<PathCoordinate>& located(std::size_t k, const WorldObject& object);
-  void plan_manoeuvre(const DriverInput& input, double dt);
+  // `desired`: the speed the ego would drive on a free road here (desired_speed).
+  void plan_manoeuvre(const DriverInput& input, double dt, double desired);
   void indicate_then_go(const OvertakePlan& plan, double time);
   void watch_patience(const DriverInput& input);
   bool on_own_lane(MapPoint point) const;
