@@ -131,6 +131,7 @@ std::vector<Blocker>& ReferenceDriver::objects_in_lane(const DriverInput& input)
   const KinematicState& ego = input.ego;
   const double horizon = located_horizon_;
   double half_width = vehicle_.width / 2 + kCorridorMargin;
+  const MapPoint direction = route_.direction();
   for (std::size_t k = 0; k < input.objects.size(); ++k) {
     const WorldObject& object = input.objects[k];
     bool pedestrian = object.kind == TraceActorKind::pedestrian;
@@ -138,12 +139,17 @@ std::vector<Blocker>& ReferenceDriver::objects_in_lane(const DriverInput& input)
       continue;
     double dx = object.x - ego.x, dy = object.y - ego.y;
     if (dx * dx + dy * dy > (horizon + object.length) * (horizon + object.length)) continue;
-    // Farther from the path than any extent across it reaches: not across the lane. Located
-    // without that bound first (collect_object_constraints locates nearly every object near the
-    // ego anyway), as its location is then as far aside; an object without a finite heading,
-    // which the tests below never reject, keeps the bound.
+    // Farther from the path than any extent across it reaches: not across the lane. An object
+    // near the ego is located without that bound (collect_object_constraints locates nearly all
+    // of those anyway), its location then being as far aside; one far aside or behind (by the
+    // path's line at the ego) is bounded first, and so is one without a finite heading, which
+    // the tests below never reject.
     const bool finite = std::isfinite(object.heading);
-    if (!finite && route_.surely_farther({object.x, object.y}, located_window_,
+    const double across = direction.x * dy - direction.y * dx;
+    const double ahead = direction.x * dx + direction.y * dy;
+    const double near = greatest_extent(object) + half_width + farthest_entry(object);
+    const bool bounded = !finite || std::abs(across) > near || ahead < -near;
+    if (bounded && route_.surely_farther({object.x, object.y}, located_window_,
                                          greatest_extent(object) + half_width + kSurelyAside))
       continue;
     const auto& at = located(k, object);

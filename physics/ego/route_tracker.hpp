@@ -62,6 +62,8 @@ class RouteTracker {
 
   const Polyline& path() const { return path_; }
   double progress() const { return progress_; }
+  // The unit direction of the path's segment at the progress (not for an empty route).
+  MapPoint direction() const { return frames_.direction(segment_); }
   double length() const { return path_.length(); }
   bool empty() const { return path_.points().size() < 2; }
   const std::vector<RouteFeature>& features() const { return features_; }
