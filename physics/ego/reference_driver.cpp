@@ -91,7 +91,7 @@ ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
   speed_envelope_.resize(arc.size());
   for (std::size_t i = 0; i < arc.size(); ++i) {
     double limit = std::min(route.speed_limit_at(arc[i]), vehicle.max_speed);
-    double curvature = route.curvature_at(arc[i]);
+    double curvature = route.curvature_at(arc[i], i);
     if (curvature > 1e-6)
       limit = std::min(limit, std::sqrt(settings.lateral_acceleration / curvature));
     speed_envelope_[i] = limit;
@@ -271,7 +271,12 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
   const KinematicState& ego = input.ego;
   const double horizon = located_horizon_;
   double half_width = vehicle_.width / 2 + kCorridorMargin;
-  const PathWindow ahead = route_.window(0, horizon);  // what is behind the ego's centre is not
+  // What is behind the ego's centre is not ahead; the window is found when first asked for.
+  std::optional<PathWindow> ahead;
+  auto ahead_window = [&] {
+    if (!ahead) ahead = route_.window(0, horizon);
+    return *ahead;
+  };
   for (std::size_t k = 0; k < input.objects.size(); ++k) {
     const WorldObject& object = input.objects[k];
     double dx = object.x - ego.x, dy = object.y - ego.y;
@@ -282,7 +287,7 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     const bool bounded = object.kind == TraceActorKind::pedestrian || !located_known_[k];
     if (!overtake_.active && bounded &&
         route_.surely_farther(
-            {object.x, object.y}, ahead,
+            {object.x, object.y}, ahead_window(),
             greatest_extent(object) + half_width + farthest_entry(object) + kSurelyAside))
       continue;
     const auto& at = located(k, object);

@@ -124,7 +124,12 @@ double RouteTracker::heading_at(double s, std::size_t hint) const {
 
 double RouteTracker::curvature_at(double s) const {
   if (curvature_.empty()) return 0;
-  std::size_t segment = path_.segment_at(s);
+  return curvature_at(s, path_.segment_at(s));
+}
+
+double RouteTracker::curvature_at(double s, std::size_t hint) const {
+  if (curvature_.empty()) return 0;
+  std::size_t segment = segment_at_from(path_, s, hint);
   return std::max(curvature_[segment], curvature_[std::min(segment + 1, curvature_.size() - 1)]);
 }
 

@@ -82,6 +82,8 @@ class RouteTracker {
   double heading_at(double s, std::size_t hint) const;
   // The path's curvature (1/m, unsigned) around arc length s.
   double curvature_at(double s) const;
+  // The same, walking from segment `hint` instead of a binary search.
+  double curvature_at(double s, std::size_t hint) const;
   // The route's stretch through the junction it is in at path arc length s, or the next ahead.
   std::optional<JunctionStretch> junction_ahead(double s) const;
   const std::vector<RouteSegment>& segments() const { return segments_; }
