@@ -60,4 +60,21 @@ PolylineProjection nearest_on_path(const Polyline& path, const PolylineBoxes& bo
   return frames.project(path, point, best);
 }
 
+bool surely_clear_of(const Polyline& path, const PolylineBoxes& boxes, MapPoint a, MapPoint b,
+                     std::size_t first, double until, double reach) {
+  constexpr double kMargin = 1e-3;  // m: far above the rounding of boxes and coordinates
+  const double wide = reach + kMargin;
+  const MapPoint low{std::min(a.x, b.x) - wide, std::min(a.y, b.y) - wide};
+  const MapPoint high{std::max(a.x, b.x) + wide, std::max(a.y, b.y) + wide};
+  const auto& arc = path.arc_lengths();
+  constexpr std::size_t run = PolylineBoxes::kRun;
+  // A point within reach of a segment has the segment's box within reach.
+  for (std::size_t box = first / run; box < boxes.size() && arc[box * run] <= until; ++box) {
+    const MapPoint box_low = boxes.low(box), box_high = boxes.high(box);
+    if (box_low.x <= high.x && low.x <= box_high.x && box_low.y <= high.y && low.y <= box_high.y)
+      return false;
+  }
+  return true;
+}
+
 }  // namespace scenfuzz

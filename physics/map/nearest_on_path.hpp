@@ -27,4 +27,13 @@ PolylineProjection nearest_on_path(const Polyline& path, const PolylineBoxes& bo
                                    double until, double reach,
                                    double known = std::numeric_limits<double>::infinity());
 
+// Whether every point of the line from `a` to `b` is surely farther than `reach` from each
+// segment that nearest_on_path(path, boxes, ..., first, until, reach) may search (first, first +
+// 1, ... starting by `until`, among those `boxes` are made for): the box of the two points, widened
+// by the reach, meets none of those segments' boxes. Then no such search for a point on the line
+// finds anything, and a caller looking for something moving from `a` to `b` need not search. By
+// box tests only; false when it may be in reach.
+bool surely_clear_of(const Polyline& path, const PolylineBoxes& boxes, MapPoint a, MapPoint b,
+                     std::size_t first, double until, double reach);
+
 }  // namespace scenfuzz

@@ -522,26 +522,14 @@ std::optional<LaneFollower::Stop> LaneFollower::in_path(const WorldSnapshot& wor
 
 // Whether every point from `a` to `b` (where an actor is and where it will be: in_path searches
 // there and between) is surely out of `reach` of the path in_path searches, so that none of its
-// searches can find anything: the box of the two points, widened by the reach, meets none of the
-// path's boxes from this follower's on (a point within reach of a segment has the segment's box
-// within reach). Most actors near a path but not in it (on the pavement, crossing elsewhere in a
-// junction) are ruled out so at the cost of a few box tests instead of a search per point.
+// searches can find anything. Most actors near a path but not in it (on the pavement, crossing
+// elsewhere in a junction) are ruled out so at the cost of a few box tests instead of a search per
+// point.
 bool LaneFollower::surely_clear_of_path(MapPoint a, MapPoint b, double reach) const {
   const double until = s_ + lookahead();
   // Beyond the path's end in_path finds what stands ahead of its last segment (beyond_end).
   if (!leaves_at_end_ && path_->length() <= until) return false;
-  constexpr double kMargin = 1e-3;  // far above the rounding of boxes and coordinates
-  const double wide = reach + kMargin;
-  const MapPoint low{std::min(a.x, b.x) - wide, std::min(a.y, b.y) - wide};
-  const MapPoint high{std::max(a.x, b.x) + wide, std::max(a.y, b.y) + wide};
-  const auto& arc = path_->arc_lengths();
-  constexpr std::size_t run = PolylineBoxes::kRun;
-  for (std::size_t box = segment_ / run; box < boxes_.size() && arc[box * run] <= until; ++box) {
-    const MapPoint box_low = boxes_.low(box), box_high = boxes_.high(box);
-    if (box_low.x <= high.x && low.x <= box_high.x && box_low.y <= high.y && low.y <= box_high.y)
-      return false;
-  }
-  return true;
+  return surely_clear_of(*path_, boxes_, a, b, segment_, until, reach);
 }
 
 // Whether actor k may cross this follower's path on its next `way` metres: off the lanes, in a

@@ -183,5 +183,83 @@ TEST(NearestOnPath, LooksOnlyFromFirstToUntil) {
   EXPECT_FALSE(std::isfinite(nearest_on_path(path, boxes, frames, {30.5, 3}, 0, 40, 2).distance));
 }
 
+double point_segment_distance(MapPoint p, MapPoint a, MapPoint b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, squared = dx * dx + dy * dy;
+  const double t =
+      squared > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / squared, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+// The distance between the lines a-b and c-d: 0 where they cross, else that of the nearest end
+// point to the other line.
+double segment_distance(MapPoint a, MapPoint b, MapPoint c, MapPoint d) {
+  auto side = [](MapPoint p, MapPoint q, MapPoint r) {
+    return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+  };
+  const double s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
+  if (((s1 < 0 && s2 > 0) || (s1 > 0 && s2 < 0)) && ((s3 < 0 && s4 > 0) || (s3 > 0 && s4 < 0)))
+    return 0;
+  return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d),
+                   point_segment_distance(c, a, b), point_segment_distance(d, a, b)});
+}
+
+// surely_clear_of rules a line out (a lane follower then searches none of its points): it must
+// never do so for a line that comes within reach of a segment of the stretch, which the searches
+// would find. Paths winding back on themselves, lines of up to 25 m (an actor's way in 1.5 s) near
+// the stretch, boxes made for the whole path or only its start.
+TEST(SurelyClearOf, NeverRulesOutALineWithinReachOfTheStretch) {
+  std::mt19937_64 random(31);
+  Polyline path = winding_path(random, 500);
+  PolylineBoxes all_boxes(path), first_boxes;
+  first_boxes.extend(path, 2 * PolylineBoxes::kRun * PolylineBoxes::kGroup);
+  SegmentFrames frames(path);
+  std::uniform_int_distribution<std::size_t> start(0, path.segment_count() - 1), later(0, 60);
+  std::uniform_real_distribution<double> offset(-12, 12), way(-25, 25), reach(0.5, 6),
+      ahead(5, 120);
+  int clear = 0, within = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const PolylineBoxes& boxes = i % 4 == 0 ? first_boxes : all_boxes;
+    const std::size_t first = std::min(start(random), boxes.segments() - 1);
+    const MapPoint& near_vertex =
+        path.points()[std::min(first + later(random), path.segment_count())];
+    const MapPoint a{near_vertex.x + offset(random), near_vertex.y + offset(random)};
+    const MapPoint b = i % 5 == 0 ? a : MapPoint{a.x + way(random), a.y + way(random)};
+    const double until = path.arc_lengths()[first] + ahead(random), r = reach(random);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t seg = first; seg < boxes.segments() && path.arc_lengths()[seg] <= until; ++seg)
+      nearest =
+          std::min(nearest, segment_distance(a, b, path.points()[seg], path.points()[seg + 1]));
+    if (!surely_clear_of(path, boxes, a, b, first, until, r)) {
+      within += nearest <= r;
+      continue;
+    }
+    ++clear;
+    ASSERT_GT(nearest, r) << "line " << i;
+    // And so the search finds nothing from any point of it.
+    for (double f : {0.0, 0.37, 1.0}) {
+      const MapPoint p{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+      EXPECT_FALSE(std::isfinite(nearest_on_path(path, boxes, frames, p, first, until, r).distance))
+          << "line " << i;
+    }
+  }
+  // Both answers often: the test means something, and the boxes rule out many lines.
+  EXPECT_GT(clear, 3000);
+  EXPECT_GT(within, 3000);
+}
+
+TEST(SurelyClearOf, ALineCrossingTheStretchBetweenItsEndsIsNotClear) {
+  std::vector<MapPoint> straight;
+  for (int i = 0; i <= 40; ++i) straight.push_back({static_cast<double>(i), 0});
+  Polyline path(straight);
+  PolylineBoxes boxes(path);
+  // From 10 m on one side to 10 m on the other: neither end is within reach, the line is.
+  EXPECT_FALSE(surely_clear_of(path, boxes, {20, -10}, {20, 10}, 0, 40, 2));
+  EXPECT_TRUE(surely_clear_of(path, boxes, {20, 5}, {30, 10}, 0, 40, 2));
+  // Beyond `until` (the boxes of segments starting after it are not looked at)...
+  EXPECT_TRUE(surely_clear_of(path, boxes, {36, -10}, {36, 10}, 0, 15, 2));
+  // ...and behind `first`.
+  EXPECT_TRUE(surely_clear_of(path, boxes, {2, -10}, {2, 10}, 24, 40, 2));
+}
+
 }  // namespace
 }  // namespace scenfuzz
