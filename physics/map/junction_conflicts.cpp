@@ -1,15 +1,19 @@
-// Junction lane conflicts found once per lane (junction_conflicts.hpp).
+// Junction lane conflicts found once per lane and map (junction_conflicts.hpp).
 #include "physics/map/junction_conflicts.hpp"
 
+#include "lang/demand.hpp"
 #include "physics/map/lane_conflicts.hpp"
 
 namespace scenfuzz {
 
-const std::vector<LaneIndex>& JunctionConflicts::of(LaneIndex lane) const {
-  if (known_.size() < map_->lanes().size()) known_.resize(map_->lanes().size());
-  std::optional<std::vector<LaneIndex>>& known = known_[lane];
-  if (!known) known = conflicting_lanes(*map_, lane);
-  return *known;
+JunctionConflicts::JunctionConflicts(std::size_t lanes)
+    : known_(std::make_unique<Known[]>(lanes)), lanes_(lanes) {}
+
+const std::vector<LaneIndex>& JunctionConflicts::of(const RoadMap& map, LaneIndex lane) const {
+  SCENFUZZ_DEMAND(lane < lanes_ && map.lanes().size() == lanes_);
+  Known& known = known_[lane];
+  std::call_once(known.once, [&] { known.lanes = conflicting_lanes(map, lane); });
+  return known.lanes;
 }
 
 }  // namespace scenfuzz

@@ -1,10 +1,13 @@
 // The crossing and merging lanes of each junction lane (conflicting_lanes, lane_conflicts.hpp),
-// found once per lane when first asked for and then shared: they are a property of the map, and
-// every lane follower giving way at the same junction asks for the same lanes. Owned by one
-// simulation (its LaneOccupancy) and used from its thread only, so the lazy filling needs no lock.
+// found once per lane when first asked for and then kept by the map (RoadMap::junction_conflicts):
+// they are a property of the map, every lane follower giving way at the same junction asks for
+// the same lanes, and so do the runs of a search after the first. A search simulates on one map
+// from several threads, so each lane's answer is made under its own std::call_once.
 #pragma once
 
-#include <optional>
+#include <cstddef>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "physics/map/road_map.hpp"
@@ -13,15 +16,19 @@ namespace scenfuzz {
 
 class JunctionConflicts {
  public:
-  explicit JunctionConflicts(const RoadMap& map) : map_(&map) {}
+  // For a map of `lanes` lanes.
+  explicit JunctionConflicts(std::size_t lanes);
 
   // conflicting_lanes(map, lane), computed at the first call for `lane`.
-  const std::vector<LaneIndex>& of(LaneIndex lane) const;
+  const std::vector<LaneIndex>& of(const RoadMap& map, LaneIndex lane) const;
 
  private:
-  const RoadMap* map_;
-  // By lane index, filled as asked for (a cache of a const query).
-  mutable std::vector<std::optional<std::vector<LaneIndex>>> known_;
+  struct Known {
+    std::once_flag once;
+    std::vector<LaneIndex> lanes;
+  };
+  std::unique_ptr<Known[]> known_;  // by lane (a once_flag does not move: no vector)
+  std::size_t lanes_ = 0;
 };
 
 }  // namespace scenfuzz

@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
+#include "physics/map/junction_conflicts.hpp"
 #include "physics/map/lane_segment_index.hpp"
 
 namespace scenfuzz {
@@ -37,6 +39,12 @@ std::size_t RoadMap::stop_sign_count() const {
 std::size_t RoadMap::yield_sign_count() const { return signs_.size() - stop_sign_count(); }
 
 namespace {
+
+double narrowest_width(const std::vector<WidthSample>& samples) {
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (const WidthSample& sample : samples) narrowest = std::min(narrowest, sample.width);
+  return narrowest;
+}
 
 // Widths from samples as given: sorted by s, finite, non-negative.
 std::vector<WidthSample> clean_width_samples(std::vector<WidthSample> samples) {
@@ -204,7 +212,7 @@ RoadMap build_road_map(MapDescription description) {
   std::unordered_map<std::string, std::uint32_t> junction_by_id;
   for (JunctionDescription& given : description.junctions) {
     junction_by_id.emplace(given.id, static_cast<std::uint32_t>(map.junctions_.size()));
-    map.junctions_.push_back({std::move(given.id), std::move(given.outline)});
+    map.junctions_.push_back({std::move(given.id), std::move(given.outline), {}});
   }
 
   for (std::size_t i = 0; i < description.lanes.size(); ++i) {
@@ -293,8 +301,24 @@ RoadMap build_road_map(MapDescription description) {
     for (MapPoint point : crosswalk.outline) map.bounds_.include(point);
 
   map.segment_index_ = std::make_unique<LaneSegmentIndex>(map.lanes_);
+  // Tables derived from the lanes, for every simulation on the map.
+  for (Lane& lane : map.lanes_) {
+    lane.narrowest_left_width = narrowest_width(lane.left_width);
+    lane.narrowest_right_width = narrowest_width(lane.right_width);
+    for (const auto* side : {&lane.left_width, &lane.right_width})
+      for (const WidthSample& sample : *side)
+        map.widest_half_lane_ = std::max(map.widest_half_lane_, sample.width);
+  }
+  for (LaneIndex lane = 0; lane < map.lanes_.size(); ++lane)
+    if (auto junction = map.lanes_[lane].junction; junction && *junction < map.junctions_.size())
+      map.junctions_[*junction].lanes.push_back(lane);
+  map.conflicts_ = std::make_unique<JunctionConflicts>(map.lanes_.size());
   map.warnings_ = builder.take_warnings();
   return map;
+}
+
+const std::vector<LaneIndex>& RoadMap::junction_conflicts(LaneIndex lane) const {
+  return conflicts_->of(*this, lane);
 }
 
 }  // namespace scenfuzz

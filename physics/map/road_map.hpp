@@ -65,6 +65,9 @@ struct Lane {
   std::vector<LaneIndex> right_reverse_neighbours;
   std::optional<std::uint32_t> junction;
   std::vector<LaneFeature> features;
+  // The narrowest of left_width and of right_width (build_road_map finds them).
+  double narrowest_left_width = 0;
+  double narrowest_right_width = 0;
 
   double length() const { return centre_line.length(); }
 };
@@ -72,6 +75,7 @@ struct Lane {
 struct Junction {
   std::string id;
   std::vector<MapPoint> outline;
+  std::vector<LaneIndex> lanes;  // its lanes, ascending (build_road_map finds them)
 };
 
 struct TrafficLight {
@@ -104,6 +108,7 @@ struct MapBounds {
   bool empty() const { return min.x > max.x; }
 };
 
+class JunctionConflicts;
 class LaneSegmentIndex;
 
 class RoadMap {
@@ -131,6 +136,14 @@ class RoadMap {
 
   const LaneSegmentIndex& segment_index() const { return *segment_index_; }
 
+  // The widest half of any lane (left or right of its centre line): no point of a lane is
+  // farther from its centre line.
+  double widest_half_lane() const { return widest_half_lane_; }
+  // The lanes crossing or merging with junction lane `lane` (conflicting_lanes,
+  // lane_conflicts.hpp), found at the first call for it and kept for every simulation on the map;
+  // safe to call from several threads at once.
+  const std::vector<LaneIndex>& junction_conflicts(LaneIndex lane) const;
+
  private:
   friend RoadMap build_road_map(MapDescription description);
   RoadMap();
@@ -147,6 +160,8 @@ class RoadMap {
   std::vector<std::string> warnings_;
   std::unordered_map<std::string, LaneIndex> lane_by_id_;
   std::unique_ptr<LaneSegmentIndex> segment_index_;
+  double widest_half_lane_ = 0;
+  std::unique_ptr<JunctionConflicts> conflicts_;
 };
 
 // Checks and indexes a description. Throws MapError (naming description.source) for what cannot

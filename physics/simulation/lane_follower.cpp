@@ -349,12 +349,12 @@ std::optional<LaneFollower::Stop> LaneFollower::lane_lead(const WorldSnapshot& w
 bool LaneFollower::on_lanes_ahead(const WorldSnapshot& world, std::vector<std::uint32_t>& actors) {
   if (world.occupancy == nullptr || route_starts_.empty()) return false;
   const double lookahead = this->lookahead();
-  watch_lanes(*world.occupancy, s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
+  watch_lanes(s_ - kWatchedBehind, s_ + lookahead + kWatchedBeyond);
   world.occupancy->gather(watched_, actors);
   return true;
 }
 
-void LaneFollower::watch_lanes(const LaneOccupancy& occupancy, double from, double to) {
+void LaneFollower::watch_lanes(double from, double to) {
   // The route segments ending after `from` and beginning before `to` (at least one).
   const auto begins = route_starts_.begin(), ends = route_starts_.end();
   const auto first_after = std::upper_bound(begins, ends, from);
@@ -369,10 +369,10 @@ void LaneFollower::watch_lanes(const LaneOccupancy& occupancy, double from, doub
   for (std::size_t k = first; k <= last && k < route_->segments.size(); ++k) {
     const LaneIndex lane = route_->segments[k].lane;
     watched_.push_back(lane);
-    // Every lane of its junction: more than those crossing or merging with it (conflicts_of),
+    // Every lane of its junction: more than those crossing or merging with it (junction_conflicts),
     // whose centre lines cost far more to test than the few actors more to look at.
     if (auto junction = map_->lane(lane).junction) {
-      const std::vector<LaneIndex>& lanes = occupancy.junction_lanes(*junction);
+      const std::vector<LaneIndex>& lanes = map_->junctions()[*junction].lanes;
       watched_.insert(watched_.end(), lanes.begin(), lanes.end());
     }
   }
@@ -674,23 +674,13 @@ std::optional<LaneIndex> LaneFollower::junction_lane_after(const FeatureAhead& f
   return std::nullopt;
 }
 
-const std::vector<LaneIndex>& LaneFollower::conflicts_of(const WorldSnapshot& world,
-                                                         LaneIndex junction_lane) {
-  if (world.occupancy != nullptr) return world.occupancy->conflicts_of(junction_lane);
-  for (const auto& [lane, conflicts] : conflicts_)
-    if (lane == junction_lane) return conflicts;
-  std::vector<LaneIndex> conflicts = conflicting_lanes(*map_, junction_lane);
-  conflicts_.emplace_back(junction_lane, std::move(conflicts));
-  return conflicts_.back().second;
-}
-
 // Whether a vehicle is on a lane that crosses or merges with the junction lane behind the stop
 // line, or will be there within the give-way time.
 bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t self,
                                     const Feature& feature) {
   auto junction_lane = junction_lane_after(feature.feature);
   if (!junction_lane) return false;
-  const std::vector<LaneIndex>& conflicts = conflicts_of(world, *junction_lane);
+  const std::vector<LaneIndex>& conflicts = map_->junction_conflicts(*junction_lane);
   for (std::uint32_t k = 0; k < world.states.size(); ++k) {
     if (k == self || world.lanes[k].lane < 0 || !present_in(world, k)) continue;
     if (world.kinds[k] == TraceActorKind::pedestrian || world.kinds[k] == TraceActorKind::obstacle)
@@ -806,7 +796,7 @@ bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32
                         !std::isnan(world.junction_arrivals[self]);
   for (std::size_t segment = stretch.first; segment <= stretch.last; ++segment) {
     const LaneIndex mine = route_->segments[segment].lane;
-    const std::vector<LaneIndex>& conflicts = conflicts_of(world, mine);
+    const std::vector<LaneIndex>& conflicts = map_->junction_conflicts(mine);
     const bool first_come = arrivals && !controlled_entry(*map_, mine);
     for (std::uint32_t k = 0; k < world.states.size(); ++k) {
       if (k == self || world.lanes[k].lane < 0 || !present_in(world, k)) continue;

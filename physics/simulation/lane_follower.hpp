@@ -129,7 +129,7 @@ class LaneFollower {
   // The lanes of the route from route distance `from` to `to` and every lane of the junctions
   // it runs through there, into watched_ (kept while the stretch covers the same route
   // segments).
-  void watch_lanes(const LaneOccupancy& occupancy, double from, double to);
+  void watch_lanes(double from, double to);
   bool behind_in_lane(const WorldSnapshot& world, std::uint32_t k) const;
   std::optional<Stop> in_path(const WorldSnapshot& world, std::uint32_t k);
   // Where in_path looks for an actor: where it is, where it will be, or on its way there.
@@ -150,8 +150,6 @@ class LaneFollower {
   void find_stop_lines(const WorldSnapshot& world, std::uint32_t self, double dt,
                        std::vector<Stop>& stops);
   bool crossing_traffic(const WorldSnapshot& world, std::uint32_t self, const Feature& feature);
-  // The simulation's shared answer (LaneOccupancy) when it has one, else this follower's own.
-  const std::vector<LaneIndex>& conflicts_of(const WorldSnapshot& world, LaneIndex junction_lane);
   bool pedestrians_at(const WorldSnapshot& world, const Crosswalk& crosswalk) const;
   // The junction priority rule (docs/simulation.md, "Junctions"): a stop at the entry of the
   // junction ahead while it may not enter it.
@@ -232,8 +230,6 @@ class LaneFollower {
   // its exit (the front never moves back, so until then it is still the first ahead).
   std::optional<JunctionStretch> stretch_;
   bool stretch_known_ = false;
-  // Junction lanes of its route and the lanes that cross or merge with each, found when needed.
-  std::vector<std::pair<LaneIndex, std::vector<LaneIndex>>> conflicts_;
 };
 
 }  // namespace scenfuzz

@@ -20,25 +20,12 @@ constexpr double kAlongMargin = 2;
 // of driving cross, and a bound for rings (a closed lane is its own successor).
 constexpr int kMaxDepth = 6;
 
-double narrowest_width(const std::vector<WidthSample>& samples) {
-  double narrowest = std::numeric_limits<double>::infinity();
-  for (const WidthSample& sample : samples) narrowest = std::min(narrowest, sample.width);
-  return narrowest;
-}
-
 }  // namespace
 
-LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map), conflicts_(map) {
-  narrowest_.reserve(map.lanes().size());
-  for (const Lane& lane : map.lanes())
-    narrowest_.emplace_back(narrowest_width(lane.left_width), narrowest_width(lane.right_width));
+LaneOccupancy::LaneOccupancy(const RoadMap& map) : map_(&map) {
   filing_.first.assign(map.lanes().size(), 0);
   filing_.mask_slot.assign(map.lanes().size(), 0);
   walkers_.answers.assign(map.crosswalks().size(), 0);
-  junction_lanes_.resize(map.junctions().size());
-  for (LaneIndex lane = 0; lane < map.lanes().size(); ++lane)
-    if (auto junction = map.lane(lane).junction; junction && *junction < junction_lanes_.size())
-      junction_lanes_[*junction].push_back(lane);
 }
 
 void LaneOccupancy::set_step(const OccupancyInputs& inputs) {
@@ -179,7 +166,7 @@ bool LaneOccupancy::file_on_lanes(std::uint32_t k) const {
   const bool moving = state.speed > kPredictedMinSpeed;
   const double travel = moving ? longitudinal_velocity(state) * inputs.prediction_time : 0;
   const double drift = sin_relative * travel;  // sideways to the lane, by the prediction time
-  const auto [left, right] = narrowest_[lane_index];
+  const double left = lane.narrowest_left_width, right = lane.narrowest_right_width;
   for (const double offset : {lateral, lateral + drift})
     if (!(offset + across <= left && offset - across >= -right)) return false;
   filing_.filed.emplace_back(lane_index, k);

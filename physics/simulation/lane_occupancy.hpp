@@ -20,7 +20,6 @@
 #include <vector>
 
 #include "physics/actors/kinematics.hpp"
-#include "physics/map/junction_conflicts.hpp"
 #include "physics/map/map_point.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/lane_tracker.hpp"
@@ -57,15 +56,6 @@ class LaneOccupancy {
   // of `lanes` (repeats allowed). The same as appending each lane's actors and the loose ones,
   // sorted and without repeats, from bit masks of the actors instead of a sort.
   void gather(std::span<const LaneIndex> lanes, std::vector<std::uint32_t>& actors) const;
-
-  // Every lane of junction `junction` (ascending): those that cross or merge with one of them
-  // (lane_conflicts.hpp) among them, found without testing each pair's centre lines.
-  const std::vector<LaneIndex>& junction_lanes(std::uint32_t junction) const {
-    return junction_lanes_[junction];
-  }
-  // The lanes crossing or merging with junction lane `lane` (conflicting_lanes), found once for
-  // every follower of the simulation.
-  const std::vector<LaneIndex>& conflicts_of(LaneIndex lane) const { return conflicts_.of(lane); }
 
   // Whether a present pedestrian at least `walking_speed` fast is within `clearance` of the
   // outline of crosswalk `crosswalk` (RoadMap::crosswalks()): the lane followers' crosswalk
@@ -110,10 +100,6 @@ class LaneOccupancy {
   void file_behind(LaneIndex lane, double reach, std::uint32_t k, int depth) const;
 
   const RoadMap* map_;
-  // Of each lane: its narrowest width left and right of the centre line.
-  std::vector<std::pair<double, double>> narrowest_;
-  std::vector<std::vector<LaneIndex>> junction_lanes_;  // by junction
-  JunctionConflicts conflicts_;
   OccupancyInputs inputs_;
   mutable Filing filing_;
   mutable Walkers walkers_;

@@ -18,14 +18,6 @@ constexpr double kOffLaneRecheck = 0.25;
 
 }  // namespace
 
-double widest_half_lane(const RoadMap& map) {
-  double widest = 0;
-  for (const Lane& lane : map.lanes())
-    for (const auto* side : {&lane.left_width, &lane.right_width})
-      for (const WidthSample& sample : *side) widest = std::max(widest, sample.width);
-  return widest;
-}
-
 namespace {
 
 // What looking for a point on one lane found.

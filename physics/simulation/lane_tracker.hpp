@@ -16,12 +16,9 @@ struct LaneFix {
   double s = 0;
 };
 
-// The widest any lane of the map reaches on either side of its centre line.
-double widest_half_lane(const RoadMap& map);
-
 class LaneTracker {
  public:
-  // `widest_half_lane` of the map the actor is on.
+  // RoadMap::widest_half_lane() of the map the actor is on.
   explicit LaneTracker(double widest_half_lane) : widest_half_lane_(widest_half_lane) {}
 
   LaneFix update(const RoadMap& map, MapPoint point, double heading);

@@ -20,7 +20,6 @@ NpcSignals::NpcSignals(const RoadMap& map, const SimulationSetup& setup,
       actor_stretches_(setup.actors.size()),
       actor_cursors_(setup.actors.size()),
       vehicle_cursors_(flow_vehicles.size()) {
-  std::optional<double> widest;  // the map's widest half lane, once a waypoint path needs it
   for (std::size_t i = 0; i < setup.actors.size(); ++i) {
     const ScriptedActor& actor = setup.actors[i];
     Slot& slot = slots_[i];
@@ -32,8 +31,7 @@ NpcSignals::NpcSignals(const RoadMap& map, const SimulationSetup& setup,
           route_indications(map, route.segments, lane_change_stretches(map, route));
     } else if (!actor.manoeuvres) {
       // Its path through its waypoints (or standing: none), read off the map.
-      if (!widest) widest = widest_half_lane(map);
-      actor_stretches_[i] = path_indications(map, actor.trajectory.path(), *widest);
+      actor_stretches_[i] = path_indications(map, actor.trajectory.path(), map.widest_half_lane());
     }
     slot.indicates = actor.manoeuvres || !actor_stretches_[i].empty();
     if (slot.indicates) indicating_.push_back(i);

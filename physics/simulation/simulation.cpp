@@ -281,7 +281,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   VehicleSignals ego_signals_now =
       (options.ego_plugin.empty() ? weather_lights : VehicleSignals{0}) |
       brake_lights(setup.ego_initial.acceleration, setup.ego_initial.speed, true);
-  std::vector<LaneTracker> lanes(actor_count, LaneTracker(widest_half_lane(map)));
+  std::vector<LaneTracker> lanes(actor_count, LaneTracker(map.widest_half_lane()));
   std::vector<LaneFix> fixes(actor_count);
   std::vector<ObservedManoeuvre> manoeuvres(actor_count, ObservedManoeuvre::going_ahead);
   std::vector<double> lengths(actor_count), widths(actor_count);

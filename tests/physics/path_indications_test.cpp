@@ -26,7 +26,7 @@ RoadMap builtin(const std::string& name, const std::vector<MapParameterValue>& p
 Polyline line(const std::vector<MapPoint>& points) { return Polyline(points); }
 
 std::vector<IndicationStretch> indications(const RoadMap& map, const Polyline& path) {
-  return path_indications(map, path, widest_half_lane(map));
+  return path_indications(map, path, map.widest_half_lane());
 }
 
 LanePosition at(const RoadMap& map, const std::string& lane, double s) {

@@ -25,8 +25,8 @@ LaneIndex lane(const RoadMap& map, const char* id) {
 
 TEST(LaneTracker, AgreesWithTheMapAlongADriveAcrossLanesAndOffTheRoad) {
   const RoadMap map = load_map("straight", kNoSearchPath);
-  LaneTracker tracker(widest_half_lane(map));
-  EXPECT_DOUBLE_EQ(widest_half_lane(map), 1.75);
+  LaneTracker tracker(map.widest_half_lane());
+  EXPECT_DOUBLE_EQ(map.widest_half_lane(), 1.75);
   // Along east_0, across into east_1, then out onto the northern pavement and back.
   for (int i = 0; i <= 400; ++i) {
     double x = 10 + i;
@@ -53,7 +53,7 @@ TEST(LaneTracker, FollowsALeftTurnThroughTheJunctionLaneByLane) {
   ASSERT_TRUE(route);
   ASSERT_EQ(route->segments.size(), 3u);
   const Polyline path = route_path(map, *route);
-  LaneTracker tracker(widest_half_lane(map));
+  LaneTracker tracker(map.widest_half_lane());
   std::size_t on_segment = 0;
   for (double s = 0; s <= path.length(); s += 0.5) {
     LaneFix fix = tracker.update(map, path.point_at(s), path.heading_at(s));
