@@ -49,9 +49,9 @@ struct LaneCrossing {
 struct Lane {
   std::string id;
   Polyline centre_line;
-  std::vector<WidthSample> left_width;  // never empty
-  std::vector<WidthSample> right_width;
-  std::vector<MapPoint> left_boundary;  // as given, or offset from the centre line
+  std::vector<WidthSample> left_width;   // never empty
+  std::vector<WidthSample> right_width;  // never empty
+  std::vector<MapPoint> left_boundary;   // as given, or offset from the centre line
   std::vector<MapPoint> right_boundary;
   BoundaryType left_boundary_type = BoundaryType::unknown;
   BoundaryType right_boundary_type = BoundaryType::unknown;

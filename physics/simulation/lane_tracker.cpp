@@ -103,19 +103,6 @@ LaneLook look_on(const RoadMap& map, LaneIndex lane, std::size_t segment, MapPoi
 
 }  // namespace
 
-namespace {
-
-// The least width of the samples (width_at interpolates between them); minus infinity, so that no
-// point is taken as within it, for a side without samples.
-double narrowest_width(const std::vector<WidthSample>& samples) {
-  if (samples.empty()) return -std::numeric_limits<double>::infinity();
-  double narrowest = std::numeric_limits<double>::infinity();
-  for (const WidthSample& sample : samples) narrowest = std::min(narrowest, sample.width);
-  return narrowest;
-}
-
-}  // namespace
-
 LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) {
   if (lane_ >= 0) {
     const auto lane = static_cast<LaneIndex>(lane_);
@@ -123,12 +110,9 @@ LaneFix LaneTracker::update(const RoadMap& map, MapPoint point, double heading) 
       segment_ = map.lane(lane).centre_line.segment_at(assumed_s_);
       segment_known_ = true;
     }
-    if (narrowest_lane_ != lane_) {
-      narrowest_lane_ = lane_;
-      narrowest_ = {narrowest_width(map.lane(lane).left_width),
-                    narrowest_width(map.lane(lane).right_width)};
-    }
-    LaneLook here = look_on(map, lane, segment_, point, &narrowest_);
+    const std::pair<double, double> narrowest{map.lane(lane).narrowest_left_width,
+                                              map.lane(lane).narrowest_right_width};
+    LaneLook here = look_on(map, lane, segment_, point, &narrowest);
     if (here.fix) {
       segment_ = here.segment;
       return *here.fix;

@@ -37,9 +37,6 @@ class LaneTracker {
   std::size_t segment_ = 0;
   bool segment_known_ = true;  // else segment_ is the one at assumed_s_ on lane_
   double assumed_s_ = 0;
-  // The narrowest width of lane narrowest_lane_ on its left and right (or -1: none yet).
-  std::int32_t narrowest_lane_ = -1;
-  std::pair<double, double> narrowest_{0, 0};
   bool off_lanes_ = false;
   MapPoint off_lanes_at_;       // where the map last said: on no lane
   double off_lanes_reach_ = 0;  // how far from there no lane can begin
