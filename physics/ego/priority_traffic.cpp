@@ -14,6 +14,9 @@ namespace scenfuzz {
 namespace {
 
 constexpr int kLanesAhead = 4;  // successors followed from the vehicle's own lane
+// m between the end of a merging lane and the lane it runs into: built-in and Apollo maps join
+// them exactly; more means the lanes share a successor without meeting.
+constexpr double kMergeTolerance = 1.0;
 
 // Arc length along `line` of its first proper crossing with `other`.
 std::optional<double> first_crossing(const Polyline& line, const Polyline& other) {
@@ -103,21 +106,33 @@ std::vector<ConflictPoint> conflict_points(const RoadMap& map, std::span<const L
   for (LaneIndex other : conflicts) {
     const Polyline& line = map.lane(other).centre_line;
     for (LaneIndex mine : own) {
+      // The ego's path along the lane itself (a roundabout's ring, from its entry to its exit)
+      // meets it nowhere: what is on it ahead of the ego is followed, not given way to.
+      if (mine == other) continue;
       const Polyline& path = map.lane(mine).centre_line;
-      const std::optional<double> crossing = first_crossing(line, path);
-      points.push_back({other, crossing ? *crossing : line.project(path.points().back()).s});
+      if (const std::optional<double> crossing = first_crossing(line, path)) {
+        points.push_back({other, *crossing});
+        continue;
+      }
+      // Merging only where `mine` ends on the other lane: two roundabout entries that run into
+      // the ring at opposite sides share a successor but never meet, nor does an exit leaving
+      // the ring.
+      const PolylineProjection merge = line.project(path.points().back());
+      if (merge.distance <= kMergeTolerance) points.push_back({other, merge.s});
     }
   }
   return points;
 }
 
 bool short_of_conflict(const RoadMap& map, std::span<const ConflictPoint> points, LaneIndex lane,
-                       double s, double length) {
+                       double s, double length, double reach) {
   bool any = false;
+  const bool ring = runs_into_itself(map.lane(lane), lane);
   for (const ConflictPoint& point : points) {
     if (point.lane != lane) continue;
     any = true;
-    if (ahead_on_lane(map, lane, s, point.s, length) >= -length) return true;
+    const double ahead = ahead_on_lane(map, lane, s, point.s, length);
+    if (ahead >= -length && (!ring || ahead <= reach)) return true;
   }
   return !any;
 }

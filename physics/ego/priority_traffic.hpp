@@ -29,7 +29,8 @@ struct ConflictPoint {
 
 // Where lanes `own` (the ego's junction lanes) meet each of `conflicts` (conflicting_lanes):
 // where a centre line crosses one of them, or, merging, where one of them ends on it (a roundabout
-// entry joins its ring part way round).
+// entry joins its ring part way round). A lane of `own` does not meet itself: the ring the ego
+// drives round has only the point where its entry joins it.
 std::vector<ConflictPoint> conflict_points(const RoadMap& map, std::span<const LaneIndex> own,
                                            std::span<const LaneIndex> conflicts);
 
@@ -41,8 +42,10 @@ std::vector<ConflictPoint> conflict_points(const RoadMap& map, std::span<const L
 // past the point has gone; a standing one is first come, first go.
 // Whether a vehicle of `length` at `s` on `lane` is short of, or still on, one of the conflict
 // points on that lane (a lane without one counts as short of it): not yet past the ego's path.
+// On a lane that runs round into itself (a roundabout's ring) every point lies ahead the way
+// round, so only one within `reach` metres ahead counts.
 bool short_of_conflict(const RoadMap& map, std::span<const ConflictPoint> points, LaneIndex lane,
-                       double s, double length);
+                       double s, double length, double reach);
 
 bool priority_traffic(const RoadMap& map, std::span<const ConflictPoint> points,
                       std::span<const WorldObject> objects, MapPoint ego,

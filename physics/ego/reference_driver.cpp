@@ -554,10 +554,12 @@ bool ReferenceDriver::crossing_inside(const DriverInput& input, const JunctionSt
     auto on = covers(junction_lanes_, at) && std::isfinite(object.heading)
                   ? lane_containing(map_, junction_lanes_, at, object.heading)
                   : project_to_lane(map_, at, object.heading);
-    // On a lane across the ego's and not yet past where they meet (a roundabout's ring is one
-    // lane: a car that has gone by the ego's entry no longer holds it).
+    // On a lane across the ego's and not yet past where they meet. A roundabout's ring is one
+    // lane: a car that has gone by the ego's entry no longer holds it, nor does one still farther
+    // round than it drives within the entry's critical gap.
+    const double reach = object.length + std::abs(object.speed) * settings_.yield_critical_gap;
     if (on && on->inside && std::binary_search(conflicts_.begin(), conflicts_.end(), on->lane) &&
-        short_of_conflict(map_, conflict_points_, on->lane, on->s, object.length))
+        short_of_conflict(map_, conflict_points_, on->lane, on->s, object.length, reach))
       return true;
   }
   return false;

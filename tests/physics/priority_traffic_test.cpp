@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "physics/map/builtin_maps.hpp"
@@ -112,6 +114,71 @@ TEST(PriorityTrafficRingTest, ACarOnTheRingIsGivenWayOnlyComingRoundToTheEntry) 
   EXPECT_TRUE(priority_traffic(map, points, car_at(join - 20), ego));   // 3.3 s away
   EXPECT_FALSE(priority_traffic(map, points, car_at(join + 20), ego));  // gone by
   EXPECT_FALSE(priority_traffic(map, points, car_at(join - 50), ego));  // 8.3 s away
+}
+
+// The ego's whole way through the roundabout (entry, the ring twice as the route crosses its
+// start, exit): the ring meets it only where the entry joins it. Paired with itself or with the
+// exit that leaves it, the ring gave points on the ego's own way round, and the ego waited at its
+// entry for a car driving away ahead of it (corpus finding roundabout_entry 001: 17 s at the line
+// for a car 60 m round the ring); the other entries share the ring as successor but never meet it.
+TEST(PriorityTrafficRingTest, TheEgosWayRoundMeetsTheRingOnlyWhereItsEntryJoins) {
+  const RoadMap map = build_road_map(generate_builtin_map("roundabout", {}));
+  const LaneIndex ring = *map.find_lane("ring_0");
+  const std::vector<LaneIndex> own{*map.find_lane("south_entry"), ring, ring,
+                                   *map.find_lane("north_exit")};
+  std::vector<LaneIndex> conflicts;
+  for (LaneIndex lane : own) {
+    std::vector<LaneIndex> more = conflicting_lanes(map, lane);
+    conflicts.insert(conflicts.end(), more.begin(), more.end());
+  }
+  std::sort(conflicts.begin(), conflicts.end());
+  conflicts.erase(std::unique(conflicts.begin(), conflicts.end()), conflicts.end());
+  ASSERT_TRUE(std::binary_search(conflicts.begin(), conflicts.end(), ring));
+  const std::vector<ConflictPoint> points = conflict_points(map, own, conflicts);
+  const Polyline& line = map.lane(ring).centre_line;
+  const double join = line.project(map.lane(own[0]).centre_line.points().back()).s;
+  std::vector<double> on_ring;
+  for (const ConflictPoint& point : points) {
+    if (point.lane == ring) on_ring.push_back(point.s);
+    const std::string& id = map.lane(point.lane).id;
+    EXPECT_TRUE(id.find("_entry") == std::string::npos || id == "south_entry")
+        << "a point on " << id << " at " << point.s;
+  }
+  ASSERT_EQ(on_ring.size(), 1u);
+  EXPECT_NEAR(on_ring[0], join, 1e-6);
+
+  const double length = line.length();
+  auto car_at = [&](double s, double speed) {
+    s = std::fmod(s + length, length);
+    WorldObject car;
+    car.id = 1;
+    car.kind = TraceActorKind::vehicle;
+    const MapPoint p = line.point_at(s);
+    car.x = p.x;
+    car.y = p.y;
+    car.heading = line.heading_at(s);
+    car.speed = speed;
+    car.length = 4.6;
+    car.width = 1.9;
+    return car;
+  };
+  const MapPoint ego = map.lane(own[0]).centre_line.points().front();
+  auto holds = [&](double s) {
+    return priority_traffic(map, points, std::vector<WorldObject>{car_at(s, 5)}, ego);
+  };
+  EXPECT_TRUE(holds(join - 20));   // 4 s from the join
+  EXPECT_FALSE(holds(join + 30));  // ahead of the ego on its way round: a lead
+  EXPECT_FALSE(holds(join - 60));  // 12 s away
+
+  // Inside the junction (crossing_inside): a car on the ring holds the ego only within the reach
+  // it is given, coming round to the join, or on it.
+  const double reach = 4.6 + 5 * 5.0;
+  EXPECT_TRUE(
+      short_of_conflict(map, points, ring, std::fmod(join - 10 + length, length), 4.6, reach));
+  EXPECT_TRUE(short_of_conflict(map, points, ring, join + 2, 4.6, reach));
+  EXPECT_FALSE(
+      short_of_conflict(map, points, ring, std::fmod(join - 60 + length, length), 4.6, reach));
+  EXPECT_FALSE(short_of_conflict(map, points, ring, std::fmod(join + 30, length), 4.6, reach));
 }
 
 TEST_F(PriorityTrafficTest, TrafficOnTheFarHalfDoesNotHoldARightTurn) {
