@@ -10,6 +10,7 @@
 
 #include "lang/demand.hpp"
 #include "physics/actors/path_pose.hpp"
+#include "physics/ego/priority_traffic.hpp"
 #include "physics/map/lane_conflicts.hpp"
 #include "physics/map/nearest_on_path.hpp"
 #include "physics/map/polygon.hpp"
@@ -687,12 +688,16 @@ bool LaneFollower::crossing_traffic(const WorldSnapshot& world, std::uint32_t se
       continue;
     const auto lane = static_cast<LaneIndex>(world.lanes[k].lane);
     const double speed = world.states[k].speed;
-    if (std::find(conflicts.begin(), conflicts.end(), lane) != conflicts.end()) return true;
+    if (std::find(conflicts.begin(), conflicts.end(), lane) != conflicts.end() &&
+        meets_soon(*junction_lane, lane, world.lanes[k].s, world.lengths[k], speed))
+      return true;
     if (speed < kMovingSpeed) continue;  // waiting at its own line: first come, first served
     double to_end = map_->lane(lane).length() - world.lanes[k].s;
     if (to_end / speed > settings_.give_way_time) continue;
     for (LaneIndex next : map_->lane(lane).successors)
-      if (std::find(conflicts.begin(), conflicts.end(), next) != conflicts.end()) return true;
+      if (std::find(conflicts.begin(), conflicts.end(), next) != conflicts.end() &&
+          meets(*junction_lane, next))
+        return true;
   }
   return false;
 }
@@ -803,7 +808,9 @@ bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32
       if (world.kinds[k] != TraceActorKind::vehicle && world.kinds[k] != TraceActorKind::ego)
         continue;
       const auto lane = static_cast<LaneIndex>(world.lanes[k].lane);
-      if (std::find(conflicts.begin(), conflicts.end(), lane) != conflicts.end()) return true;
+      if (std::find(conflicts.begin(), conflicts.end(), lane) != conflicts.end() &&
+          meets_soon(mine, lane, world.lanes[k].s, world.lengths[k], world.states[k].speed))
+        return true;
       if (!first_come || map_->lane(lane).junction || std::isnan(world.junction_arrivals[k]))
         continue;
       const double theirs = world.junction_arrivals[k], ours = world.junction_arrivals[self];
@@ -815,6 +822,29 @@ bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32
     }
   }
   return false;
+}
+
+const std::vector<ConflictPoint>& LaneFollower::meeting_points(LaneIndex mine) {
+  for (const auto& [lane, points] : meeting_points_)
+    if (lane == mine) return points;
+  const LaneIndex own[] = {mine};
+  meeting_points_.emplace_back(mine, conflict_points(*map_, own, map_->junction_conflicts(mine)));
+  return meeting_points_.back().second;
+}
+
+bool LaneFollower::meets(LaneIndex mine, LaneIndex other) {
+  const std::vector<ConflictPoint>& points = meeting_points(mine);
+  return std::any_of(points.begin(), points.end(),
+                     [&](const ConflictPoint& point) { return point.lane == other; });
+}
+
+bool LaneFollower::meets_soon(LaneIndex mine, LaneIndex other, double s, double length,
+                              double speed) {
+  if (!meets(mine, other)) return false;
+  const std::vector<LaneIndex>& after = map_->lane(other).successors;
+  if (std::find(after.begin(), after.end(), other) == after.end()) return true;
+  return short_of_conflict(*map_, meeting_points(mine), other, s, length,
+                           length + std::abs(speed) * settings_.give_way_time);
 }
 
 void LaneFollower::make_headings_known() {

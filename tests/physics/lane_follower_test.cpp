@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -204,6 +205,42 @@ TEST(LaneFollowerTest, KnowsItsLaneFromItsRouteThroughAJunction) {
     EXPECT_NEAR(turner.s[i], on.s, 0.02) << lane.id << " sample " << i;
   }
   EXPECT_EQ(visited, (std::vector<std::string>{"west_in_1", "west_north_1", "north_out_1"}));
+}
+
+// At a roundabout's entry a follower gives way to a car coming round the ring to where its entry
+// joins it, not to one anywhere on the ring: it waited at its yield line while a car 60 m round
+// drove away from it, until that car left the ring (corpus seed roundabout_entry, npc2).
+TEST(LaneFollowerTest, EntersARoundaboutAheadOfACarFarRoundTheRingAndGivesWayToOneComing) {
+  const RoadMap map = build_road_map(generate_builtin_map("roundabout", {}));
+  const auto ring = static_cast<std::int32_t>(*map.find_lane("ring_0"));
+  const std::string ego = "ego = AV((\"south_in_0\"->10, , 0), (\"south_in_0\"->20));\n";
+  // The west entry joins the ring at about s = 68; the circulating car starts at s = 0 (east), 68
+  // m and 13.6 s away at 5 m/s, or at s = 48, 4 s away.
+  auto entered_at = [&](double ring_start, double* closest) {
+    std::string text = scenario_text(
+        "roundabout",
+        ego + "circling = Vehicle((\"ring_0\"->" + std::to_string(ring_start) +
+            ", , 5), , (\"east_out_0\"->50));\n"
+            "entering = Vehicle((\"west_in_0\"->80, , 8), , (\"north_out_0\"->80));\n",
+        "circling, entering");
+    auto run = simulate_text(text, lasting(40));
+    EXPECT_TRUE(run.trace) << run.errors;
+    if (!run.trace) return -1.0;
+    EXPECT_EQ(npc_collisions(*run.trace), 0);
+    *closest = closest_approach(*run.trace, 1, 2);
+    const TraceActor& entering = run.trace->actors[2];
+    for (std::size_t i = 0; i < entering.lane.size(); ++i)
+      if (entering.lane[i] == ring) return run.trace->time[i];
+    return -1.0;
+  };
+  double closest = 0;
+  const double early = entered_at(0, &closest);
+  EXPECT_GE(early, 0) << "it never entered the ring";
+  EXPECT_LT(early, 8) << "it waited for a car far round the ring";
+  EXPECT_GT(closest, 5);
+  const double late = entered_at(48, &closest);
+  EXPECT_GT(late, early + 2) << "it did not give way to the car coming round";
+  EXPECT_GT(closest, 3);
 }
 
 }  // namespace
