@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "physics/map/junction_stretch.hpp"
 #include "physics/map/lane_queries.hpp"
@@ -32,6 +33,20 @@ VehicleSignals lane_change_indicator(const RoadMap& map, LaneIndex from, LaneInd
   const MapPoint middle = line.point_at(line.length() / 2);
   const PolylineProjection on = lane.centre_line.project(middle);
   return on.lateral >= 0 ? vehicle_signal::left_indicator : vehicle_signal::right_indicator;
+}
+
+// The route segment of the stretch that leaves a roundabout's ring (a lane running round into
+// itself) the route drives along; nullopt when the stretch has no ring, or ends on it.
+std::optional<std::size_t> roundabout_exit(const RoadMap& map,
+                                           std::span<const RouteSegment> segments,
+                                           const JunctionStretch& stretch) {
+  std::optional<std::size_t> ring;
+  for (std::size_t k = stretch.first; k <= stretch.last; ++k) {
+    const Lane& lane = map.lane(segments[k].lane);
+    if (contains(lane.successors, segments[k].lane)) ring = k;
+  }
+  if (!ring || *ring + 1 > stretch.last) return std::nullopt;
+  return *ring + 1;
 }
 
 }  // namespace
@@ -68,12 +83,19 @@ std::vector<IndicationStretch> route_indications(const RoadMap& map,
   for (double from = 0;;) {
     auto stretch = junction_stretch_ahead(map, segments, starts, from);
     if (!stretch) break;
+    from = stretch->exit;
+    if (auto exit = roundabout_exit(map, segments, *stretch)) {
+      // Round a roundabout: no indicator on the way in, the exit's from the usual notice before
+      // it (about the exit before), whichever exit is taken.
+      const VehicleSignals indicator = junction_lane_indicator(map, segments[*exit].lane);
+      if (indicator != 0) stretches.push_back({starts[*exit], stretch->exit, indicator, 0});
+      continue;
+    }
     VehicleSignals indicator = 0;
     for (std::size_t k = stretch->first; k <= stretch->last && indicator == 0; ++k)
       indicator = junction_lane_indicator(map, segments[k].lane);
     if (indicator != 0)
       stretches.push_back({stretch->entry, stretch->exit, indicator, kTurnNotice});
-    from = stretch->exit;
   }
   std::sort(
       stretches.begin(), stretches.end(),

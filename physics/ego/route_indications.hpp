@@ -39,7 +39,9 @@ struct IndicationNotice {
 
 // The route's lane changes (`lane_changes`, as lane_change_stretches gives them) and its turns
 // through junctions (a junction lane's turn, or where the map gives none, its heading turning by
-// more than 30 degrees), sorted by begin. A U-turn indicates left.
+// more than 30 degrees), sorted by begin. A U-turn indicates left. Through a roundabout only the
+// exit is indicated, from the notice before the lane leaving the ring: nothing on the way in,
+// whichever exit is taken, as right-hand traffic rules have it (left-hand: the exit's side too).
 std::vector<IndicationStretch> route_indications(const RoadMap& map,
                                                  std::span<const RouteSegment> segments,
                                                  std::span<const LaneChangeStretch> lane_changes);

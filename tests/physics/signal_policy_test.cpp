@@ -6,12 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 #include "map_fixtures.hpp"
 #include "physics/actors/vehicle_signal_names.hpp"
 #include "physics/ego/ego_indicators.hpp"
+#include "physics/map/builtin_maps.hpp"
 #include "physics/map/lane_queries.hpp"
+#include "physics/map/lane_route.hpp"
 #include "physics/simulation/plugin_observation.hpp"
 
 namespace scenfuzz {
@@ -192,6 +195,40 @@ TEST(RouteIndicationsTest, ALaneChangeLeftAndALeftTurnThroughAJunction) {
       {{lane_named(map, "b"), 0, 100}, {lane_named(map, "b_next"), 0, 50}}, 150, 0};
   EXPECT_TRUE(
       route_indications(map, straight.segments, lane_change_stretches(map, straight)).empty());
+}
+
+// Through a roundabout only the exit is indicated, from about the exit before: going straight on
+// (south to north) it indicated right from 110 m before the entry all the way round.
+TEST(RouteIndicationsTest, ARoundaboutIndicatesOnlyItsExit) {
+  const RoadMap map = build_road_map(generate_builtin_map("roundabout", {}));
+  for (const char* out : {"north_out_0", "west_out_0", "east_out_0"}) {
+    const auto route = find_route(map, LanePosition{lane_named(map, "south_in_0"), 10, 0},
+                                  LanePosition{lane_named(map, out), 20, 0});
+    ASSERT_TRUE(route) << out;
+    const auto stretches =
+        route_indications(map, route->segments, lane_change_stretches(map, *route));
+    ASSERT_EQ(stretches.size(), 1u) << out;
+    // The route distance where it leaves the ring: the start of the exit connector.
+    double exit_start = 0, ring_end = 0;
+    for (const RouteSegment& segment : route->segments) {
+      const std::string& id = map.lane(segment.lane).id;
+      if (id.find("_exit") != std::string::npos) break;
+      exit_start += segment.s_end - segment.s_begin;
+      if (id == "ring_0") ring_end = exit_start;
+    }
+    EXPECT_DOUBLE_EQ(stretches[0].begin, exit_start) << out;
+    EXPECT_DOUBLE_EQ(stretches[0].begin, ring_end) << out;
+    EXPECT_EQ(stretches[0].indicator, sig::right_indicator) << out;
+    EXPECT_EQ(stretches[0].least_notice, 0) << out;
+    // Off on the way in (40 m before the entry, at 10 m/s); on 25 m before the exit (the first
+    // exit's notice reaches back over the entry, as a right turn's should).
+    IndicationCursor cursor;
+    EXPECT_EQ(look_for_indication(stretches, 60, 10, cursor, IndicationNotice{}), 0) << out;
+    IndicationCursor later;
+    EXPECT_EQ(look_for_indication(stretches, exit_start - 25, 6, later, IndicationNotice{}),
+              sig::right_indicator)
+        << out;
+  }
 }
 
 TEST(SignalPolicyTest, OvertakingIndicatesOutThenBack) {
