@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "physics/ego/perception.hpp"
+#include "physics/map/lane_conflicts.hpp"
 #include "physics/map/road_map.hpp"
 
 namespace scenfuzz {
@@ -20,19 +21,6 @@ struct PriorityTrafficSettings {
   double moving_speed = 1.0;  // m/s: slower, a vehicle waits at its own line (first come, first go)
   double watch = 100;         // m from the ego within which vehicles are looked at
 };
-
-// Where the ego's path meets a conflicting lane: `s` along that lane.
-struct ConflictPoint {
-  LaneIndex lane = 0;
-  double s = 0;
-};
-
-// Where lanes `own` (the ego's junction lanes) meet each of `conflicts` (conflicting_lanes):
-// where a centre line crosses one of them, or, merging, where one of them ends on it (a roundabout
-// entry joins its ring part way round). A lane of `own` does not meet itself: the ring the ego
-// drives round has only the point where its entry joins it.
-std::vector<ConflictPoint> conflict_points(const RoadMap& map, std::span<const LaneIndex> own,
-                                           std::span<const LaneIndex> conflicts);
 
 // Whether the ego must still give way to one of `objects`: a moving vehicle on a conflicting lane
 // within a body length of a conflict point, or short of it and reaching it within the critical

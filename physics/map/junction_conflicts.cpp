@@ -16,4 +16,15 @@ const std::vector<LaneIndex>& JunctionConflicts::of(const RoadMap& map, LaneInde
   return known.lanes;
 }
 
+const std::vector<ConflictPoint>& JunctionConflicts::points_of(const RoadMap& map,
+                                                               LaneIndex lane) const {
+  const std::vector<LaneIndex>& lanes = of(map, lane);
+  Known& known = known_[lane];
+  std::call_once(known.points_once, [&] {
+    const LaneIndex own[] = {lane};
+    known.points = conflict_points(map, own, lanes);
+  });
+  return known.points;
+}
+
 }  // namespace scenfuzz

@@ -2,11 +2,36 @@
 #include "physics/map/lane_conflicts.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace scenfuzz {
 
 namespace {
+
+// m between the end of a merging lane and the lane it runs into: built-in and Apollo maps join
+// them exactly; more means the lanes share a successor without meeting.
+constexpr double kMergeTolerance = 1.0;
+
+// Arc length along `line` of its first proper crossing with `other`.
+std::optional<double> first_crossing(const Polyline& line, const Polyline& other) {
+  const auto& p = line.points();
+  const auto& q = other.points();
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+    const MapPoint a = p[i], b = p[i + 1];
+    for (std::size_t j = 0; j + 1 < q.size(); ++j) {
+      const MapPoint c = q[j], d = q[j + 1];
+      const double r_x = b.x - a.x, r_y = b.y - a.y, s_x = d.x - c.x, s_y = d.y - c.y;
+      const double denominator = r_x * s_y - r_y * s_x;
+      if (denominator == 0) continue;
+      const double t = ((c.x - a.x) * s_y - (c.y - a.y) * s_x) / denominator;
+      const double u = ((c.x - a.x) * r_y - (c.y - a.y) * r_x) / denominator;
+      if (t > 0 && t < 1 && u > 0 && u < 1)
+        return line.arc_lengths()[i] + t * (line.arc_lengths()[i + 1] - line.arc_lengths()[i]);
+    }
+  }
+  return std::nullopt;
+}
 
 double cross(MapPoint o, MapPoint a, MapPoint b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -100,6 +125,30 @@ std::vector<LaneIndex> conflicting_lanes(const RoadMap& map, LaneIndex lane) {
       conflicts.push_back(other);
   }
   return conflicts;
+}
+
+std::vector<ConflictPoint> conflict_points(const RoadMap& map, std::span<const LaneIndex> own,
+                                           std::span<const LaneIndex> conflicts) {
+  std::vector<ConflictPoint> points;
+  for (LaneIndex other : conflicts) {
+    const Polyline& line = map.lane(other).centre_line;
+    for (LaneIndex mine : own) {
+      // The ego's path along the lane itself (a roundabout's ring, from its entry to its exit)
+      // meets it nowhere: what is on it ahead of the ego is followed, not given way to.
+      if (mine == other) continue;
+      const Polyline& path = map.lane(mine).centre_line;
+      if (const std::optional<double> crossing = first_crossing(line, path)) {
+        points.push_back({other, *crossing});
+        continue;
+      }
+      // Merging only where `mine` ends on the other lane: two roundabout entries that run into
+      // the ring at opposite sides share a successor but never meet, nor does an exit leaving
+      // the ring.
+      const PolylineProjection merge = line.project(path.points().back());
+      if (merge.distance <= kMergeTolerance) points.push_back({other, merge.s});
+    }
+  }
+  return points;
 }
 
 }  // namespace scenfuzz

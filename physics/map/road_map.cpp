@@ -321,4 +321,8 @@ const std::vector<LaneIndex>& RoadMap::junction_conflicts(LaneIndex lane) const 
   return conflicts_->of(*this, lane);
 }
 
+const std::vector<ConflictPoint>& RoadMap::junction_conflict_points(LaneIndex lane) const {
+  return conflicts_->points_of(*this, lane);
+}
+
 }  // namespace scenfuzz

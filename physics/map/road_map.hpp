@@ -109,6 +109,7 @@ struct MapBounds {
 };
 
 class JunctionConflicts;
+struct ConflictPoint;
 class LaneSegmentIndex;
 
 class RoadMap {
@@ -143,6 +144,8 @@ class RoadMap {
   // lane_conflicts.hpp), found at the first call for it and kept for every simulation on the map;
   // safe to call from several threads at once.
   const std::vector<LaneIndex>& junction_conflicts(LaneIndex lane) const;
+  // Where junction lane `lane` meets them (conflict_points), kept the same way.
+  const std::vector<ConflictPoint>& junction_conflict_points(LaneIndex lane) const;
 
  private:
   friend RoadMap build_road_map(MapDescription description);

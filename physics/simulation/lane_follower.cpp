@@ -824,26 +824,18 @@ bool LaneFollower::gives_way_in_junction(const WorldSnapshot& world, std::uint32
   return false;
 }
 
-const std::vector<ConflictPoint>& LaneFollower::meeting_points(LaneIndex mine) {
-  for (const auto& [lane, points] : meeting_points_)
-    if (lane == mine) return points;
-  const LaneIndex own[] = {mine};
-  meeting_points_.emplace_back(mine, conflict_points(*map_, own, map_->junction_conflicts(mine)));
-  return meeting_points_.back().second;
-}
-
-bool LaneFollower::meets(LaneIndex mine, LaneIndex other) {
-  const std::vector<ConflictPoint>& points = meeting_points(mine);
+bool LaneFollower::meets(LaneIndex mine, LaneIndex other) const {
+  const std::vector<ConflictPoint>& points = map_->junction_conflict_points(mine);
   return std::any_of(points.begin(), points.end(),
                      [&](const ConflictPoint& point) { return point.lane == other; });
 }
 
 bool LaneFollower::meets_soon(LaneIndex mine, LaneIndex other, double s, double length,
-                              double speed) {
+                              double speed) const {
   if (!meets(mine, other)) return false;
   const std::vector<LaneIndex>& after = map_->lane(other).successors;
   if (std::find(after.begin(), after.end(), other) == after.end()) return true;
-  return short_of_conflict(*map_, meeting_points(mine), other, s, length,
+  return short_of_conflict(*map_, map_->junction_conflict_points(mine), other, s, length,
                            length + std::abs(speed) * settings_.give_way_time);
 }
 

@@ -17,7 +17,6 @@
 #include "physics/actors/actor_class.hpp"
 #include "physics/actors/path_pose.hpp"
 #include "physics/actors/trajectory.hpp"
-#include "physics/ego/priority_traffic.hpp"
 #include "physics/map/junction_stretch.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/map/polyline.hpp"
@@ -161,15 +160,13 @@ class LaneFollower {
                              const JunctionStretch& stretch);
   // The junction lane a stop line at `feature` leads into (the feature's own lane if it is one).
   std::optional<LaneIndex> junction_lane_after(const FeatureAhead& feature) const;
-  // Where junction lane `mine` meets its conflicting lanes (conflict_points), found once.
-  const std::vector<ConflictPoint>& meeting_points(LaneIndex mine);
-  // Whether conflicting lane `other` meets `mine` at all: two roundabout entries share the ring
-  // as successor but never meet.
-  bool meets(LaneIndex mine, LaneIndex other);
+  // Whether conflicting lane `other` meets `mine` at all (RoadMap::junction_conflict_points):
+  // two roundabout entries share the ring as successor but never meet.
+  bool meets(LaneIndex mine, LaneIndex other) const;
   // Whether a vehicle of `length` at `s` on conflicting lane `other`, at `speed`, has the way
   // over `mine`: on a lane that meets it, and on a roundabout's ring (a lane running round into
   // itself) only while it is within the give-way time of where `mine` joins it.
-  bool meets_soon(LaneIndex mine, LaneIndex other, double s, double length, double speed);
+  bool meets_soon(LaneIndex mine, LaneIndex other, double s, double length, double speed) const;
   void advance(double acceleration, double dt);
   // Extends boxes_, frames_ and envelope_ over what this step can read (prepare_further), when
   // they do not cover it yet.
@@ -240,7 +237,6 @@ class LaneFollower {
   // its exit (the front never moves back, so until then it is still the first ahead).
   std::optional<JunctionStretch> stretch_;
   bool stretch_known_ = false;
-  std::vector<std::pair<LaneIndex, std::vector<ConflictPoint>>> meeting_points_;  // by lane
 };
 
 }  // namespace scenfuzz

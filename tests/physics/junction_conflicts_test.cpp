@@ -33,6 +33,32 @@ TEST(JunctionConflicts, AreConflictingLanesFoundOncePerLane) {
   }
 }
 
+// Where each junction lane meets its conflicting lanes, kept by the map too: conflict_points'
+// own answer, the same vector when asked again; on the roundabout an entry meets the ring once
+// (where it joins it) and no other entry.
+TEST(JunctionConflicts, KeepWhereEachLaneMeetsThem) {
+  for (const char* name : {"crossroads", "roundabout", "t_junction"}) {
+    const RoadMap map = load_map(name, MapSearchPath{});
+    for (LaneIndex lane = 0; lane < map.lanes().size(); ++lane) {
+      const std::vector<ConflictPoint>& found = map.junction_conflict_points(lane);
+      const LaneIndex own[] = {lane};
+      const std::vector<ConflictPoint> direct =
+          conflict_points(map, own, conflicting_lanes(map, lane));
+      ASSERT_EQ(found.size(), direct.size()) << name << " lane " << lane;
+      for (std::size_t k = 0; k < found.size(); ++k) {
+        EXPECT_EQ(found[k].lane, direct[k].lane);
+        EXPECT_EQ(found[k].s, direct[k].s);
+      }
+      EXPECT_EQ(&map.junction_conflict_points(lane), &found) << "found again";
+    }
+  }
+  const RoadMap roundabout = load_map("roundabout", MapSearchPath{});
+  const std::vector<ConflictPoint>& entry =
+      roundabout.junction_conflict_points(*roundabout.find_lane("west_entry"));
+  ASSERT_EQ(entry.size(), 1u);
+  EXPECT_EQ(roundabout.lane(entry[0].lane).id, "ring_0");
+}
+
 TEST(JunctionConflicts, AreFoundOnceWhenThreadsAskAtOnce) {
   const RoadMap map = load_map("crossroads", MapSearchPath{});
   const auto lanes = static_cast<LaneIndex>(map.lanes().size());
