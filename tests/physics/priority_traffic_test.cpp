@@ -81,6 +81,23 @@ TEST_F(PriorityTrafficTest, ACarInTheJunctionIsGivenWayUntilItIsPastTheEgosPath)
   }
 }
 
+// A car on the ring `line` at `s` (taken round the ring), heading along it at `speed`.
+WorldObject car_on_ring(const Polyline& line, double s, double speed) {
+  const double length = line.length();
+  s = std::fmod(s + length, length);
+  WorldObject car;
+  car.id = 1;
+  car.kind = TraceActorKind::vehicle;
+  const MapPoint p = line.point_at(s);
+  car.x = p.x;
+  car.y = p.y;
+  car.heading = line.heading_at(s);
+  car.speed = speed;
+  car.length = 4.6;
+  car.width = 1.9;
+  return car;
+}
+
 // The roundabout's ring is one lane running round into itself: a car on it is given way only while
 // it comes round towards the ego's entry, not once it has gone by (it waited for the whole ring).
 TEST(PriorityTrafficRingTest, ACarOnTheRingIsGivenWayOnlyComingRoundToTheEntry) {
@@ -95,21 +112,7 @@ TEST(PriorityTrafficRingTest, ACarOnTheRingIsGivenWayOnlyComingRoundToTheEntry) 
     if (point.lane == ring) join = point.s;
   ASSERT_GE(join, 0);
   const Polyline& line = map.lane(ring).centre_line;
-  const double length = line.length();
-  auto car_at = [&](double s) {
-    s = std::fmod(s + length, length);
-    WorldObject car;
-    car.id = 1;
-    car.kind = TraceActorKind::vehicle;
-    const MapPoint p = line.point_at(s);
-    car.x = p.x;
-    car.y = p.y;
-    car.heading = line.heading_at(s);
-    car.speed = 6;
-    car.length = 4.6;
-    car.width = 1.9;
-    return std::vector<WorldObject>{car};
-  };
+  auto car_at = [&](double s) { return std::vector<WorldObject>{car_on_ring(line, s, 6)}; };
   const MapPoint ego = map.lane(entry).centre_line.points().front();
   EXPECT_TRUE(priority_traffic(map, points, car_at(join - 20), ego));   // 3.3 s away
   EXPECT_FALSE(priority_traffic(map, points, car_at(join + 20), ego));  // gone by
@@ -148,23 +151,9 @@ TEST(PriorityTrafficRingTest, TheEgosWayRoundMeetsTheRingOnlyWhereItsEntryJoins)
   EXPECT_NEAR(on_ring[0], join, 1e-6);
 
   const double length = line.length();
-  auto car_at = [&](double s, double speed) {
-    s = std::fmod(s + length, length);
-    WorldObject car;
-    car.id = 1;
-    car.kind = TraceActorKind::vehicle;
-    const MapPoint p = line.point_at(s);
-    car.x = p.x;
-    car.y = p.y;
-    car.heading = line.heading_at(s);
-    car.speed = speed;
-    car.length = 4.6;
-    car.width = 1.9;
-    return car;
-  };
   const MapPoint ego = map.lane(own[0]).centre_line.points().front();
   auto holds = [&](double s) {
-    return priority_traffic(map, points, std::vector<WorldObject>{car_at(s, 5)}, ego);
+    return priority_traffic(map, points, std::vector<WorldObject>{car_on_ring(line, s, 5)}, ego);
   };
   EXPECT_TRUE(holds(join - 20));   // 4 s from the join
   EXPECT_FALSE(holds(join + 30));  // ahead of the ego on its way round: a lead
