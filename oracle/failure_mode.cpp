@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "physics/actors/actor_class.hpp"
+#include "physics/map/lane_queries.hpp"
 #include "physics/map/polygon.hpp"
 
 namespace scenfuzz {
@@ -81,21 +82,12 @@ bool following(const Trace& trace, std::size_t i) {
   return followed_road_user(trace, i).has_value();
 }
 
-// A ring: a lane whose centre line closes on itself (the built-in roundabout's ring).
-bool ring_lane(const Lane& lane) {
-  const auto& points = lane.centre_line.points();
-  if (points.size() < 3 || lane.length() < 20) return false;
-  return std::hypot(points.front().x - points.back().x, points.front().y - points.back().y) < 1;
-}
-
+// On a roundabout: on its ring (a lane that is its own successor), or on a lane into or out of it.
 bool on_roundabout(const RoadMap& map, LaneIndex index) {
   const Lane& lane = map.lane(index);
-  if (ring_lane(lane)) return true;
-  for (LaneIndex next : lane.successors)
-    if (ring_lane(map.lane(next))) return true;
-  for (LaneIndex previous : lane.predecessors)
-    if (ring_lane(map.lane(previous))) return true;
-  return false;
+  auto ring = [&](LaneIndex other) { return runs_into_itself(map, other); };
+  return ring(index) || std::any_of(lane.successors.begin(), lane.successors.end(), ring) ||
+         std::any_of(lane.predecessors.begin(), lane.predecessors.end(), ring);
 }
 
 // An acceleration lane: it ends (no successor) beside a lane that goes on past its end.

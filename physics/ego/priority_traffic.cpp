@@ -30,16 +30,11 @@ bool yields(const RoadMap& map, LaneIndex lane) {
                      [&](LaneIndex before) { return before != lane && signed_lane(before); });
 }
 
-bool runs_into_itself(const Lane& lane, LaneIndex index) {
-  return std::find(lane.successors.begin(), lane.successors.end(), index) != lane.successors.end();
-}
-
 // Metres the vehicle at `s` on `lane` has to drive to `point` on the same lane (negative: past it).
 double ahead_on_lane(const RoadMap& map, LaneIndex lane, double s, double point,
                      double body_length) {
   double ahead = point - s;
-  if (ahead < -body_length && runs_into_itself(map.lane(lane), lane))
-    ahead += map.lane(lane).length();
+  if (ahead < -body_length && runs_into_itself(map, lane)) ahead += map.lane(lane).length();
   return ahead;
 }
 
@@ -80,7 +75,7 @@ double distance_to_point(const RoadMap& map, std::span<const ConflictPoint> poin
 bool short_of_conflict(const RoadMap& map, std::span<const ConflictPoint> points, LaneIndex lane,
                        double s, double length, double reach) {
   bool any = false;
-  const bool ring = runs_into_itself(map.lane(lane), lane);
+  const bool ring = runs_into_itself(map, lane);
   for (const ConflictPoint& point : points) {
     if (point.lane != lane) continue;
     any = true;

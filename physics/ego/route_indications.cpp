@@ -41,10 +41,8 @@ std::optional<std::size_t> roundabout_exit(const RoadMap& map,
                                            std::span<const RouteSegment> segments,
                                            const JunctionStretch& stretch) {
   std::optional<std::size_t> ring;
-  for (std::size_t k = stretch.first; k <= stretch.last; ++k) {
-    const Lane& lane = map.lane(segments[k].lane);
-    if (contains(lane.successors, segments[k].lane)) ring = k;
-  }
+  for (std::size_t k = stretch.first; k <= stretch.last; ++k)
+    if (runs_into_itself(map, segments[k].lane)) ring = k;
   if (!ring || *ring + 1 > stretch.last) return std::nullopt;
   return *ring + 1;
 }

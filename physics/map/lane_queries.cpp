@@ -135,4 +135,9 @@ bool lane_change_allowed(const RoadMap& map, LaneIndex from, LaneIndex to) {
   return false;
 }
 
+bool runs_into_itself(const RoadMap& map, LaneIndex lane) {
+  const std::vector<LaneIndex>& after = map.lane(lane).successors;
+  return std::find(after.begin(), after.end(), lane) != after.end();
+}
+
 }  // namespace scenfuzz

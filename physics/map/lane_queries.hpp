@@ -60,4 +60,7 @@ std::optional<LaneProjection> project_onto_lanes(const RoadMap& map, MapPoint po
 // leave it), and neither lane lies in a junction.
 bool lane_change_allowed(const RoadMap& map, LaneIndex from, LaneIndex to);
 
+// Whether `lane` is its own successor: a roundabout's ring, driven round and round.
+bool runs_into_itself(const RoadMap& map, LaneIndex lane);
+
 }  // namespace scenfuzz

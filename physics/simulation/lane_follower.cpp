@@ -12,6 +12,7 @@
 #include "physics/actors/path_pose.hpp"
 #include "physics/ego/priority_traffic.hpp"
 #include "physics/map/lane_conflicts.hpp"
+#include "physics/map/lane_queries.hpp"
 #include "physics/map/nearest_on_path.hpp"
 #include "physics/map/polygon.hpp"
 #include "physics/map/segment_walk.hpp"
@@ -833,8 +834,7 @@ bool LaneFollower::meets(LaneIndex mine, LaneIndex other) const {
 bool LaneFollower::meets_soon(LaneIndex mine, LaneIndex other, double s, double length,
                               double speed) const {
   if (!meets(mine, other)) return false;
-  const std::vector<LaneIndex>& after = map_->lane(other).successors;
-  if (std::find(after.begin(), after.end(), other) == after.end()) return true;
+  if (!runs_into_itself(*map_, other)) return true;
   return short_of_conflict(*map_, map_->junction_conflict_points(mine), other, s, length,
                            length + std::abs(speed) * settings_.give_way_time);
 }

@@ -173,6 +173,25 @@ std::optional<std::uint32_t> junction_of(const RoadMap& map, const PathSample& s
   return map.lane(*sample.lane).junction;
 }
 
+// Round a roundabout (the run [first, last] has samples on a ring, and on a lane after it): the
+// exit's indicator only, from where the exit lane begins, with no least notice, as a lane route
+// does (route_indications.cpp). The exit lane's start is its lane s back from the first sample on
+// it: the tracker keeps to the ring a few metres past the split, where the two overlap.
+std::optional<IndicationStretch> roundabout_exit(const RoadMap& map,
+                                                 const std::vector<PathSample>& samples,
+                                                 std::size_t first, std::size_t last, double exit) {
+  std::optional<std::size_t> ring;
+  for (std::size_t k = first; k <= last; ++k)
+    if (samples[k].lane && runs_into_itself(map, *samples[k].lane)) ring = k;
+  if (!ring) return std::nullopt;
+  for (std::size_t k = *ring + 1; k <= last; ++k) {
+    if (!samples[k].lane || *samples[k].lane == *samples[*ring].lane) continue;
+    const double begin = std::max(samples[first].s, samples[k].s - samples[k].lane_s);
+    return IndicationStretch{begin, exit, junction_lane_indicator(map, *samples[k].lane), 0};
+  }
+  return std::nullopt;
+}
+
 // The junction turns: runs of samples on one junction's lanes (points on no lane do not end
 // one), from halfway between the last point before and the first in, to halfway out.
 std::vector<IndicationStretch> junction_turns(const RoadMap& map,
@@ -190,6 +209,11 @@ std::vector<IndicationStretch> junction_turns(const RoadMap& map,
     const double entry = first > 0 ? (samples[first - 1].s + samples[first].s) / 2 : 0;
     const double exit =
         last + 1 < samples.size() ? (samples[last].s + samples[last + 1].s) / 2 : samples[last].s;
+    if (auto round = roundabout_exit(map, samples, first, last, exit)) {
+      if (round->indicator != 0) turns.push_back(*round);
+      first = last;
+      continue;
+    }
     const VehicleSignals indicator = junction_lane_indicator(map, most_seen(samples, first, last));
     if (indicator != 0) turns.push_back({entry, exit, indicator, kTurnNotice});
     first = last;

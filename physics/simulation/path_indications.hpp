@@ -8,7 +8,8 @@
 //     sideways towards that neighbour around the crossing, and indicates towards it;
 //   - a junction turn is a run of path points on one junction's lanes; it indicates as the lane
 //     the path lies on most of the way through turns (junction_lane_indicator), from kTurnNotice
-//     before the entry.
+//     before the entry; round a roundabout (a run through a ring lane) only the exit is
+//     indicated, from where the exit lane leaves the ring, as for a lane route.
 #pragma once
 
 #include <vector>

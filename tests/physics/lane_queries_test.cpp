@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "physics/map/builtin_maps.hpp"
 #include "tests/physics/map_fixtures.hpp"
 
 namespace scenfuzz {
@@ -87,6 +88,17 @@ TEST_F(LaneQueries, LaneChangeNeedsADottedLineAndNoJunction) {
   EXPECT_FALSE(lane_change_allowed(map, lane("a_next"), lane("b_next")));  // solid line
   EXPECT_FALSE(lane_change_allowed(map, lane("a"), lane("a_next")));       // not a neighbour
   EXPECT_FALSE(lane_change_allowed(map, lane("a_next"), lane("turn")));
+}
+
+// A roundabout's ring is its own successor; its entries, exits and a straight road's lanes are not.
+TEST(LaneQueriesRing, OnlyTheRingRunsIntoItself) {
+  const RoadMap roundabout = build_road_map(generate_builtin_map("roundabout", {}));
+  for (LaneIndex k = 0; k < roundabout.lanes().size(); ++k)
+    EXPECT_EQ(runs_into_itself(roundabout, k), roundabout.lane(k).id == "ring_0")
+        << roundabout.lane(k).id;
+  const RoadMap straight = build_road_map(test::two_lane_road());
+  for (LaneIndex k = 0; k < straight.lanes().size(); ++k)
+    EXPECT_FALSE(runs_into_itself(straight, k));
 }
 
 }  // namespace

@@ -54,6 +54,16 @@ void expect_as_the_route(const RoadMap& map, LanePosition from, LanePosition to)
   }
 }
 
+// Round a roundabout only the exit is indicated, from where the exit lane leaves the ring: npc1
+// of corpora/avunit/roundabout_entry.avu showed no indicator at all.
+TEST(PathIndicationsTest, ARoundaboutDrawnAsAPathIndicatesOnlyItsExit) {
+  const RoadMap map = builtin("roundabout", {});
+  for (const char* out : {"north_out_0", "west_out_0", "east_out_0"}) {
+    SCOPED_TRACE(out);
+    expect_as_the_route(map, at(map, "south_in_0", 10), at(map, out, 20));
+  }
+}
+
 TEST(PathIndicationsTest, ALaneChangeDrawnAsAPathIndicatesAsTheRouteDoes) {
   const RoadMap map = builtin("straight", {{"two_way", 0}});
   expect_as_the_route(map, at(map, "east_0", 40), at(map, "east_1", 200));
