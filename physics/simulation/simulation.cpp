@@ -326,7 +326,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
   }
 
   const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
-  size_sample_columns(trace, last_step + 1);
+  SampleRecorder recorder(trace, last_step + 1);
   scenfuzz_observation observation{};
   observation.environment = {setup.conditions.darkness, setup.conditions.fog, setup.conditions.rain,
                              setup.conditions.snow};
@@ -334,11 +334,16 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
 
   for (std::size_t step = 0;; ++step) {
     const double t = static_cast<double>(step) * dt;
-    for (std::size_t k = 1; k <= setup.actors.size(); ++k)
-      states[k] = drivers[k - 1]     ? drivers[k - 1]->state()
-                  : followers[k - 1] ? followers[k - 1]->state()
-                                     : scripted_state(setup.actors[k - 1].trajectory, t,
-                                                      step > 0 ? &states[k] : nullptr, dt);
+    for (std::size_t k = 1; k <= setup.actors.size(); ++k) {
+      // Assigned in place: a conditional expression copied the state through the stack.
+      if (drivers[k - 1])
+        states[k] = drivers[k - 1]->state();
+      else if (followers[k - 1])
+        states[k] = followers[k - 1]->state();
+      else
+        states[k] =
+            scripted_state(setup.actors[k - 1].trajectory, t, step > 0 ? &states[k] : nullptr, dt);
+    }
     for (std::size_t k = 0; k < first_obstacle; ++k)
       world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
     if (!traffic.empty()) traffic.update(step, t, states, lengths, widths, present, world);
@@ -361,7 +366,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     for (std::size_t k = 0; k < actor_count; ++k) {
       fixes[k] =
           lane_fix_of(k, map, states[k], present[k] != 0, followers, traffic, first_flow, lanes[k]);
-      write_sample(trace.actors[k], step, states[k], fixes[k]);
+      recorder.sample(k, states[k], fixes[k]);
     }
     // The ego's signals are what it decided at the last step, until its driver decides below.
     trace.actors[kEgo].signals.push_back(ego_signals_now);
@@ -389,8 +394,9 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     for (std::size_t k = 1, next = 0; k < actor_count; ++k) {
       while (next < seen.size() && seen[next].id < k) ++next;
       bool detected = next < seen.size() && seen[next].id == k;
-      write_perceived(trace.perceived[k - 1], step, detected ? &seen[next] : nullptr);
+      recorder.perceived(k, detected ? &seen[next] : nullptr);
     }
+    recorder.end_step();
 
     WorldSnapshot snapshot;
     if (sees_world) {
@@ -485,7 +491,7 @@ Trace simulate(const RoadMap& map, const SimulationSetup& setup, const Simulatio
     trace.actors[kEgo].signals.back() = ego_signals_now;
     states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
   }
-  trim_sample_columns(trace);
+  recorder.finish();
   colour_runs.write(trace.lights);
   traffic.finish(trace.actors, trace.sample_count());
   npc_signals.finish(trace.actors, first_flow);
