@@ -11,9 +11,12 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
+#include "lang/demand.hpp"
 #include "physics/collision/collision_world.hpp"
 #include "physics/ego/ego_indicators.hpp"
 #include "physics/ego/observation_json.hpp"
@@ -168,334 +171,453 @@ LaneFix lane_fix_of(std::size_t k, const RoadMap& map, const KinematicState& sta
   return tracker.update(map, {state.x, state.y}, state.heading);
 }
 
-}  // namespace
-
-Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options) {
-  const double dt = options.dt;
-  const double duration = options.duration.value_or(setup.duration);
-  // Before anything is allocated or started: 1e9 s would otherwise end in bad_alloc. Callers
-  // check options with the same function and report them as bad input.
-  if (auto problem = sample_count_problem(duration, dt))
-    throw std::invalid_argument("simulate: " + *problem);
-  Trace trace;
-  trace.map_name = map.name();
-  trace.seed = options.seed;
-  trace.dt = dt;
-
-  // Bodies: the ego, the scripted actors, the obstacles, the flow vehicles; collision ids equal
-  // actor ids.
-  CollisionWorld world;
-  std::vector<KinematicState> states;
-  BodyGeometry ego_geometry = body_geometry(setup.ego_body);
-  trace.actors.push_back(
-      describe(setup.ego_name, TraceActorKind::ego, setup.ego_body.category, ego_geometry));
-  world.add_body(ego_geometry,
-                 {{setup.ego_initial.x, setup.ego_initial.y}, setup.ego_initial.heading}, false);
-  states.push_back(setup.ego_initial);
-  // WMG SDL actors with manoeuvre phases react to the world, so they are driven step by step;
-  // drivers[k - 1] belongs to actor k.
+std::vector<std::optional<ManoeuvreDriver>> manoeuvre_drivers(const RoadMap& map,
+                                                              const SimulationSetup& setup) {
   std::vector<std::optional<ManoeuvreDriver>> drivers(setup.actors.size());
   for (std::size_t i = 0; i < setup.actors.size(); ++i)
     if (setup.actors[i].manoeuvres)
       drivers[i].emplace(map, *setup.actors[i].manoeuvres, setup.actors[i].body,
                          setup.actors[i].kind == TraceActorKind::pedestrian);
-  // Lane-following NPCs drive reactively unless the scenario or the options say scripted;
-  // followers[k - 1] belongs to actor k.
-  std::vector<std::optional<LaneFollower>> followers = lane_followers(map, setup, options);
-  // Only triggers (end conditions and manoeuvre phases) read what manoeuvre each actor is making.
-  const bool watches_manoeuvres =
-      !setup.end_conditions.empty() ||
-      std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d.has_value(); });
-  const bool watches_world =
-      watches_manoeuvres ||
-      std::any_of(followers.begin(), followers.end(), [](const auto& f) { return f.has_value(); });
-  for (std::size_t i = 0; i < setup.actors.size(); ++i) {
-    const ScriptedActor& actor = setup.actors[i];
-    BodyGeometry geometry = body_geometry(actor.body);
-    trace.actors.push_back(describe(actor.name, actor.kind, actor.body.category, geometry));
-    KinematicState start = drivers[i]     ? drivers[i]->state()
-                           : followers[i] ? followers[i]->state()
-                                          : actor.trajectory.state_at(0);
-    world.add_body(geometry, {{start.x, start.y}, start.heading}, false);
-    states.push_back(start);
+  return drivers;
+}
+
+template <typename T>
+bool any_present(const std::vector<std::optional<T>>& slots) {
+  return std::any_of(slots.begin(), slots.end(), [](const auto& slot) { return slot.has_value(); });
+}
+
+// One run: everything the loop keeps from step to step, and the loop's steps (simulate below
+// reads as the loop). Actor ids: the ego 0, the scripted actors, the obstacles, the flow
+// vehicles; collision ids equal actor ids. It holds references into itself (the driver to the
+// route, the recorder to the trace): neither copied nor moved.
+class Run {
+ public:
+  Run(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options);
+  Run(const Run&) = delete;
+  Run& operator=(const Run&) = delete;
+
+  // Starts the ego plugin, if any; false (the trace ended) when it failed to.
+  bool start_plugin();
+  // The steps of step `step`, at time t, in the loop's order.
+  void move_actors(std::size_t step, double t);
+  bool record_collisions(double t);  // whether the ego was hit this step
+  void record_sample(double t);
+  WorldSnapshot look(double t);
+  bool ends(std::size_t step, double t, bool ego_hit, const WorldSnapshot& snapshot);
+  void step_npcs(const WorldSnapshot& snapshot);
+  bool drive_ego(double t);  // false: the plugin failed, the trace ended
+  // The trace: finished (the recorder's last block, the lights' columns, the flows' and NPCs'
+  // signals), or as it is when the plugin failed to start.
+  Trace finish();
+  Trace unfinished() { return std::move(trace_); }
+
+ private:
+  void add_bodies();
+  void prepare_columns();
+  std::span<const std::uint8_t> present_now() const {
+    return traffic_.empty() ? std::span<const std::uint8_t>{}
+                            : std::span<const std::uint8_t>(present_);
   }
-  std::size_t first_obstacle = trace.actors.size();
-  for (const StaticObstacle& obstacle : setup.obstacles) {
-    trace.actors.push_back(
+
+  const RoadMap& map_;
+  const SimulationSetup& setup_;
+  const SimulationOptions& options_;
+  const double dt_;
+  const double duration_;
+  Trace trace_;
+  CollisionWorld world_;
+  std::vector<KinematicState> states_;
+  // WMG SDL actors with manoeuvre phases react to the world, so they are driven step by step;
+  // drivers_[k - 1] belongs to actor k.
+  std::vector<std::optional<ManoeuvreDriver>> drivers_;
+  // Lane-following NPCs drive reactively unless the scenario or the options say scripted;
+  // followers_[k - 1] belongs to actor k.
+  std::vector<std::optional<LaneFollower>> followers_;
+  // Only triggers (end conditions and manoeuvre phases) read what manoeuvre each actor is making.
+  const bool watches_manoeuvres_;
+  const std::size_t first_obstacle_;
+  const std::size_t first_flow_;
+  BackgroundTraffic traffic_;
+  const std::size_t actor_count_;
+  const SignalWeather weather_;
+  NpcSignals npc_signals_;
+  const bool sees_world_;
+  // By actor id: on the map now. Only flow vehicles come and go.
+  std::vector<std::uint8_t> present_;
+  std::vector<WorldObject> truth_;
+  const PerceptionSettings sensing_;
+  Perception perception_;
+  RouteTracker route_;
+  ReferenceDriver driver_;
+  TrafficSignals signals_;
+  EgoIndicators ego_indicators_;
+  SignalMemory ego_memory_;
+  bool ego_collided_ = false;
+  const VehicleSignals weather_lights_;
+  // The ego's signals at the sample just written, until its driver decides at this step: what
+  // the last sample keeps when the run ends before that.
+  VehicleSignals ego_signals_now_;
+  std::vector<LaneTracker> lanes_;
+  std::vector<LaneFix> fixes_;
+  std::vector<ObservedManoeuvre> manoeuvres_;
+  std::vector<double> lengths_, widths_;
+  std::vector<TraceActorKind> kinds_;
+  std::vector<double> sequence_starts_;
+  // Where every actor will be, shared by every lane follower's scan (worked out when asked for;
+  // for all actors at once only for the grid).
+  const double prediction_time_ = FollowerSettings{}.prediction_time;
+  std::vector<MapPoint> predicted_;
+  PointPredictor predictor_;
+  JunctionArrivals arrivals_;  // the junction priority's "first come" (junction_arrivals.hpp)
+  const bool uses_grid_;
+  std::optional<LaneOccupancy> occupancy_;
+  ActorGrid grid_;
+  std::vector<WorldObject> on_map_;       // the objects of `truth_` present now, for perception
+  std::vector<WorldObject> seen_on_map_;  // what perception reports of them
+  const std::vector<WorldObject>* seen_ = nullptr;      // what the ego perceived at this step
+  const std::vector<SignalColour>* colours_ = nullptr;  // the lights' at this step
+  std::optional<PluginDriver> plugin_;
+  const std::size_t last_step_;
+  std::optional<SampleRecorder> recorder_;  // made once the trace has its actors
+  scenfuzz_observation observation_{};
+  ColourRuns colour_runs_;
+};
+
+// With many actors most are far from any one follower: a grid lets each scan skip them. With
+// few, building it costs more than looking at them all (benchmarks: 30 actors on one road);
+// there followers look by lane (lane_occupancy.hpp), which cost more than the grid saves with
+// 100 actors or more (benchmarks: filing them every step, flows scanning at different steps).
+constexpr std::size_t kGridFromActors = 48;
+
+Run::Run(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options)
+    : map_(map),
+      setup_(setup),
+      options_(options),
+      dt_(options.dt),
+      duration_(options.duration.value_or(setup.duration)),
+      drivers_(manoeuvre_drivers(map, setup)),
+      followers_(lane_followers(map, setup, options)),
+      watches_manoeuvres_(!setup.end_conditions.empty() || any_present(drivers_)),
+      first_obstacle_(1 + setup.actors.size()),
+      first_flow_(first_obstacle_ + setup.obstacles.size()),
+      traffic_(map, setup, draw_flow_schedule(setup, duration_), first_flow_),
+      actor_count_(first_flow_ + traffic_.size()),
+      weather_(signal_weather(setup.conditions, options.perception)),
+      npc_signals_(map, setup, followers_, traffic_.vehicles(), weather_),
+      sees_world_(watches_manoeuvres_ || any_present(followers_) || !traffic_.empty()),
+      present_(actor_count_, 1),
+      truth_(actor_count_ - 1),
+      sensing_(degraded(options.perception, setup.conditions)),
+      perception_(sensing_, options.seed ^ kPerceptionStream, options.dt),
+      route_(map, setup.ego_route, setup.speed_limits, options.driver.default_speed_limit),
+      driver_(map, route_, setup.ego_body, setup.ego_target.has_value(), options.driver, sensing_),
+      signals_(map, setup.lights),
+      ego_indicators_(map, route_),
+      weather_lights_(weather_signals(weather_)),
+      // At the start, the brake held while it stands, and for the reference driver the
+      // weather's lights (a plugin chooses its own).
+      ego_signals_now_((options.ego_plugin.empty() ? weather_lights_ : VehicleSignals{0}) |
+                       brake_lights(setup.ego_initial.acceleration, setup.ego_initial.speed, true)),
+      lanes_(actor_count_, LaneTracker(map.widest_half_lane())),
+      fixes_(actor_count_),
+      manoeuvres_(actor_count_, ObservedManoeuvre::going_ahead),
+      lengths_(actor_count_),
+      widths_(actor_count_),
+      kinds_(actor_count_),
+      sequence_starts_(actor_count_, std::numeric_limits<double>::quiet_NaN()),
+      uses_grid_(actor_count_ >= kGridFromActors),
+      last_step_(static_cast<std::size_t>(std::floor(duration_ / dt_ + 1e-9))) {
+  trace_.map_name = map.name();
+  trace_.seed = options.seed;
+  trace_.dt = dt_;
+  add_bodies();
+  SCENFUZZ_DEMAND(trace_.actors.size() == actor_count_);
+  prepare_columns();
+  trace_.sensing = {sensing_.vehicle_range, sensing_.pedestrian_range,
+                    sensing_.vehicle_range < options.perception.vehicle_range ||
+                        sensing_.pedestrian_range < options.perception.pedestrian_range};
+  if (setup.ego_target) trace_.ego_target = setup.ego_target->position;
+  if (!uses_grid_ && (!traffic_.empty() || any_present(followers_))) occupancy_.emplace(map);
+  observation_.environment = {setup.conditions.darkness, setup.conditions.fog,
+                              setup.conditions.rain, setup.conditions.snow};
+  recorder_.emplace(trace_, last_step_ + 1);
+}
+
+// The trace's actors, their bodies in the collision world and their first states.
+void Run::add_bodies() {
+  const BodyGeometry ego_geometry = body_geometry(setup_.ego_body);
+  trace_.actors.push_back(
+      describe(setup_.ego_name, TraceActorKind::ego, setup_.ego_body.category, ego_geometry));
+  world_.add_body(ego_geometry,
+                  {{setup_.ego_initial.x, setup_.ego_initial.y}, setup_.ego_initial.heading},
+                  false);
+  states_.push_back(setup_.ego_initial);
+  for (std::size_t i = 0; i < setup_.actors.size(); ++i) {
+    const ScriptedActor& actor = setup_.actors[i];
+    const BodyGeometry geometry = body_geometry(actor.body);
+    trace_.actors.push_back(describe(actor.name, actor.kind, actor.body.category, geometry));
+    const KinematicState start = drivers_[i]     ? drivers_[i]->state()
+                                 : followers_[i] ? followers_[i]->state()
+                                                 : actor.trajectory.state_at(0);
+    world_.add_body(geometry, {{start.x, start.y}, start.heading}, false);
+    states_.push_back(start);
+  }
+  for (const StaticObstacle& obstacle : setup_.obstacles) {
+    trace_.actors.push_back(
         describe(obstacle.name, TraceActorKind::obstacle, ActorCategory::car, obstacle.geometry));
-    world.add_body(obstacle.geometry, obstacle.pose, true);
+    world_.add_body(obstacle.geometry, obstacle.pose, true);
     KinematicState state;
     state.x = obstacle.pose.position.x;
     state.y = obstacle.pose.position.y;
     state.heading = obstacle.pose.heading;
-    states.push_back(state);
+    states_.push_back(state);
   }
-  const std::size_t first_flow = trace.actors.size();
-  BackgroundTraffic traffic(map, setup, draw_flow_schedule(setup, duration), first_flow);
   const BodyGeometry flow_geometry = body_geometry(flow_vehicle_body());
-  for (std::size_t j = 0; j < traffic.size(); ++j) {
-    trace.actors.push_back(describe(traffic.vehicle(j).name, TraceActorKind::vehicle,
-                                    flow_vehicle_body().category, flow_geometry));
-    KinematicState start = traffic.initial_state(j);
-    BodyId body = world.add_body(flow_geometry, {{start.x, start.y}, start.heading}, false);
-    if (!traffic.present_at_start(j)) world.set_enabled(body, false);
-    states.push_back(start);
+  for (std::size_t j = 0; j < traffic_.size(); ++j) {
+    trace_.actors.push_back(describe(traffic_.vehicle(j).name, TraceActorKind::vehicle,
+                                     flow_vehicle_body().category, flow_geometry));
+    const KinematicState start = traffic_.initial_state(j);
+    const BodyId body = world_.add_body(flow_geometry, {{start.x, start.y}, start.heading}, false);
+    if (!traffic_.present_at_start(j)) {
+      world_.set_enabled(body, false);
+      present_[first_flow_ + j] = 0;
+    }
+    states_.push_back(start);
   }
-  const std::size_t actor_count = trace.actors.size();
-  const SignalWeather weather = signal_weather(setup.conditions, options.perception);
-  NpcSignals npc_signals(map, setup, followers, traffic.vehicles(), weather);
-  const bool sees_world = watches_world || !traffic.empty();
-  // By actor id: on the map now. Only flow vehicles come and go.
-  std::vector<std::uint8_t> present(actor_count, 1);
-  for (std::size_t j = 0; j < traffic.size(); ++j)
-    present[first_flow + j] = traffic.present_at_start(j) ? 1 : 0;
-  for (std::size_t k = 1; k < actor_count; ++k)
-    trace.perceived.push_back({static_cast<ActorId>(k), {}, {}, {}, {}, {}, {}});
-  for (const TrafficLight& light : map.traffic_lights()) trace.lights.push_back({light.id, {}});
+}
 
-  std::vector<WorldObject> truth(actor_count - 1);
-  for (std::size_t k = 1; k < actor_count; ++k) {
-    truth[k - 1].id = static_cast<ActorId>(k);
-    truth[k - 1].kind = trace.actors[k].kind;
-    truth[k - 1].length = trace.actors[k].length;
-    truth[k - 1].width = trace.actors[k].width;
+// The per-actor columns the loop reads (sizes, kinds, the truth perception is handed) and the
+// trace's perceived and light columns.
+void Run::prepare_columns() {
+  for (std::size_t k = 1; k < actor_count_; ++k)
+    trace_.perceived.push_back({static_cast<ActorId>(k), {}, {}, {}, {}, {}, {}});
+  for (const TrafficLight& light : map_.traffic_lights()) trace_.lights.push_back({light.id, {}});
+  for (std::size_t k = 1; k < actor_count_; ++k) {
+    truth_[k - 1].id = static_cast<ActorId>(k);
+    truth_[k - 1].kind = trace_.actors[k].kind;
+    truth_[k - 1].length = trace_.actors[k].length;
+    truth_[k - 1].width = trace_.actors[k].width;
   }
-
-  const PerceptionSettings sensing = degraded(options.perception, setup.conditions);
-  Perception perception(sensing, options.seed ^ kPerceptionStream, dt);
-  trace.sensing = {sensing.vehicle_range, sensing.pedestrian_range,
-                   sensing.vehicle_range < options.perception.vehicle_range ||
-                       sensing.pedestrian_range < options.perception.pedestrian_range};
-  if (setup.ego_target) trace.ego_target = setup.ego_target->position;
-  RouteTracker route(map, setup.ego_route, setup.speed_limits, options.driver.default_speed_limit);
-  ReferenceDriver driver(map, route, setup.ego_body, setup.ego_target.has_value(), options.driver,
-                         sensing);
-  TrafficSignals signals(map, setup.lights);
-  EgoIndicators ego_indicators(map, route);
-  SignalMemory ego_memory;
-  bool ego_collided = false;
-  // The ego's signals at the sample just written, until its driver decides at this step: what
-  // the last sample keeps when the run ends before that. At the start, the brake held while it
-  // stands, and for the reference driver the weather's lights (a plugin chooses its own).
-  const VehicleSignals weather_lights = weather_signals(weather);
-  VehicleSignals ego_signals_now =
-      (options.ego_plugin.empty() ? weather_lights : VehicleSignals{0}) |
-      brake_lights(setup.ego_initial.acceleration, setup.ego_initial.speed, true);
-  std::vector<LaneTracker> lanes(actor_count, LaneTracker(map.widest_half_lane()));
-  std::vector<LaneFix> fixes(actor_count);
-  std::vector<ObservedManoeuvre> manoeuvres(actor_count, ObservedManoeuvre::going_ahead);
-  std::vector<double> lengths(actor_count), widths(actor_count);
-  std::vector<TraceActorKind> kinds(actor_count);
-  std::vector<double> sequence_starts(actor_count, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t k = 0; k < actor_count; ++k) {
-    lengths[k] = trace.actors[k].length;
-    widths[k] = trace.actors[k].width;
-    kinds[k] = trace.actors[k].kind;
+  for (std::size_t k = 0; k < actor_count_; ++k) {
+    lengths_[k] = trace_.actors[k].length;
+    widths_[k] = trace_.actors[k].width;
+    kinds_[k] = trace_.actors[k].kind;
   }
+}
 
-  // Where every actor will be, shared by every lane follower's scan (worked out when asked for;
-  // for all actors at once only for the grid).
-  const double prediction_time = FollowerSettings{}.prediction_time;
-  std::vector<MapPoint> predicted;
-  PointPredictor predictor;
-  JunctionArrivals arrivals;  // the junction priority's "first come" (junction_arrivals.hpp)
-  // With many actors most are far from any one follower: a grid lets each scan skip them. With
-  // few, building it costs more than looking at them all (benchmarks: 30 actors on one road);
-  // there followers look by lane (lane_occupancy.hpp), which cost more than the grid saves with
-  // 100 actors or more (benchmarks: filing them every step, flows scanning at different steps).
-  constexpr std::size_t kGridFromActors = 48;
-  const bool uses_grid = actor_count >= kGridFromActors;
-  std::optional<LaneOccupancy> occupancy;
-  if (!uses_grid && (!traffic.empty() || std::any_of(followers.begin(), followers.end(),
-                                                     [](const auto& f) { return f.has_value(); })))
-    occupancy.emplace(map);
-  ActorGrid grid;
-  std::vector<WorldObject> on_map;       // the objects of `truth` present now, for perception
-  std::vector<WorldObject> seen_on_map;  // what perception reports of them
+bool Run::start_plugin() {
+  if (options_.ego_plugin.empty()) return true;
+  try {
+    plugin_.emplace(PluginOptions{options_.ego_plugin, options_.plugin_step_timeout,
+                                  options_.plugin_start_timeout},
+                    plugin_config(setup_, dt_, options_.seed));
+  } catch (const EgoPluginError& error) {
+    end_with_ego_failure(trace_, error, 0, nullptr);
+    return false;
+  }
+  return true;
+}
 
-  std::optional<PluginDriver> plugin;
-  if (!options.ego_plugin.empty()) {
+// Every actor to where it is at t, and its body with it.
+void Run::move_actors(std::size_t step, double t) {
+  for (std::size_t k = 1; k <= setup_.actors.size(); ++k) {
+    // Assigned in place: a conditional expression copied the state through the stack.
+    if (drivers_[k - 1])
+      states_[k] = drivers_[k - 1]->state();
+    else if (followers_[k - 1])
+      states_[k] = followers_[k - 1]->state();
+    else
+      states_[k] =
+          scripted_state(setup_.actors[k - 1].trajectory, t, step > 0 ? &states_[k] : nullptr, dt_);
+  }
+  for (std::size_t k = 0; k < first_obstacle_; ++k)
+    world_.set_pose(static_cast<BodyId>(k), {{states_[k].x, states_[k].y}, states_[k].heading});
+  if (!traffic_.empty()) traffic_.update(step, t, states_, lengths_, widths_, present_, world_);
+}
+
+// Each pair's first contact only: after it the world stops testing the pair.
+bool Run::record_collisions(double t) {
+  bool ego_hit = false;
+  for (const Contact& contact : world_.find_contacts()) {
+    world_.ignore_pair(contact.first, contact.second);
+    trace_.collisions.push_back(
+        {t, contact.first, contact.second, contact.point, contact.first_side, contact.second_side});
+    trace_.events.push_back({TraceEventKind::collision,
+                             t,
+                             static_cast<std::int64_t>(trace_.collisions.size() - 1),
+                             {}});
+    ego_hit = ego_hit || contact.first == kEgo;
+  }
+  ego_collided_ = ego_collided_ || ego_hit;
+  return ego_hit;
+}
+
+// The step's sample of every actor, their signals and the lights', and what the ego perceives.
+void Run::record_sample(double t) {
+  trace_.time.push_back(t);
+  for (std::size_t k = 0; k < actor_count_; ++k) {
+    fixes_[k] = lane_fix_of(k, map_, states_[k], present_[k] != 0, followers_, traffic_,
+                            first_flow_, lanes_[k]);
+    recorder_->sample(k, states_[k], fixes_[k]);
+  }
+  // The ego's signals are what it decided at the last step, until its driver decides below.
+  trace_.actors[kEgo].signals.push_back(ego_signals_now_);
+  npc_signals_.record(t, states_, followers_, drivers_, traffic_, first_flow_,
+                      plugin_ ? &truth_ : nullptr);
+  colours_ = &signals_.colours_at(t);
+  colour_runs_.add(*colours_);
+
+  for (std::size_t k = 1; k < actor_count_; ++k) {
+    WorldObject& object = truth_[k - 1];
+    object.x = states_[k].x;
+    object.y = states_[k].y;
+    object.heading = states_[k].heading;
+    object.speed = states_[k].speed;
+    object.reversing = states_[k].reversing;
+  }
+  // Sensors sample only what is on the map, and a vehicle that has left is not reported late
+  // (latency) nor coasted: it is gone, not missed.
+  seen_ = traffic_.empty()
+              ? &perception_.observe(states_[kEgo], truth_)
+              : &present_objects(
+                    perception_.observe(states_[kEgo], present_objects(truth_, present_, on_map_)),
+                    present_, seen_on_map_);
+  const std::vector<WorldObject>& seen = *seen_;
+  for (std::size_t k = 1, next = 0; k < actor_count_; ++k) {
+    while (next < seen.size() && seen[next].id < k) ++next;
+    const bool detected = next < seen.size() && seen[next].id == k;
+    recorder_->perceived(k, detected ? &seen[next] : nullptr);
+  }
+  recorder_->end_step();
+}
+
+// What the NPCs and the end conditions read of the world this step (empty when none of them
+// looks at it).
+WorldSnapshot Run::look(double t) {
+  if (!sees_world_) return {};
+  if (watches_manoeuvres_)
+    for (std::size_t k = 0; k < first_obstacle_; ++k)
+      manoeuvres_[k] = observe_manoeuvre(map_, states_[k], fixes_[k]);
+  predictor_.set_step(states_, prediction_time_);
+  arrivals_.update(map_, t, fixes_, kinds_, present_now());
+  if (occupancy_)
+    occupancy_->set_step(
+        {states_, &predictor_, fixes_, lengths_, widths_, kinds_, present_now(), prediction_time_});
+  if (uses_grid_) {
+    predictor_.predict(states_, prediction_time_, predicted_);
+    grid_.build(states_, predicted_, lengths_, widths_, present_now());
+  }
+  for (std::size_t k = 1; k <= drivers_.size(); ++k)
+    if (drivers_[k - 1]) sequence_starts_[k] = drivers_[k - 1]->sequence_start();
+  return {&map_,
+          t,
+          states_,
+          fixes_,
+          manoeuvres_,
+          lengths_,
+          *colours_,
+          sequence_starts_,
+          !trace_.collisions.empty(),
+          widths_,
+          kinds_,
+          present_now(),
+          &predictor_,
+          prediction_time_,
+          uses_grid_ ? &grid_ : nullptr,
+          occupancy_ ? &*occupancy_ : nullptr,
+          arrivals_.arrivals()};
+}
+
+// Whether the run ends at this step: a collision (when asked), an end condition, the target,
+// the duration. The trace says why.
+bool Run::ends(std::size_t step, double t, bool ego_hit, const WorldSnapshot& snapshot) {
+  route_.update({states_[kEgo].x, states_[kEgo].y});
+  if (ego_hit && options_.stop_at_collision) {
+    trace_.end = EndReason::collision;
+    return true;
+  }
+  if (std::any_of(setup_.end_conditions.begin(), setup_.end_conditions.end(),
+                  [&](const TriggerCondition& end) { return trigger_holds(end, snapshot); })) {
+    end_with(trace_, EndReason::end_condition, TraceEventKind::end_condition, t);
+    return true;
+  }
+  if (setup_.ego_target && route_.length() - route_.progress() <= options_.target_reach) {
+    end_with(trace_, EndReason::target_reached, TraceEventKind::target_reached, t);
+    return true;
+  }
+  if (step >= last_step_) {
+    end_with(trace_, EndReason::duration, TraceEventKind::timeout, t);
+    return true;
+  }
+  return false;
+}
+
+// Manoeuvre phases react to the world as it is now; they move on to t + dt with the ego.
+void Run::step_npcs(const WorldSnapshot& snapshot) {
+  for (std::size_t k = 1; k <= drivers_.size(); ++k)
+    if (drivers_[k - 1]) drivers_[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt_);
+  for (std::size_t k = 1; k <= followers_.size(); ++k)
+    if (followers_[k - 1]) followers_[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt_);
+  traffic_.step(snapshot, dt_);
+}
+
+// The ego's driver (the plugin, or the reference driver) chooses its control and signals, and
+// the ego moves on to t + dt.
+bool Run::drive_ego(double t) {
+  VehicleControl control;
+  if (plugin_) {
+    fill_observation(route_, states_[kEgo], t, *seen_, *colours_, setup_.ego_target.has_value(),
+                     observation_);
     try {
-      plugin.emplace(PluginOptions{options.ego_plugin, options.plugin_step_timeout,
-                                   options.plugin_start_timeout},
-                     plugin_config(setup, dt, options.seed));
+      scenfuzz_control answer = plugin_->step(observation_);
+      control = {answer.acceleration, answer.steering_angle};
+      ego_signals_now_ = plugin_signals(answer, states_[kEgo].speed);
     } catch (const EgoPluginError& error) {
-      end_with_ego_failure(trace, error, 0, nullptr);
-      return trace;
+      end_with_ego_failure(trace_, error, t, &observation_);
+      return false;
     }
+  } else {
+    control = driver_.step({t, states_[kEgo], *seen_, *colours_});
+    const VehicleSignals indicator =
+        ego_indicators_.at(route_.progress(), states_[kEgo].speed, driver_.overtake());
+    ego_signals_now_ = ego_signals(
+        {t, states_[kEgo], control.acceleration, indicator, *seen_,
+         driver_.last_reason() == DriverReason::emergency, ego_collided_, weather_lights_},
+        weather_, ego_memory_);
   }
+  trace_.actors[kEgo].signals.back() = ego_signals_now_;
+  states_[kEgo] = step_bicycle(states_[kEgo], control, setup_.ego_body, dt_);
+  return true;
+}
 
-  const auto last_step = static_cast<std::size_t>(std::floor(duration / dt + 1e-9));
-  SampleRecorder recorder(trace, last_step + 1);
-  scenfuzz_observation observation{};
-  observation.environment = {setup.conditions.darkness, setup.conditions.fog, setup.conditions.rain,
-                             setup.conditions.snow};
-  ColourRuns colour_runs;
+Trace Run::finish() {
+  recorder_->finish();
+  colour_runs_.write(trace_.lights);
+  traffic_.finish(trace_.actors, trace_.sample_count());
+  npc_signals_.finish(trace_.actors, first_flow_);
+  return std::move(trace_);
+}
 
+}  // namespace
+
+Trace simulate(const RoadMap& map, const SimulationSetup& setup, const SimulationOptions& options) {
+  // Before anything is allocated or started: 1e9 s would otherwise end in bad_alloc. Callers
+  // check options with the same function and report them as bad input.
+  if (auto problem = sample_count_problem(options.duration.value_or(setup.duration), options.dt))
+    throw std::invalid_argument("simulate: " + *problem);
+  Run run(map, setup, options);
+  if (!run.start_plugin()) return run.unfinished();
   for (std::size_t step = 0;; ++step) {
-    const double t = static_cast<double>(step) * dt;
-    for (std::size_t k = 1; k <= setup.actors.size(); ++k) {
-      // Assigned in place: a conditional expression copied the state through the stack.
-      if (drivers[k - 1])
-        states[k] = drivers[k - 1]->state();
-      else if (followers[k - 1])
-        states[k] = followers[k - 1]->state();
-      else
-        states[k] =
-            scripted_state(setup.actors[k - 1].trajectory, t, step > 0 ? &states[k] : nullptr, dt);
-    }
-    for (std::size_t k = 0; k < first_obstacle; ++k)
-      world.set_pose(static_cast<BodyId>(k), {{states[k].x, states[k].y}, states[k].heading});
-    if (!traffic.empty()) traffic.update(step, t, states, lengths, widths, present, world);
-
-    bool ego_hit = false;
-    // Each pair's first contact only: after it the world stops testing the pair.
-    for (const Contact& contact : world.find_contacts()) {
-      world.ignore_pair(contact.first, contact.second);
-      trace.collisions.push_back({t, contact.first, contact.second, contact.point,
-                                  contact.first_side, contact.second_side});
-      trace.events.push_back({TraceEventKind::collision,
-                              t,
-                              static_cast<std::int64_t>(trace.collisions.size() - 1),
-                              {}});
-      ego_hit = ego_hit || contact.first == kEgo;
-    }
-    ego_collided = ego_collided || ego_hit;
-
-    trace.time.push_back(t);
-    for (std::size_t k = 0; k < actor_count; ++k) {
-      fixes[k] =
-          lane_fix_of(k, map, states[k], present[k] != 0, followers, traffic, first_flow, lanes[k]);
-      recorder.sample(k, states[k], fixes[k]);
-    }
-    // The ego's signals are what it decided at the last step, until its driver decides below.
-    trace.actors[kEgo].signals.push_back(ego_signals_now);
-    npc_signals.record(t, states, followers, drivers, traffic, first_flow,
-                       plugin ? &truth : nullptr);
-    const std::vector<SignalColour>& colours = signals.colours_at(t);
-    colour_runs.add(colours);
-
-    for (std::size_t k = 1; k < actor_count; ++k) {
-      WorldObject& object = truth[k - 1];
-      object.x = states[k].x;
-      object.y = states[k].y;
-      object.heading = states[k].heading;
-      object.speed = states[k].speed;
-      object.reversing = states[k].reversing;
-    }
-    // Sensors sample only what is on the map, and a vehicle that has left is not reported late
-    // (latency) nor coasted: it is gone, not missed.
-    const std::vector<WorldObject>& seen =
-        traffic.empty()
-            ? perception.observe(states[kEgo], truth)
-            : present_objects(
-                  perception.observe(states[kEgo], present_objects(truth, present, on_map)),
-                  present, seen_on_map);
-    for (std::size_t k = 1, next = 0; k < actor_count; ++k) {
-      while (next < seen.size() && seen[next].id < k) ++next;
-      bool detected = next < seen.size() && seen[next].id == k;
-      recorder.perceived(k, detected ? &seen[next] : nullptr);
-    }
-    recorder.end_step();
-
-    WorldSnapshot snapshot;
-    if (sees_world) {
-      if (watches_manoeuvres)
-        for (std::size_t k = 0; k < first_obstacle; ++k)
-          manoeuvres[k] = observe_manoeuvre(map, states[k], fixes[k]);
-      predictor.set_step(states, prediction_time);
-      arrivals.update(map, t, fixes, kinds,
-                      traffic.empty() ? std::span<const std::uint8_t>{}
-                                      : std::span<const std::uint8_t>(present));
-      const std::span<const std::uint8_t> present_now =
-          traffic.empty() ? std::span<const std::uint8_t>{}
-                          : std::span<const std::uint8_t>(present);
-      if (occupancy)
-        occupancy->set_step(
-            {states, &predictor, fixes, lengths, widths, kinds, present_now, prediction_time});
-      if (uses_grid) {
-        predictor.predict(states, prediction_time, predicted);
-        grid.build(states, predicted, lengths, widths,
-                   traffic.empty() ? std::span<const std::uint8_t>{}
-                                   : std::span<const std::uint8_t>(present));
-      }
-      for (std::size_t k = 1; k <= drivers.size(); ++k)
-        if (drivers[k - 1]) sequence_starts[k] = drivers[k - 1]->sequence_start();
-      snapshot = {&map,
-                  t,
-                  states,
-                  fixes,
-                  manoeuvres,
-                  lengths,
-                  colours,
-                  sequence_starts,
-                  !trace.collisions.empty(),
-                  widths,
-                  kinds,
-                  traffic.empty() ? std::span<const std::uint8_t>{}
-                                  : std::span<const std::uint8_t>(present),
-                  &predictor,
-                  prediction_time,
-                  uses_grid ? &grid : nullptr,
-                  occupancy ? &*occupancy : nullptr,
-                  arrivals.arrivals()};
-    }
-
-    route.update({states[kEgo].x, states[kEgo].y});
-    if (ego_hit && options.stop_at_collision) {
-      trace.end = EndReason::collision;
-      break;
-    }
-    if (std::any_of(setup.end_conditions.begin(), setup.end_conditions.end(),
-                    [&](const TriggerCondition& end) { return trigger_holds(end, snapshot); })) {
-      end_with(trace, EndReason::end_condition, TraceEventKind::end_condition, t);
-      break;
-    }
-    if (setup.ego_target && route.length() - route.progress() <= options.target_reach) {
-      end_with(trace, EndReason::target_reached, TraceEventKind::target_reached, t);
-      break;
-    }
-    if (step >= last_step) {
-      end_with(trace, EndReason::duration, TraceEventKind::timeout, t);
-      break;
-    }
-
-    // Manoeuvre phases react to the world as it is now; they move on to t + dt with the ego.
-    for (std::size_t k = 1; k <= drivers.size(); ++k)
-      if (drivers[k - 1]) drivers[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt);
-    for (std::size_t k = 1; k <= followers.size(); ++k)
-      if (followers[k - 1]) followers[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt);
-    traffic.step(snapshot, dt);
-
-    VehicleControl control;
-    if (plugin) {
-      fill_observation(route, states[kEgo], t, seen, colours, setup.ego_target.has_value(),
-                       observation);
-      try {
-        scenfuzz_control answer = plugin->step(observation);
-        control = {answer.acceleration, answer.steering_angle};
-        ego_signals_now = plugin_signals(answer, states[kEgo].speed);
-      } catch (const EgoPluginError& error) {
-        end_with_ego_failure(trace, error, t, &observation);
-        break;
-      }
-    } else {
-      control = driver.step({t, states[kEgo], seen, colours});
-      const VehicleSignals indicator =
-          ego_indicators.at(route.progress(), states[kEgo].speed, driver.overtake());
-      ego_signals_now = ego_signals(
-          {t, states[kEgo], control.acceleration, indicator, seen,
-           driver.last_reason() == DriverReason::emergency, ego_collided, weather_lights},
-          weather, ego_memory);
-    }
-    trace.actors[kEgo].signals.back() = ego_signals_now;
-    states[kEgo] = step_bicycle(states[kEgo], control, setup.ego_body, dt);
+    const double t = static_cast<double>(step) * options.dt;
+    run.move_actors(step, t);
+    const bool ego_hit = run.record_collisions(t);
+    run.record_sample(t);
+    const WorldSnapshot snapshot = run.look(t);
+    if (run.ends(step, t, ego_hit, snapshot)) break;
+    run.step_npcs(snapshot);
+    if (!run.drive_ego(t)) break;
   }
-  recorder.finish();
-  colour_runs.write(trace.lights);
-  traffic.finish(trace.actors, trace.sample_count());
-  npc_signals.finish(trace.actors, first_flow);
-  return trace;
+  return run.finish();
 }
 
 }  // namespace scenfuzz
