@@ -418,7 +418,7 @@ bool Run::start_plugin() {
   return true;
 }
 
-// Every actor to where it is at t, and its body with it.
+// Every actor to where it is at t, its body with it, and the ego's place on its route.
 void Run::move_actors(std::size_t step, double t) {
   for (std::size_t k = 1; k <= setup_.actors.size(); ++k) {
     // Assigned in place: a conditional expression copied the state through the stack.
@@ -433,6 +433,7 @@ void Run::move_actors(std::size_t step, double t) {
   for (std::size_t k = 0; k < first_obstacle_; ++k)
     world_.set_pose(static_cast<BodyId>(k), {{states_[k].x, states_[k].y}, states_[k].heading});
   if (!traffic_.empty()) traffic_.update(step, t, states_, lengths_, widths_, present_, world_);
+  route_.update({states_[kEgo].x, states_[kEgo].y});  // the ego's progress along its route
 }
 
 // Each pair's first contact only: after it the world stops testing the pair.
@@ -531,7 +532,6 @@ WorldSnapshot Run::look(double t) {
 // Whether the run ends at this step: a collision (when asked), an end condition, the target,
 // the duration. The trace says why.
 bool Run::ends(std::size_t step, double t, bool ego_hit, const WorldSnapshot& snapshot) {
-  route_.update({states_[kEgo].x, states_[kEgo].y});
   if (ego_hit && options_.stop_at_collision) {
     trace_.end = EndReason::collision;
     return true;
