@@ -88,7 +88,10 @@ class ReferenceChecker {
       std::set<std::string> connected;
       for (const Identifier& road : junction.roads) {
         expect_road(road, "connects to " + junction.id.name, false);
-        connected.insert(road.name);
+        // A road written twice would be a junction with no way through it at level 2.
+        if (!connected.insert(road.name).second)
+          report(road.location,
+                 "road " + road.name + " is named twice among the roads of " + junction.id.name);
       }
       for (const ConnectionSentence& connection : junction.connections)
         for (const Identifier* road : {&connection.from, &connection.to})

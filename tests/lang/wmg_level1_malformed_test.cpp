@@ -135,6 +135,8 @@ std::vector<MalformedCase> malformed_cases() {
        "'R7' is neither a road nor a junction of the scenery; did you mean 'R1'?"},
       {"road_without_road_sentence", replaced(b, "with R1 and R2.", "with R1, R2 and R3."), 4, 65,
        "road R3 connects to J1 but no road sentence describes it"},
+      {"junction_road_named_twice", replaced(b, "with R1 and R2.", "with R2 and R2."), 4, 61,
+       "road R2 is named twice among the roads of J1"},
       {"connection_to_a_road_of_another_junction", replaced(b, "R1 to R2 is", "R1 to R9 is"), 5, 7,
        "road R9 is not one of the roads of J1"},
       {"missing_junction_part",
