@@ -110,8 +110,11 @@ void BackgroundTraffic::update(std::size_t step, double t, std::span<KinematicSt
 }
 
 void BackgroundTraffic::step(const WorldSnapshot& world, double dt) {
+  // Every vehicle decides on the same world before any moves (LaneFollower::decide).
   for (std::size_t j = 0; j < vehicles_.size(); ++j)
-    if (followers_[j]) followers_[j]->step(world, static_cast<std::uint32_t>(first_ + j), dt);
+    if (followers_[j]) followers_[j]->decide(world, static_cast<std::uint32_t>(first_ + j), dt);
+  for (auto& follower : followers_)
+    if (follower) follower->move(dt);
 }
 
 void BackgroundTraffic::finish(std::span<TraceActor> actors, std::size_t samples) const {

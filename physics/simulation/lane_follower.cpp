@@ -142,14 +142,14 @@ std::optional<LaneFix> LaneFollower::lane_fix() const {
   return LaneFix{static_cast<std::int32_t>(next.lane), next.s_begin + (from.s + along - on.s_end)};
 }
 
-void LaneFollower::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
+void LaneFollower::decide(const WorldSnapshot& world, std::uint32_t self, double dt) {
   if (finished_) return;
   prepare_ahead();
   if (world.time + 1e-9 >= next_look_) {
     next_look_ = world.time + kLookInterval;
     look_ahead(world, self, std::max(dt, kLookInterval));
   }
-  advance(choose_acceleration(world.time), dt);
+  decided_ = choose_acceleration(world.time);
 }
 
 // The cosine and sine of its heading, for the look (surely_not_in_path, lane_lead): the

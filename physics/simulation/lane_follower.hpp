@@ -86,7 +86,16 @@ class LaneFollower {
 
   // Chooses the acceleration from the world as it is now (this actor is actor `self` in it) and
   // moves on by dt.
-  void step(const WorldSnapshot& world, std::uint32_t self, double dt);
+  void step(const WorldSnapshot& world, std::uint32_t self, double dt) {
+    decide(world, self, dt);
+    move(dt);
+  }
+  // step's two halves, for a caller that decides for every follower before it moves any (the
+  // same world for all): the moves, each a chain of divisions, then overlap in the processor.
+  void decide(const WorldSnapshot& world, std::uint32_t self, double dt);
+  void move(double dt) {
+    if (!finished_) advance(decided_, dt);
+  }
 
  private:
   struct Stop {            // something on the path to stop behind, for now
@@ -227,6 +236,7 @@ class LaneFollower {
   MapPoint facing_{1, 0};
   double facing_heading_ = std::numeric_limits<double>::quiet_NaN();  // whose they are
   double applied_ = 0;  // m/s^2 asked of the vehicle at the last step, for the jerk limit
+  double decided_ = 0;  // m/s^2 chosen by decide, for move
   bool finished_ = false;
   FollowerReason reason_ = FollowerReason::cruise;
   double stopped_since_ = -1;   // s: when it came to stand at the stop sign it waits at

@@ -557,7 +557,9 @@ void Run::step_npcs(const WorldSnapshot& snapshot) {
   for (std::size_t k = 1; k <= drivers_.size(); ++k)
     if (drivers_[k - 1]) drivers_[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt_);
   for (std::size_t k = 1; k <= followers_.size(); ++k)
-    if (followers_[k - 1]) followers_[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt_);
+    if (followers_[k - 1]) followers_[k - 1]->decide(snapshot, static_cast<std::uint32_t>(k), dt_);
+  for (auto& follower : followers_)
+    if (follower) follower->move(dt_);
   traffic_.step(snapshot, dt_);
 }
 
