@@ -174,7 +174,13 @@ void LaneFollower::look_ahead(const WorldSnapshot& world, std::uint32_t self, do
   find_leader(world, self, stops_);
   find_stop_lines(world, self, dt, stops_);
   hold_at_junction(world, self, stops_);
-  if (!leaves_at_end_) stops_.push_back({path_->length() - s_, 0, 0, FollowerReason::path_end});
+  if (!leaves_at_end_) {
+    // Written in place: a Stop built on the stack and copied stalls the copy's wide loads on
+    // its narrow stores (store forwarding fails).
+    Stop& end = stops_.emplace_back();
+    end.gap = path_->length() - s_;
+    end.reason = FollowerReason::path_end;
+  }
 }
 
 // The most cautious of IDM's answers: for the free road, the bend ahead and each stop found at the
