@@ -1,0 +1,265 @@
+// CH-Scenario's entity module: the grammar's worked example, laid out as docs/ch-scenario.md
+// reads it, gives every value at its place; the grammar's own key spellings and a file without
+// section headers read the same; each single mistake is reported first at its line and column
+// with what was expected; independent mistakes are all reported; no truncation crashes.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "lang/chs/parser.hpp"
+#include "lang/source_file.hpp"
+#include "tests/lang/malformed_harness.hpp"
+
+namespace scenfuzz::chs {
+namespace {
+
+using scenfuzz::test::error_lines;
+using scenfuzz::test::errors_of;
+using scenfuzz::test::MalformedCase;
+using scenfuzz::test::replaced;
+
+// Line numbers in the comments: the malformed cases below point into them.
+const std::string kExample =
+    "# The grammar's worked example: a minibus on a narrow road in a typhoon.\n"  // 1
+    "import from MAP\n"                                                           // 2
+    "  length: 400\n"                                                             // 3
+    "  width: 50\n"                                                               // 4
+    "RoadNetwork\n"                                                               // 5
+    "  road → name narrow_road\n"                                                 // 6
+    "    left boundary: (0.0, 50.0) (400.0, 50.0)\n"                              // 7
+    "    center lines: (0.0, 25.0) (400.0, 25.0)\n"                               // 8
+    "    right boundary: (0.0, 0.0)\n"                                            // 9
+    "                    (400.0, 0.0)\n"                                          // 10
+    "Weather\n"                                                                   // 11
+    "  cloudiness: 1.0\n"                                                         // 12
+    "  wetness: 1.0\n"                                                            // 13
+    "  air_pressure: 1.0\n"                                                       // 14
+    "  precipitation: 1.0\n"                                                      // 15
+    "  wind_intensity: 1.0\n"                                                     // 16
+    "  visibility: 0.4\n"                                                         // 17
+    "NaturalDisaster\n"                                                           // 18
+    "  MeteorologicalDisaster\n"                                                  // 19
+    "    rainstorm: 0\n"                                                          // 20
+    "    sandstorm: 0\n"                                                          // 21
+    "    typhoon: 1\n"                                                            // 22
+    "    tornado: 0\n"                                                            // 23
+    "  GeologicalDisaster\n"                                                      // 24
+    "    debrisflow: 0\n"                                                         // 25
+    "    landslide: 0\n"                                                          // 26
+    "    collapse: 0\n"                                                           // 27
+    "SpecialHighRisk\n"                                                           // 28
+    "  rough: 0\n"                                                                // 29
+    "  iceRoad: 0\n"                                                              // 30
+    "  steepDescentAhead: 1\n"                                                    // 31
+    "  muddy: 0\n"                                                                // 32
+    "  wade: 1\n"                                                                 // 33
+    "Entity\n"                                                                    // 34
+    "  StaticEntity1\n"                                                           // 35
+    "    name: pedestrians\n"                                                     // 36
+    "    overview: little boy\n"                                                  // 37
+    "  StaticEntity2\n"                                                           // 38
+    "    name: traffic_light\n"                                                   // 39
+    "    overview: red light\n"                                                   // 40
+    "  DynamicEntity1\n"                                                          // 41
+    "    name: minibus\n"                                                         // 42
+    "    timestamp: 2022 年 1 月 30 日 17:30:42\n"                                // 43
+    "    speed: 45.0\n"                                                           // 44
+    "    acceleration: 0.0\n"                                                     // 45
+    "    track: curve to the east\n"                                              // 46
+    "    aim: The First People's Hospital\n";                                     // 47
+
+ParseResult parse_text(const std::string& text) { return parse(SourceFile("t.chs", text)); }
+
+std::string messages(const Diagnostics& diagnostics) {
+  std::string all;
+  for (const Diagnostic& d : diagnostics.all())
+    all += std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " +
+           d.message + "\n";
+  return all;
+}
+
+TEST(ChsParser, TheGrammarsWorkedExampleGivesEveryValueAtItsPlace) {
+  ParseResult result = parse_text(kExample);
+  ASSERT_TRUE(result.file) << messages(result.diagnostics);
+  const File& file = *result.file;
+  EXPECT_EQ(file.map.kind, MapSource::Kind::blank);
+  EXPECT_EQ(file.map.length.value, 400);
+  EXPECT_EQ(file.map.width.value, 50);
+  ASSERT_EQ(file.roads.size(), 1u);
+  const Road& road = file.roads[0];
+  EXPECT_EQ(road.name.text, "narrow_road");
+  EXPECT_EQ(road.name.location.line, 6u);
+  EXPECT_EQ(road.name.location.column, 15u);  // "→" is one character
+  ASSERT_EQ(road.left_boundary.size(), 2u);
+  EXPECT_EQ(road.left_boundary[1].x, 400);
+  EXPECT_EQ(road.left_boundary[1].y, 50);
+  ASSERT_EQ(road.centre_lines.size(), 2u);
+  EXPECT_EQ(road.centre_lines[0].y, 25);
+  ASSERT_EQ(road.right_boundary.size(), 2u);  // the second point on a line of its own
+  EXPECT_EQ(road.right_boundary[1].x, 400);
+  EXPECT_EQ(road.right_boundary[1].location.line, 10u);
+  EXPECT_EQ(road.right_boundary[1].location.column, 21u);
+  EXPECT_EQ(file.weather.cloudiness.value, 1);
+  EXPECT_EQ(file.weather.air_pressure.value, 1);
+  EXPECT_EQ(file.weather.visibility.value, 0.4);
+  EXPECT_EQ(file.weather.visibility.location.line, 17u);
+  EXPECT_TRUE(file.disaster.typhoon.value);
+  EXPECT_FALSE(file.disaster.rainstorm.value);
+  EXPECT_FALSE(file.disaster.landslide.value);
+  EXPECT_TRUE(file.high_risk.steep_descent_ahead.value);
+  EXPECT_TRUE(file.high_risk.wade.value);
+  EXPECT_FALSE(file.high_risk.ice_road.value);
+  ASSERT_EQ(file.static_entities.size(), 2u);
+  EXPECT_EQ(file.static_entities[0].name.text, "pedestrians");
+  EXPECT_EQ(file.static_entities[0].overview.text, "little boy");
+  EXPECT_EQ(file.static_entities[1].overview.text, "red light");
+  ASSERT_EQ(file.dynamic_entities.size(), 1u);
+  const DynamicEntity& minibus = file.dynamic_entities[0];
+  EXPECT_EQ(minibus.name.text, "minibus");
+  EXPECT_EQ(minibus.timestamp.text, "2022 年 1 月 30 日 17:30:42");
+  EXPECT_EQ(minibus.speed.value, 45);
+  EXPECT_EQ(minibus.speed.location.line, 44u);
+  EXPECT_EQ(minibus.speed.location.column, 12u);
+  EXPECT_EQ(minibus.acceleration.value, 0);
+  EXPECT_EQ(minibus.track.text, "curve to the east");
+  EXPECT_EQ(minibus.aim.text, "The First People's Hospital");
+}
+
+// The BNF's form: a named map, no section headers for the weather and the conditions, entities
+// told apart by their keys, and the defaults for what is not given.
+TEST(ChsParser, ANamedMapWithoutSectionHeadersReadsTheSame) {
+  ParseResult result = parse_text(
+      "map: san_francisco\n"
+      "cloudiness: 0.2\n"
+      "iceroad: true\n"
+      "Entities\n"
+      "name: truck\n"
+      "speed: 30\n"
+      "name: tree\n"
+      "overview: an old oak\n");
+  ASSERT_TRUE(result.file) << messages(result.diagnostics);
+  const File& file = *result.file;
+  EXPECT_EQ(file.map.kind, MapSource::Kind::named);
+  EXPECT_EQ(file.map.name.text, "san_francisco");
+  EXPECT_EQ(file.weather.cloudiness.value, 0.2);
+  EXPECT_EQ(file.weather.visibility.value, 1);  // a clear day unless said otherwise
+  EXPECT_EQ(file.weather.air_pressure.value, 1);
+  EXPECT_TRUE(file.high_risk.ice_road.value);
+  ASSERT_EQ(file.dynamic_entities.size(), 1u);
+  EXPECT_EQ(file.dynamic_entities[0].name.text, "truck");
+  EXPECT_EQ(file.dynamic_entities[0].speed.value, 30);
+  ASSERT_EQ(file.static_entities.size(), 1u);
+  EXPECT_EQ(file.static_entities[0].overview.text, "an old oak");
+}
+
+std::vector<MalformedCase> malformed_cases() {
+  const std::string& b = kExample;
+  return {
+      {"misspelt_key", replaced(b, "acceleration: 0.0", "acceleratiobn: 0.0"), 45, 5,
+       "unknown key 'acceleratiobn' in an entity; did you mean 'acceleration'?"},
+      {"weather_out_of_range", replaced(b, "cloudiness: 1.0", "cloudiness: 1.5"), 12, 15,
+       "the cloudiness must be from 0 to 1, not 1.5"},
+      {"speed_not_a_number", replaced(b, "speed: 45.0", "speed: fast"), 44, 12,
+       "expected a number for the speed in km/h, found 'fast'"},
+      {"speed_nan", replaced(b, "speed: 45.0", "speed: nan"), 44, 12,
+       "the speed in km/h must be a finite number"},
+      {"flag_not_a_flag", replaced(b, "typhoon: 1", "typhoon: 2"), 22, 14,
+       "expected 0, 1, true or false for typhoon, found '2'"},
+      {"no_map", replaced(b, "import from MAP\n  length: 400\n  width: 50\n", ""), 1, 1,
+       "the file gives no map"},
+      {"blank_map_without_width", replaced(b, "  width: 50\n", ""), 2, 1,
+       "'import from MAP' needs the map's 'length:' and 'width:'"},
+      {"map_too_long", replaced(b, "length: 400", "length: 4e9"), 3, 11,
+       "the map's length in metres must be from 1 to 100000"},
+      {"road_with_one_point", replaced(b, " (400.0, 25.0)", ""), 6, 3,
+       "road narrow_road needs at least two points in its centre line"},
+      {"point_without_comma", replaced(b, "(400.0, 50.0)", "(400.0 50.0)"), 7, 39,
+       "expected ',' between the point's x and y, found '5'"},
+      {"point_not_closed", replaced(b, "(400.0, 25.0)\n", "(400.0, 25.0\n"), 8, 43,
+       "expected ')' to end the point, found the end of the line"},
+      {"key_given_twice", replaced(b, "  wetness: 1.0\n", "  wetness: 1.0\n  wetness: 0.5\n"), 14,
+       3, "'wetness' is given twice"},
+      {"entity_named_twice", replaced(b, "name: traffic_light", "name: pedestrians"), 39, 11,
+       "entity 'pedestrians' is described twice"},
+      {"overview_of_a_dynamic_entity",
+       replaced(b, "    speed: 45.0\n", "    speed: 45.0\n    overview: a bus\n"), 45, 5,
+       "'overview' belongs to a static entity, and this one is dynamic"},
+      {"speed_of_a_static_entity",
+       replaced(b, "    overview: red light\n", "    overview: red light\n    speed: 3\n"), 41, 5,
+       "'speed' belongs to a dynamic entity, and this one is static"},
+      {"dynamic_entity_without_speed", replaced(b, "    speed: 45.0\n", ""), 41, 3,
+       "dynamic entity 'minibus' needs a 'speed:' in km/h"},
+      {"entity_without_name", replaced(b, "    name: minibus\n", ""), 41, 3,
+       "this entity has no 'name:'"},
+      {"points_without_a_boundary",
+       replaced(b, "    left boundary: (0.0, 50.0)", "    (0.0, 50.0)"), 7, 5,
+       "points belong to a road's boundary or centre line"},
+      {"line_that_is_nothing", replaced(b, "Weather\n", "Weather report\n"), 11, 1,
+       "expected a section (such as 'Weather'), 'key: value' or a road's points"},
+      {"the_specification_module", b + "ConstraintList\n", 48, 1,
+       "the specification module (constraints, safety protocols, events) is not read yet"},
+      {"road_network_on_a_named_map",
+       replaced(b, "import from MAP\n  length: 400\n  width: 50\n", "map: san_francisco\n"), 4, 3,
+       "a road network is laid on a blank map ('import from MAP') only"},
+      {"map_given_twice", replaced(b, "  width: 50\n", "  width: 50\nmap: san_francisco\n"), 5, 1,
+       "the map is given twice"},
+      {"road_without_a_name", replaced(b, "road → name narrow_road", "road →"), 6, 3,
+       "expected the road's name after 'road'"},
+      {"empty_text", replaced(b, "track: curve to the east", "track:"), 46, 11,
+       "expected the entity's track after the colon"},
+  };
+}
+
+class ChsMalformed : public ::testing::TestWithParam<MalformedCase> {};
+
+TEST_P(ChsMalformed, FirstErrorIsAtTheMistake) {
+  const MalformedCase& c = GetParam();
+  ASSERT_TRUE(scenfuzz::test::parse_survives({c.text}, c.name,
+                                             [](const std::string& t) { (void)parse_text(t); }));
+  ParseResult result = parse_text(c.text);
+  EXPECT_FALSE(result.file);
+  auto errors = errors_of(result.diagnostics);
+  ASSERT_FALSE(errors.empty()) << c.name;
+  // The first error by place in the file.
+  const Diagnostic* first = errors.front();
+  for (const Diagnostic* d : errors)
+    if (d->location.line < first->location.line ||
+        (d->location.line == first->location.line && d->location.column < first->location.column))
+      first = d;
+  EXPECT_EQ(first->location.line, c.line) << messages(result.diagnostics);
+  EXPECT_EQ(first->location.column, c.column) << messages(result.diagnostics);
+  EXPECT_THAT(first->message, ::testing::HasSubstr(c.message));
+}
+
+INSTANTIATE_TEST_SUITE_P(Chs, ChsMalformed, ::testing::ValuesIn(malformed_cases()),
+                         [](const ::testing::TestParamInfo<MalformedCase>& case_info) {
+                           return case_info.param.name;
+                         });
+
+TEST(ChsParser, IndependentMistakesAreAllReported) {
+  std::string text = replaced(kExample, "cloudiness: 1.0", "cloudiness: 7");
+  text = replaced(text, "typhoon: 1", "typhon: 1");
+  text = replaced(text, "speed: 45.0", "speed: -3");
+  ParseResult result = parse_text(text);
+  EXPECT_THAT(error_lines(result.diagnostics), ::testing::ElementsAre(12, 22, 44))
+      << messages(result.diagnostics);
+}
+
+TEST(ChsParser, NoTruncationOfTheExampleCrashes) {
+  std::vector<std::string> texts;
+  for (std::size_t n = 0; n <= kExample.size(); ++n) texts.push_back(kExample.substr(0, n));
+  ASSERT_TRUE(scenfuzz::test::parse_survives(texts, "truncations",
+                                             [](const std::string& t) { (void)parse_text(t); }));
+  // Cut within the last line, the file misses only its aim, which it does not need.
+  for (std::size_t n = 0; n < kExample.size(); ++n) {
+    ParseResult result = parse_text(kExample.substr(0, n));
+    if (!result.file) {
+      EXPECT_TRUE(result.diagnostics.has_errors()) << n;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace scenfuzz::chs
