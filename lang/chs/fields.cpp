@@ -266,6 +266,11 @@ void check_whole_file(const File& file, Diagnostics& diagnostics) {
       diagnostics.error(name.location, "entity '" + name.text + "' is described twice");
   };
   for (const StaticEntity& entity : file.static_entities) check_name(entity.name);
+  std::set<std::string> constraints;
+  for (const Constraint& constraint : file.constraints)
+    if (!constraints.insert(constraint.name.text).second)
+      diagnostics.error(constraint.name.location,
+                        "constraint " + constraint.name.text + " is described twice");
   for (const DynamicEntity& entity : file.dynamic_entities) {
     check_name(entity.name);
     if (!entity.speed.location.known())

@@ -62,7 +62,7 @@ std::string unknown_key_message(std::string_view written, const std::string& key
                                 const std::string& where);
 
 // What the file as a whole must hold: a map, roads on a blank map only and well formed, unique
-// names, a speed for every dynamic entity.
+// names of roads, entities and constraints, a speed for every dynamic entity.
 void check_whole_file(const File& file, Diagnostics& diagnostics);
 
 }  // namespace scenfuzz::chs

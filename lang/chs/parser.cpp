@@ -1,11 +1,12 @@
-// The CH-Scenario entity module, a line at a time: a section header, `import from MAP`, a road's
-// first line, a `key: value` line, or more points of the boundary above. Which keys a section
-// takes is in the tables of fields.cpp; what a whole file must hold is checked at the end.
+// A CH-Scenario file, a line at a time: a section header, `import from MAP`, a road's or a
+// constraint's first line, a `key: value` line, or more points of the boundary above. Which keys a
+// section takes is in the tables of fields.cpp; what a whole file must hold is checked at the end.
 #include "lang/chs/parser.hpp"
 
 #include <set>
 #include <string>
 
+#include "lang/chs/constraints.hpp"
 #include "lang/chs/fields.hpp"
 #include "lang/chs/lines.hpp"
 #include "lang/chs/values.hpp"
@@ -14,7 +15,16 @@ namespace scenfuzz::chs {
 
 namespace {
 
-enum class Section { none, blank_map, road_network, weather, disaster, high_risk, entities };
+enum class Section {
+  none,
+  blank_map,
+  road_network,
+  weather,
+  disaster,
+  high_risk,
+  entities,
+  constraints
+};
 
 class Parser {
  public:
@@ -26,6 +36,7 @@ class Parser {
       read(line);
     }
     close_entity();
+    constraints_.finish();
     check_file();
     if (!result_.diagnostics.has_errors()) result_.file = std::move(file_);
     return std::move(result_);
@@ -40,6 +51,7 @@ class Parser {
     const std::string key = normalised(line.text);
     if (read_header(line, key)) return;
     if (key == "importfrommap") return start_blank_map(line);
+    if (section_ == Section::constraints && constraints_.read_start(line)) return;
     if (section_ == Section::road_network && key.starts_with("road") &&
         line.text.find(':') == std::string_view::npos)
       return start_road(line);
@@ -75,11 +87,7 @@ class Parser {
       case Header::entities: section_ = Section::entities; break;
       case Header::static_entity: open_entity(line, EntityKind::static_entity); break;
       case Header::dynamic_entity: open_entity(line, EntityKind::dynamic_entity); break;
-      case Header::constraints:
-        error(line.whole(),
-              "the specification module (constraints, safety protocols, events) "
-              "is not read yet");
-        break;
+      case Header::constraints: section_ = Section::constraints; break;
     }
     return true;
   }
@@ -137,6 +145,9 @@ class Parser {
         break;
       case Section::road_network: return read_road_field(line, key, key_at, value);
       case Section::entities: return read_entity_field(line, key, key_at, value);
+      case Section::constraints:
+        if (constraints_.read_field(key, key_at, value)) return;
+        break;
       default: break;
     }
     error(key_at, unknown_key_message(line.text.substr(0, colon), key, section_name()));
@@ -221,6 +232,7 @@ class Parser {
       case Section::disaster: return "the natural disasters";
       case Section::high_risk: return "the special high-risk conditions";
       case Section::entities: return "an entity";
+      case Section::constraints: return "the constraint list";
       case Section::none: break;
     }
     return "the file";
@@ -240,6 +252,7 @@ class Parser {
   std::vector<Point>* last_points_ = nullptr;
   PendingEntity entity_;
   Road probe_;  // only asked which keys name a boundary
+  ConstraintReader constraints_{file_, result_.diagnostics};
 };
 
 }  // namespace

@@ -1,7 +1,8 @@
-// Reads a CH-Scenario file's scenario entity module (docs/ch-scenario.md): a line-oriented layout
-// of section headers, `key: value` lines and road polylines, as the grammar's concrete example is
-// laid out. Every mistake is a diagnostic at its file:line:column, and the parse goes on at the
-// next line, so independent mistakes are all reported.
+// Reads a CH-Scenario file (docs/ch-scenario.md), its scenario entity module and its
+// specification module: a line-oriented layout of section headers, `key: value` lines, road
+// polylines and constraints, as the grammar's concrete examples are laid out. Every mistake is a
+// diagnostic at its file:line:column, and the parse goes on at the next line, so independent
+// mistakes are all reported.
 #pragma once
 
 #include <optional>

@@ -1,5 +1,6 @@
 // CH-Scenario (.chs) as written: the scenario entity module (map, road network, weather, natural
-// disasters, special high-risk conditions, entities), each value with where it was written.
+// disasters, special high-risk conditions, entities) and the specification module (safety
+// protocols, constraints and their events), each value with where it was written.
 // docs/ch-scenario.md gives the layout accepted and why; nothing here is interpreted yet.
 #pragma once
 
@@ -76,6 +77,43 @@ struct DynamicEntity {
   SourceLocation location;
 };
 
+// A guard or a safety protocol's predicate: `(wiper = true) && (dist > safedistance)`. In a
+// predicate `=` compares, as `==` does.
+struct Expression {
+  enum class Kind { name, number, boolean, negation, binary };
+  Kind kind = Kind::name;
+  std::string text;  // name: the name; binary: the operator (&&, ||, ==, !=, <, >, <=, >=)
+  double number = 0;
+  bool boolean = false;
+  std::vector<Expression> operands;  // negation: one; binary: two
+  SourceLocation location;
+};
+
+// An action's statement: `position++`, `speed--`, `parked = false`.
+struct Statement {
+  enum class Kind { increment, decrement, assign };
+  Kind kind = Kind::assign;
+  Text target;
+  Expression value;  // assign
+  SourceLocation location;
+};
+
+// `event: when GUARD do ACTION`, with the probability that it fires when its guard holds.
+struct Event {
+  Expression guard;
+  std::vector<Statement> action;
+  Number probability{1, {}};
+  SourceLocation location;
+};
+
+struct Constraint {
+  Text name;
+  std::vector<Text> related;  // the entities it `relate with`s
+  std::vector<Expression> safety_protocols;
+  std::vector<Event> events;
+  SourceLocation location;
+};
+
 struct File {
   MapSource map;
   std::vector<Road> roads;
@@ -84,6 +122,8 @@ struct File {
   SpecialHighRisk high_risk;
   std::vector<StaticEntity> static_entities;
   std::vector<DynamicEntity> dynamic_entities;
+  std::vector<Expression> safety_protocols;  // of the whole constraint list
+  std::vector<Constraint> constraints;
 };
 
 }  // namespace scenfuzz::chs

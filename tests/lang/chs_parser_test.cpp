@@ -70,6 +70,22 @@ const std::string kExample =
     "    track: curve to the east\n"                                              // 46
     "    aim: The First People's Hospital\n";                                     // 47
 
+// The grammar's two constraints (its "concrete syntax related cases"), a statement a line.
+const std::string kConstraints =
+    "ConstraintList\n"                                                                     // 48
+    "  constraint1 relate with forward_vehicle, current_vehicle\n"                         // 49
+    "    safety_protocol: (wiper = true) && (lighton = true) && (hazardlighton = true)\n"  // 50
+    "    event: when guard do action\n"                                                    // 51
+    "    action: position++\n"                                                             // 52
+    "    guard: first_car_parked == false || second_car_parked == false\n"                 // 53
+    "    probability: 0.2\n"                                                               // 54
+    "  constraint2 relate with currentvehicle, edge\n"                                     // 55
+    "    safety_protocol: ((dist > safedistance) = true) && (emergencybreak = false)\n"    // 56
+    "    event: when guard do action\n"                                                    // 57
+    "    action: parked = false\n"                                                         // 58
+    "    guard: wait > 5\n"                                                                // 59
+    "    probability: 0.8\n";                                                              // 60
+
 ParseResult parse_text(const std::string& text) { return parse(SourceFile("t.chs", text)); }
 
 std::string messages(const Diagnostics& diagnostics) {
@@ -154,6 +170,72 @@ TEST(ChsParser, ANamedMapWithoutSectionHeadersReadsTheSame) {
   EXPECT_EQ(file.static_entities[0].overview.text, "an old oak");
 }
 
+// An expression as text, fully bracketed: what the parser made of the precedence.
+std::string shown(const Expression& e) {
+  switch (e.kind) {
+    case Expression::Kind::name: return e.text;
+    case Expression::Kind::number: return std::to_string(static_cast<int>(e.number));
+    case Expression::Kind::boolean: return e.boolean ? "true" : "false";
+    case Expression::Kind::negation: return "!" + shown(e.operands[0]);
+    case Expression::Kind::binary:
+      return "(" + shown(e.operands[0]) + " " + e.text + " " + shown(e.operands[1]) + ")";
+  }
+  return "?";
+}
+
+TEST(ChsParser, TheGrammarsConstraintsGiveTheirProtocolsEventsAndProbabilities) {
+  ParseResult result = parse_text(kExample + kConstraints);
+  ASSERT_TRUE(result.file) << messages(result.diagnostics);
+  const std::vector<Constraint>& constraints = result.file->constraints;
+  ASSERT_EQ(constraints.size(), 2u);
+  const Constraint& first = constraints[0];
+  EXPECT_EQ(first.name.text, "constraint1");
+  ASSERT_EQ(first.related.size(), 2u);
+  EXPECT_EQ(first.related[1].text, "current_vehicle");
+  EXPECT_EQ(first.related[1].location.column, 44u);
+  ASSERT_EQ(first.safety_protocols.size(), 1u);
+  EXPECT_EQ(shown(first.safety_protocols[0]),
+            "(((wiper == true) && (lighton == true)) && (hazardlighton == true))");
+  ASSERT_EQ(first.events.size(), 1u);  // its guard and action on lines of their own
+  const Event& parked = first.events[0];
+  EXPECT_EQ(shown(parked.guard), "((first_car_parked == false) || (second_car_parked == false))");
+  ASSERT_EQ(parked.action.size(), 1u);
+  EXPECT_EQ(parked.action[0].kind, Statement::Kind::increment);
+  EXPECT_EQ(parked.action[0].target.text, "position");
+  EXPECT_EQ(parked.probability.value, 0.2);
+  const Constraint& second = constraints[1];
+  EXPECT_EQ(shown(second.safety_protocols[0]),
+            "(((dist > safedistance) == true) && (emergencybreak == false))");
+  ASSERT_EQ(second.events.size(), 1u);
+  EXPECT_EQ(shown(second.events[0].guard), "(wait > 5)");
+  ASSERT_EQ(second.events[0].action.size(), 1u);
+  EXPECT_EQ(second.events[0].action[0].kind, Statement::Kind::assign);
+  EXPECT_EQ(shown(second.events[0].action[0].value), "false");
+  EXPECT_EQ(second.events[0].probability.value, 0.8);
+}
+
+TEST(ChsParser, AnEventWrittenOnOneLineAndAListsOwnProtocol) {
+  ParseResult result =
+      parse_text(kExample +
+                 "ConstraintList\n"
+                 "  safety_protocol: not (speed > 60)\n"
+                 "  c1 relate with minibus\n"
+                 "    event: when wait > 5 and not parked do position++; speed = 3\n"
+                 "    event: when (a < 1 or b) do c--\n");
+  ASSERT_TRUE(result.file) << messages(result.diagnostics);
+  ASSERT_EQ(result.file->safety_protocols.size(), 1u);
+  EXPECT_EQ(shown(result.file->safety_protocols[0]), "!(speed > 60)");
+  const std::vector<Event>& events = result.file->constraints.at(0).events;
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(shown(events[0].guard), "((wait > 5) && !parked)");
+  ASSERT_EQ(events[0].action.size(), 2u);
+  EXPECT_EQ(events[0].action[1].target.text, "speed");
+  EXPECT_EQ(shown(events[0].action[1].value), "3");
+  EXPECT_EQ(events[0].probability.value, 1);  // fires whenever its guard holds
+  EXPECT_EQ(shown(events[1].guard), "((a < 1) || b)");
+  EXPECT_EQ(events[1].action.at(0).kind, Statement::Kind::decrement);
+}
+
 std::vector<MalformedCase> malformed_cases() {
   const std::string& b = kExample;
   return {
@@ -198,8 +280,34 @@ std::vector<MalformedCase> malformed_cases() {
        "points belong to a road's boundary or centre line"},
       {"line_that_is_nothing", replaced(b, "Weather\n", "Weather report\n"), 11, 1,
        "expected a section (such as 'Weather'), 'key: value' or a road's points"},
-      {"the_specification_module", b + "ConstraintList\n", 48, 1,
-       "the specification module (constraints, safety protocols, events) is not read yet"},
+      {"event_without_when", b + kConstraints + "    event: if wait > 5 do action\n", 61, 12,
+       "expected 'when' to start the event, found 'if'"},
+      {"guard_never_given",
+       b + "ConstraintList\n  c1 relate with minibus\n    event: when guard do position++\n", 50, 5,
+       "this event's guard is never given: add 'guard: ...'"},
+      {"probability_above_one", replaced(b + kConstraints, "probability: 0.8", "probability: 1.5"),
+       60, 18, "the probability must be from 0 to 1"},
+      {"probability_without_event",
+       b + "ConstraintList\n  c1 relate with minibus\n    probability: 0.5\n", 50, 5,
+       "a probability belongs to an event"},
+      {"action_with_a_bad_operator", replaced(b + kConstraints, "position++", "position+"), 52, 21,
+       "unexpected character '+'"},
+      {"unclosed_parenthesis",
+       replaced(b + kConstraints, "(hazardlighton = true)", "(hazardlighton = true"), 50, 81,
+       "expected ')' to close the '(', found the end of the line"},
+      {"constraint_without_name", replaced(b + kConstraints, "constraint1 relate", "relate"), 49, 3,
+       "expected the constraint's name before 'relate with'"},
+      {"relate_with_nobody",
+       replaced(b + kConstraints, "forward_vehicle, current_vehicle", "forward_vehicle,"), 49, 43,
+       "expected an entity's name after 'relate with'"},
+      {"constraint_named_twice",
+       replaced(b + kConstraints, "constraint2 relate", "constraint1 relate"), 55, 3,
+       "constraint constraint1 is described twice"},
+      {"guard_outside_a_constraint", b + "ConstraintList\n  guard: wait > 5\n", 49, 3,
+       "a guard belongs to a constraint"},
+      {"guard_with_a_dangling_operator",
+       replaced(b + kConstraints, "guard: wait > 5", "guard: wait >"), 59, 18,
+       "expected a name, a number, true, false or '(', found the end of the line"},
       {"road_network_on_a_named_map",
        replaced(b, "import from MAP\n  length: 400\n  width: 50\n", "map: san_francisco\n"), 4, 3,
        "a road network is laid on a blank map ('import from MAP') only"},
