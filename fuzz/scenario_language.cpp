@@ -4,6 +4,7 @@
 
 #include "lang/avunit/avunit.hpp"
 #include "lang/avunit/scenario_choice.hpp"
+#include "lang/chs/parser.hpp"
 #include "lang/wmg/wmg.hpp"
 
 namespace scenfuzz {
@@ -12,7 +13,38 @@ bool is_wmg_file(const std::string& path) {
   return std::filesystem::path(path).extension() == ".sdl";
 }
 
+namespace {
+
+std::string extension_of(const std::string& path) {
+  return std::filesystem::path(path).extension().string();
+}
+
+// CH-Scenario is read but not yet translated (docs/ch-scenario.md): its mistakes are reported,
+// and a file without one is an error too, so that no command takes it for a scenario.
+ScenarioParse not_yet_simulated(const SourceFile& file) {
+  ScenarioParse result;
+  if (extension_of(file.path()) == ".acc") {
+    result.diagnostics.error({1, 1, 0, 0},
+                             "scenfuzz does not read the accident formalism "
+                             "(.acc) yet");
+    return result;
+  }
+  chs::ParseResult parsed = chs::parse(file);
+  result.diagnostics = std::move(parsed.diagnostics);
+  if (parsed.file)
+    result.diagnostics.error({1, 1, 0, 0},
+                             "this CH-Scenario file reads without a mistake, but "
+                             "scenfuzz cannot simulate CH-Scenario yet "
+                             "(docs/ch-scenario.md)");
+  return result;
+}
+
+}  // namespace
+
 ScenarioParse parse_scenario_file(const SourceFile& file, const avunit::ParseOptions& choice) {
+  if (const std::string extension = extension_of(file.path());
+      extension == ".chs" || extension == ".acc")
+    return not_yet_simulated(file);
   if (is_wmg_file(file.path())) {
     wmg::ParseResult parsed = wmg::parse(file);
     ScenarioParse result{std::move(parsed.scenario), std::move(parsed.diagnostics), {}};

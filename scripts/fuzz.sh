@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzz the front ends with libFuzzer, each for SECONDS (default 60): build avunit_fuzzer (AVUnit,
-# scenest) and wmg_fuzzer (WMG SDL levels 1 and 2) with preset `fuzz` (clang, ASan + UBSan, in
-# build/fuzz); for each, re-run every saved regression input, then fuzz from a fresh corpus
+# scenest), wmg_fuzzer (WMG SDL levels 1 and 2) and chs_fuzzer (CH-Scenario) with preset `fuzz`
+# (clang, ASan + UBSan, in build/fuzz); for each, re-run every saved regression input, then fuzz from a fresh corpus
 # seeded with the project's scenario files. Exits non-zero on any crash, leak, timeout,
 # out-of-memory or printer round-trip mismatch.
 set -euo pipefail
@@ -86,3 +86,6 @@ fuzz_one avunit_fuzzer avunit.dict tests/fuzz/regressions "$root/build/fuzz/fuzz
 
 fuzz_one wmg_fuzzer wmg.dict tests/fuzz/regressions-wmg "$root/build/fuzz/wmg-fuzz.log" \
   "$root/build/fuzz/artifacts/wmg" corpora/wmg tests/lang/data/wmg
+
+fuzz_one chs_fuzzer chs.dict tests/fuzz/regressions-chs "$root/build/fuzz/chs-fuzz.log" \
+  "$root/build/fuzz/artifacts/chs" tests/lang/data/chs

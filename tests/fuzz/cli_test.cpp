@@ -113,6 +113,27 @@ TEST_F(CliTest, CheckReportsErrorsWithFileLineAndColumn) {
   EXPECT_NE(run.err.find("ego_init_state = (\"lane_39\"->);"), std::string::npos) << run.err;
 }
 
+// CH-Scenario and the accident formalism are not simulated yet: a clear error, never a file read
+// as AVUnit.
+TEST_F(CliTest, CheckSaysCHScenarioIsNotSimulatedYetAndReportsItsMistakes) {
+  const std::string good = write("good.chs", "map: san_francisco\ncloudiness: 0.5\n");
+  Outcome run = scenfuzz({"check", good});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("good.chs:1:1: error: this CH-Scenario file reads without a mistake, "
+                         "but scenfuzz cannot simulate CH-Scenario yet"),
+            std::string::npos)
+      << run.err;
+  const std::string bad = write("bad.chs", "map: san_francisco\ncloudiness: 5\n");
+  run = scenfuzz({"check", bad});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("bad.chs:2:13: error: the cloudiness must be from 0 to 1"),
+            std::string::npos)
+      << run.err;
+  run = scenfuzz({"check", write("crash.acc", "STATIC [ ROAD [ KIND = crossroad; ] ]")});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("does not read the accident formalism"), std::string::npos) << run.err;
+}
+
 TEST_F(CliTest, CheckGoesOnAfterAFailingFile) {
   const std::string bad = write("bad.avu", kBadScenario);
   const std::string missing = (dir_ / "missing.avu").string();

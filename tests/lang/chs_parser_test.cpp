@@ -11,6 +11,7 @@
 #include "lang/chs/parser.hpp"
 #include "lang/source_file.hpp"
 #include "tests/lang/malformed_harness.hpp"
+#include "tests/lang/test_files.hpp"
 
 namespace scenfuzz::chs {
 namespace {
@@ -141,6 +142,17 @@ TEST(ChsParser, TheGrammarsWorkedExampleGivesEveryValueAtItsPlace) {
   EXPECT_EQ(minibus.acceleration.value, 0);
   EXPECT_EQ(minibus.track.text, "curve to the east");
   EXPECT_EQ(minibus.aim.text, "The First People's Hospital");
+}
+
+// The fuzzer's seed (scripts/fuzz.sh) is the example and the grammar's constraints: it must read.
+TEST(ChsParser, TheFuzzersSeedFileReadsWithoutAMistake) {
+  const auto path = scenfuzz::test::lang_data_dir() / "chs" / "typhoon_minibus.chs";
+  std::optional<SourceFile> source = read_source_file(path.string());
+  ASSERT_TRUE(source) << path;
+  ParseResult result = parse(*source);
+  ASSERT_TRUE(result.file) << messages(result.diagnostics);
+  EXPECT_EQ(result.file->constraints.size(), 2u);
+  EXPECT_EQ(result.file->dynamic_entities.size(), 1u);
 }
 
 // The BNF's form: a named map, no section headers for the weather and the conditions, entities
