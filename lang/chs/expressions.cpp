@@ -119,25 +119,19 @@ class Reader {
     return e;
   }
 
-  Expression either() {
+  // `next` joined by the operator `symbol` (or its word), to the left.
+  Expression chain(Expression (Reader::*next)(), std::string_view symbol, std::string_view word) {
     const Token first = peek();
-    Expression left = both();
-    while (!failed_ && (at_symbol("||") || at_word("or"))) {
+    Expression left = (this->*next)();
+    while (!failed_ && (at_symbol(symbol) || at_word(word))) {
       take();
-      left = binary("||", std::move(left), both(), first);
+      left = binary(std::string(symbol), std::move(left), (this->*next)(), first);
     }
     return left;
   }
 
-  Expression both() {
-    const Token first = peek();
-    Expression left = negation();
-    while (!failed_ && (at_symbol("&&") || at_word("and"))) {
-      take();
-      left = binary("&&", std::move(left), negation(), first);
-    }
-    return left;
-  }
+  Expression either() { return chain(&Reader::both, "||", "or"); }
+  Expression both() { return chain(&Reader::negation, "&&", "and"); }
 
   Expression negation() {
     const Token first = peek();
