@@ -52,9 +52,7 @@ class Parser {
     if (read_header(line, key)) return;
     if (key == "importfrommap") return start_blank_map(line);
     if (section_ == Section::constraints && constraints_.read_start(line)) return;
-    if (section_ == Section::road_network && key.starts_with("road") &&
-        line.text.find(':') == std::string_view::npos)
-      return start_road(line);
+    if (section_ == Section::road_network && starts_road(line.text)) return start_road(line);
     if (line.text.front() == '(') return more_points(line);
     const std::size_t colon = line.text.find(':');
     if (colon == std::string_view::npos)
@@ -101,7 +99,13 @@ class Parser {
     keys_.clear();
   }
 
-  // `road NAME`, `road → name NAME` or `road -> name NAME`.
+  // The word `road` (any case) and a blank, on a line without a colon.
+  static bool starts_road(std::string_view text) {
+    return text.size() > 4 && normalised(text.substr(0, 4)) == "road" &&
+           (text[4] == ' ' || text[4] == '\t') && text.find(':') == std::string_view::npos;
+  }
+
+  // `road NAME`, `road → name NAME` or `road -> name NAME`; a name is one word.
   void start_road(const Line& line) {
     std::size_t at = 4;
     auto skip = [&](std::string_view word) {
@@ -113,7 +117,8 @@ class Parser {
     skip("name");
     while (at < line.text.size() && line.text[at] == ' ') ++at;
     const std::string_view name = trimmed(line.text.substr(at));
-    if (name.empty()) return error(line.whole(), "expected the road's name after 'road'");
+    if (name.empty() || name.find_first_of(" \t") != std::string_view::npos)
+      return error(line.at(at, name.size()), "expected the road's name, one word, after 'road'");
     Road road;
     road.name = {std::string(name), line.at(at, name.size())};
     road.location = line.whole();

@@ -325,8 +325,10 @@ std::vector<MalformedCase> malformed_cases() {
        "a road network is laid on a blank map ('import from MAP') only"},
       {"map_given_twice", replaced(b, "  width: 50\n", "  width: 50\nmap: san_francisco\n"), 5, 1,
        "the map is given twice"},
-      {"road_without_a_name", replaced(b, "road → name narrow_road", "road →"), 6, 3,
-       "expected the road's name after 'road'"},
+      {"road_without_a_name", replaced(b, "road → name narrow_road", "road →"), 6, 9,
+       "expected the road's name, one word, after 'road'"},
+      {"road_name_of_two_words", replaced(b, "road → name narrow_road", "road → name narrow road"),
+       6, 15, "expected the road's name, one word, after 'road'"},
       {"empty_text", replaced(b, "track: curve to the east", "track:"), 46, 11,
        "expected the entity's track after the colon"},
   };
