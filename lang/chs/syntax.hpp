@@ -1,7 +1,8 @@
 // CH-Scenario (.chs) as written: the scenario entity module (map, road network, weather, natural
 // disasters, special high-risk conditions, entities) and the specification module (safety
-// protocols, constraints and their events), each value with where it was written.
-// docs/ch-scenario.md gives the layout accepted and why; nothing here is interpreted yet.
+// protocols, constraints and their events), each value with where it was written (trees compare
+// equal wherever their values were written). docs/ch-scenario.md gives the layout accepted and
+// why; nothing here is interpreted yet.
 #pragma once
 
 #include <string>
@@ -14,21 +15,29 @@ namespace scenfuzz::chs {
 struct Number {
   double value = 0;
   SourceLocation location;  // unknown when the file does not give it (the default holds)
+
+  bool operator==(const Number&) const = default;
 };
 
 struct Flag {
   bool value = false;
   SourceLocation location;
+
+  bool operator==(const Flag&) const = default;
 };
 
 struct Text {
   std::string text;
   SourceLocation location;
+
+  bool operator==(const Text&) const = default;
 };
 
 struct Point {
   double x = 0, y = 0;
   SourceLocation location;
+
+  bool operator==(const Point&) const = default;
 };
 
 // `map: NAME` names a map (an Apollo map or a built-in one); `import from MAP` with a length and
@@ -39,6 +48,8 @@ struct MapSource {
   Text name;             // named
   Number length, width;  // blank, m
   SourceLocation location;
+
+  bool operator==(const MapSource&) const = default;
 };
 
 // A road by its boundary and centre polylines, in the order written (the driving direction).
@@ -46,28 +57,38 @@ struct Road {
   Text name;
   std::vector<Point> left_boundary, centre_lines, right_boundary;
   SourceLocation location;
+
+  bool operator==(const Road&) const = default;
 };
 
 // Each in [0, 1] except the air pressure (in atmospheres, > 0): defaults are a clear, dry day.
 struct Weather {
   Number cloudiness, wetness, air_pressure{1, {}}, precipitation, wind_intensity, visibility{1, {}};
   SourceLocation location;
+
+  bool operator==(const Weather&) const = default;
 };
 
 struct NaturalDisaster {
   Flag rainstorm, sandstorm, typhoon, tornado;  // meteorological
   Flag debris_flow, landslide, collapse;        // geological
   SourceLocation location;
+
+  bool operator==(const NaturalDisaster&) const = default;
 };
 
 struct SpecialHighRisk {
   Flag rough, ice_road, steep_descent_ahead, muddy, wade;
   SourceLocation location;
+
+  bool operator==(const SpecialHighRisk&) const = default;
 };
 
 struct StaticEntity {
   Text name, overview;
   SourceLocation location;
+
+  bool operator==(const StaticEntity&) const = default;
 };
 
 struct DynamicEntity {
@@ -75,6 +96,8 @@ struct DynamicEntity {
   Number speed, acceleration;  // km/h as the grammar's example (45.0 for a minibus), m/s^2
   Text track, aim;             // free text: a direction or manoeuvre, a destination
   SourceLocation location;
+
+  bool operator==(const DynamicEntity&) const = default;
 };
 
 // A guard or a safety protocol's predicate: `(wiper = true) && (dist > safedistance)`. In a
@@ -87,6 +110,8 @@ struct Expression {
   bool boolean = false;
   std::vector<Expression> operands;  // negation: one; binary: two
   SourceLocation location;
+
+  bool operator==(const Expression&) const = default;
 };
 
 // An action's statement: `position++`, `speed--`, `parked = false`.
@@ -96,6 +121,8 @@ struct Statement {
   Text target;
   Expression value;  // assign
   SourceLocation location;
+
+  bool operator==(const Statement&) const = default;
 };
 
 // `event: when GUARD do ACTION`, with the probability that it fires when its guard holds.
@@ -104,6 +131,8 @@ struct Event {
   std::vector<Statement> action;
   Number probability{1, {}};
   SourceLocation location;
+
+  bool operator==(const Event&) const = default;
 };
 
 struct Constraint {
@@ -112,6 +141,8 @@ struct Constraint {
   std::vector<Expression> safety_protocols;
   std::vector<Event> events;
   SourceLocation location;
+
+  bool operator==(const Constraint&) const = default;
 };
 
 struct File {
@@ -124,6 +155,8 @@ struct File {
   std::vector<DynamicEntity> dynamic_entities;
   std::vector<Expression> safety_protocols;  // of the whole constraint list
   std::vector<Constraint> constraints;
+
+  bool operator==(const File&) const = default;
 };
 
 }  // namespace scenfuzz::chs

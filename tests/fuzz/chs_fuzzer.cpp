@@ -1,6 +1,7 @@
 // libFuzzer harness for the CH-Scenario front end. For any input bytes: parsing and formatting
 // the diagnostics must not crash, leak or hang; a parse gives a file exactly when it reports no
-// error; every diagnostic and every located value lies within the input.
+// error; every diagnostic and every located value lies within the input; a file that parses
+// prints to text that parses, without a diagnostic, to an equal tree.
 // Built by scripts/fuzz.sh (SCENFUZZ_FUZZ=ON, clang, ASan + UBSan).
 #include <cstddef>
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <string>
 
 #include "lang/chs/parser.hpp"
+#include "lang/chs/printer.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/source_file.hpp"
 
@@ -42,6 +44,21 @@ void expect_values_within(const SourceFile& source, const chs::File& file) {
     }
 }
 
+void expect_prints_back(const chs::File& file) {
+  const SourceFile printed("printed.chs", chs::print(file));
+  const chs::ParseResult reparsed = chs::parse(printed);
+  if (!reparsed.file || !reparsed.diagnostics.all().empty()) {
+    std::fprintf(stderr, "print(file) does not parse cleanly:\n%s\n--- printed ---\n%s\n",
+                 format_diagnostics(printed, reparsed.diagnostics).c_str(), printed.text().c_str());
+    __builtin_trap();
+  }
+  if (!(*reparsed.file == file)) {
+    std::fprintf(stderr, "parse(print(file)) != file\n--- printed ---\n%s\n",
+                 printed.text().c_str());
+    __builtin_trap();
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -51,11 +68,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const Diagnostic& diagnostic : result.diagnostics.all())
     expect_within(source, diagnostic.location, "a diagnostic");
   if (result.file.has_value() == result.diagnostics.has_errors()) {
-    std::fprintf(stderr, "a parse %s a file but %s errors\n",
-                 result.file ? "gave" : "did not give",
+    std::fprintf(stderr, "a parse %s a file but %s errors\n", result.file ? "gave" : "did not give",
                  result.diagnostics.has_errors() ? "reported" : "reported no");
     __builtin_trap();
   }
-  if (result.file) expect_values_within(source, *result.file);
+  if (result.file) {
+    expect_values_within(source, *result.file);
+    expect_prints_back(*result.file);
+  }
   return 0;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lang/chs/parser.hpp"
+#include "lang/chs/printer.hpp"
 #include "lang/source_file.hpp"
 #include "tests/lang/malformed_harness.hpp"
 #include "tests/lang/test_files.hpp"
@@ -153,6 +154,25 @@ TEST(ChsParser, TheFuzzersSeedFileReadsWithoutAMistake) {
   ASSERT_TRUE(result.file) << messages(result.diagnostics);
   EXPECT_EQ(result.file->constraints.size(), 2u);
   EXPECT_EQ(result.file->dynamic_entities.size(), 1u);
+}
+
+// What the printer writes reads back as the same tree, and prints the same again.
+TEST(ChsPrinter, TheExamplePrintsBackToTheSameTree) {
+  ParseResult first = parse_text(kExample + kConstraints);
+  ASSERT_TRUE(first.file) << messages(first.diagnostics);
+  const std::string printed = print(*first.file);
+  ParseResult again = parse_text(printed);
+  ASSERT_TRUE(again.file) << messages(again.diagnostics) << printed;
+  EXPECT_TRUE(*again.file == *first.file) << printed;
+  EXPECT_EQ(print(*again.file), printed);
+  EXPECT_THAT(printed, ::testing::HasSubstr("  road → name narrow_road\n"
+                                            "    left boundary: (0, 50) (400, 50)\n"));
+  EXPECT_THAT(printed, ::testing::HasSubstr("    guard: ((first_car_parked) == (false)) || "
+                                            "((second_car_parked) == (false))\n"));
+  // A changed value is a different tree.
+  File changed = *first.file;
+  changed.dynamic_entities[0].speed.value = 50;
+  EXPECT_FALSE(changed == *first.file);
 }
 
 // The BNF's form: a named map, no section headers for the weather and the conditions, entities
