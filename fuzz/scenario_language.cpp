@@ -4,7 +4,7 @@
 
 #include "lang/avunit/avunit.hpp"
 #include "lang/avunit/scenario_choice.hpp"
-#include "lang/chs/parser.hpp"
+#include "lang/chs/chs.hpp"
 #include "lang/wmg/wmg.hpp"
 
 namespace scenfuzz {
@@ -19,32 +19,26 @@ std::string extension_of(const std::string& path) {
   return std::filesystem::path(path).extension().string();
 }
 
-// CH-Scenario is read but not yet translated (docs/ch-scenario.md): its mistakes are reported,
-// and a file without one is an error too, so that no command takes it for a scenario.
-ScenarioParse not_yet_simulated(const SourceFile& file) {
+bool is_chs_file(const std::string& path) { return extension_of(path) == ".chs"; }
+
+// The accident formalism is not read yet: an error, so that no command takes it for AVUnit.
+ScenarioParse accident_not_read() {
   ScenarioParse result;
-  if (extension_of(file.path()) == ".acc") {
-    result.diagnostics.error({1, 1, 0, 0},
-                             "scenfuzz does not read the accident formalism "
-                             "(.acc) yet");
-    return result;
-  }
-  chs::ParseResult parsed = chs::parse(file);
-  result.diagnostics = std::move(parsed.diagnostics);
-  if (parsed.file)
-    result.diagnostics.error({1, 1, 0, 0},
-                             "this CH-Scenario file reads without a mistake, but "
-                             "scenfuzz cannot simulate CH-Scenario yet "
-                             "(docs/ch-scenario.md)");
+  result.diagnostics.error({1, 1, 0, 0},
+                           "scenfuzz does not read the accident formalism (.acc) yet");
   return result;
 }
 
 }  // namespace
 
 ScenarioParse parse_scenario_file(const SourceFile& file, const avunit::ParseOptions& choice) {
-  if (const std::string extension = extension_of(file.path());
-      extension == ".chs" || extension == ".acc")
-    return not_yet_simulated(file);
+  if (extension_of(file.path()) == ".acc") return accident_not_read();
+  if (is_chs_file(file.path())) {
+    chs::ScenarioParse parsed = chs::parse_scenario(file);
+    ScenarioParse result{std::move(parsed.scenario), std::move(parsed.diagnostics), {}};
+    result.scenarios.push_back(result.scenario.scenario_name);
+    return result;
+  }
   if (is_wmg_file(file.path())) {
     wmg::ParseResult parsed = wmg::parse(file);
     ScenarioParse result{std::move(parsed.scenario), std::move(parsed.diagnostics), {}};
@@ -64,12 +58,16 @@ ScenarioParse parse_scenario_file(const SourceFile& file, const avunit::ParseOpt
 std::string print_concrete_scenario(const SourceFile& file, const ScenarioTemplate& scenario,
                                     std::span<const double> parameter_values) {
   if (is_wmg_file(file.path())) return wmg::print_concrete(file, scenario, parameter_values);
+  if (is_chs_file(file.path())) return chs::print_concrete(file, scenario, parameter_values);
   return avunit::print_concrete(file, scenario, parameter_values);
 }
 
-std::string comment_prefix(const std::string& path) { return is_wmg_file(path) ? "# " : "// "; }
+std::string comment_prefix(const std::string& path) {
+  return is_wmg_file(path) || is_chs_file(path) ? "# " : "// ";
+}
 
 std::string concrete_extension(const std::string& path) {
+  if (is_chs_file(path)) return ".chs";
   return is_wmg_file(path) ? ".sdl" : ".avu";
 }
 

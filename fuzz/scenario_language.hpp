@@ -1,5 +1,6 @@
-// Which front end reads a scenario file, by its extension: WMG SDL for `.sdl`, AVUnit (which also
-// reads scenest) for everything else; and how a concrete scenario is written back in that language.
+// Which front end reads a scenario file, by its extension: WMG SDL for `.sdl`, CH-Scenario for
+// `.chs`, AVUnit (which also reads scenest) for everything else; and how a concrete scenario is
+// written back in that language.
 #pragma once
 
 #include <span>
@@ -30,10 +31,11 @@ ScenarioParse parse_scenario_file(const SourceFile& file, const avunit::ParseOpt
 std::string print_concrete_scenario(const SourceFile& file, const ScenarioTemplate& scenario,
                                     std::span<const double> parameter_values);
 
-// What starts a comment line in the file's language: "# " for WMG SDL, "// " for AVUnit.
+// What starts a comment line in the file's language: "# " for WMG SDL and CH-Scenario, "// " for
+// AVUnit.
 std::string comment_prefix(const std::string& path);
 
-// The extension a concrete scenario of `path` is written with: `.sdl` or `.avu`.
+// The extension a concrete scenario of `path` is written with: `.sdl`, `.chs` or `.avu`.
 std::string concrete_extension(const std::string& path);
 
 }  // namespace scenfuzz

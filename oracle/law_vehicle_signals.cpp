@@ -25,14 +25,15 @@ constexpr std::array kLamps = {
     LampSignal{"highBeamOn", vehicle_signal::high_beam},
     LampSignal{"lowBeamOn", vehicle_signal::low_beam},
     LampSignal{"fogLightOn", vehicle_signal::fog_lights},
+    LampSignal{"wiperOn", vehicle_signal::wipers},  // CH-Scenario's `wiper`; not LawBreaker's
 };
 
 // The simulated ego's engine runs throughout a run, and no safety driver takes over from it.
 constexpr double kEngineOn = 1, kNoManualIntervention = 0;
 
-constexpr std::array<std::string_view, 8> kNames = {
-    "turnSignal", "hornOn",         "highBeamOn", "lowBeamOn",
-    "fogLightOn", "warningFlashOn", "engineOn",   "manualIntervention"};
+constexpr std::array<std::string_view, 9> kNames = {
+    "turnSignal",     "hornOn",   "highBeamOn",         "lowBeamOn", "fogLightOn",
+    "warningFlashOn", "engineOn", "manualIntervention", "wiperOn"};
 
 // Apollo's chassis reports both indicator lamps flashing as TURN_HAZARD_WARNING, whichever
 // switch lit them: so do we.

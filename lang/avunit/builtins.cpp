@@ -11,11 +11,12 @@ constexpr std::array kFunctions = {std::string_view("dis"), std::string_view("ve
                                    std::string_view("spd"), std::string_view("acc"),
                                    std::string_view("diff")};
 
-constexpr std::array<std::string_view, 17> kFlags = {"highBeamOn",
+constexpr std::array<std::string_view, 18> kFlags = {"highBeamOn",
                                                      "lowBeamOn",
                                                      "hornOn",
                                                      "fogLightOn",
                                                      "warningFlashOn",
+                                                     "wiperOn",
                                                      "engineOn",
                                                      "manualIntervention",
                                                      "isLaneChanging",

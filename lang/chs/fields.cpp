@@ -57,14 +57,15 @@ const std::array<FlagKey, 12> kFlags{{
 }};
 
 // Every key's spelling in the grammar, for suggestions.
-const std::array<std::string_view, 35> kSpellings{
+const std::array<std::string_view, 36> kSpellings{
     "map",          "length",       "width",         "name",           "left boundary",
     "centre lines", "center lines", "road lines",    "right boundary", "cloudiness",
     "wetness",      "air_pressure", "precipitation", "wind_intensity", "visibility",
     "rainstorm",    "sandstorm",    "typhoon",       "tornado",        "debrisflow",
     "landslide",    "collapse",     "rough",         "iceroad",        "steepdescentahead",
     "muddy",        "wade",         "overview",      "timestamp",      "speed",
-    "acceleration", "track",        "aim",           "centre line",    "center line"};
+    "acceleration", "track",        "aim",           "centre line",    "center line",
+    "position"};
 
 bool in_range(const Number& number, double low, double high) {
   return number.value >= low && number.value <= high;
@@ -168,12 +169,28 @@ std::vector<Point>* boundary_of(Road& road, const std::string& key) {
   return nullptr;
 }
 
+namespace {
+
+// One point, `(x, y)`: where an entity starts (scenfuzz's addition to the grammar).
+std::optional<Point> read_position(const Value& value, Diagnostics& diagnostics) {
+  std::vector<Point> points;
+  if (!read_points(value.line, value.begin, points, diagnostics)) return std::nullopt;
+  if (points.size() != 1) {
+    diagnostics.error(points[1].location, "an entity's position is one point, (x, y)");
+    return std::nullopt;
+  }
+  return points[0];
+}
+
+}  // namespace
+
 void read_entity_key(PendingEntity& entity, const std::string& key, SourceLocation key_at,
                      std::string_view written, const Value& value, Diagnostics& diagnostics) {
   const bool is_static_key = key == "overview";
   const bool is_dynamic_key = key == "timestamp" || key == "speed" || key == "acceleration" ||
                               key == "track" || key == "aim";
-  if (key != "name" && !is_static_key && !is_dynamic_key) {
+  const bool is_shared_key = key == "name" || key == "position";
+  if (!is_shared_key && !is_static_key && !is_dynamic_key) {
     diagnostics.error(key_at, unknown_key_message(written, key, "an entity"));
     return;
   }
@@ -196,6 +213,8 @@ void read_entity_key(PendingEntity& entity, const std::string& key, SourceLocati
       s.name = d.name = *text;
       entity.named = true;
     }
+  } else if (key == "position") {
+    if (auto point = read_position(value, diagnostics)) s.position = d.position = *point;
   } else if (key == "overview") {
     if (auto text = read_text(value, diagnostics, "the entity's overview")) s.overview = *text;
   } else if (key == "timestamp") {

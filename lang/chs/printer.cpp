@@ -106,6 +106,10 @@ class Printer {
     if (!value.text.empty()) field(indent, key, value.text);
   }
 
+  void position(const std::optional<Point>& point) {
+    if (point) field(2, "position", points({*point}));
+  }
+
   void entities(const File& file) {
     if (file.static_entities.empty() && file.dynamic_entities.empty()) return;
     line(0, "Entity");
@@ -114,6 +118,7 @@ class Printer {
       line(1, "StaticEntity" + std::to_string(++n));
       text(2, "name", e.name);
       text(2, "overview", e.overview);
+      position(e.position);
     }
     n = 0;
     for (const DynamicEntity& e : file.dynamic_entities) {
@@ -124,6 +129,7 @@ class Printer {
       field(2, "acceleration", number(e.acceleration.value));
       text(2, "track", e.track);
       text(2, "aim", e.aim);
+      position(e.position);
     }
   }
 

@@ -5,6 +5,7 @@
 // why; nothing here is interpreted yet.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,8 @@ struct Text {
 
 struct Point {
   double x = 0, y = 0;
-  SourceLocation location;
+  SourceLocation location;    // the whole `(x, y)`
+  SourceLocation x_at, y_at;  // each number's text: what a finding rewrites
 
   bool operator==(const Point&) const = default;
 };
@@ -84,8 +86,11 @@ struct SpecialHighRisk {
   bool operator==(const SpecialHighRisk&) const = default;
 };
 
+// `position: (x, y)` is scenfuzz's addition to both kinds of entity (docs/ch-scenario.md): where
+// it starts, on the map. Without it the translation places the entity by its words.
 struct StaticEntity {
   Text name, overview;
+  std::optional<Point> position;
   SourceLocation location;
 
   bool operator==(const StaticEntity&) const = default;
@@ -95,6 +100,7 @@ struct DynamicEntity {
   Text name, timestamp;
   Number speed, acceleration;  // km/h as the grammar's example (45.0 for a minibus), m/s^2
   Text track, aim;             // free text: a direction or manoeuvre, a destination
+  std::optional<Point> position;
   SourceLocation location;
 
   bool operator==(const DynamicEntity&) const = default;

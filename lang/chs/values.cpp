@@ -79,6 +79,7 @@ bool read_points(const Line& line, std::size_t begin, std::vector<Point>& points
     skip_blanks();
     auto x = number_at(text, at);
     if (!x) return fail("the point's x in metres");
+    const SourceLocation x_at = line.at(at, x->second);
     at += x->second;
     skip_blanks();
     if (at >= text.size() || text[at] != ',') return fail("',' between the point's x and y");
@@ -86,6 +87,7 @@ bool read_points(const Line& line, std::size_t begin, std::vector<Point>& points
     skip_blanks();
     auto y = number_at(text, at);
     if (!y) return fail("the point's y in metres");
+    const SourceLocation y_at = line.at(at, y->second);
     at += y->second;
     skip_blanks();
     if (at >= text.size() || text[at] != ')') return fail("')' to end the point");
@@ -95,7 +97,7 @@ bool read_points(const Line& line, std::size_t begin, std::vector<Point>& points
       diagnostics.error(where, "a point's coordinates must be finite numbers");
       return false;
     }
-    points.push_back({x->first, y->first, where});
+    points.push_back({x->first, y->first, where, x_at, y_at});
     skip_blanks();
     if (at < text.size() && text[at] == ',') ++at;
     skip_blanks();

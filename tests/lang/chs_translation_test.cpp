@@ -1,0 +1,337 @@
+// CH-Scenario to the scenario IR (docs/ch-scenario.md, "What a file means"): the grammar's worked
+// example value by value; which entity is the ego and where each entity starts when its position
+// is not written; the track words; weather, disasters and the time of day; safety protocols as
+// specs over the ego's signals, and their mistakes; a concrete scenario written back in the file's
+// own units.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "lang/chs/chs.hpp"
+#include "lang/chs/parser.hpp"
+#include "lang/source_file.hpp"
+#include "tests/lang/test_files.hpp"
+
+namespace scenfuzz::chs {
+namespace {
+
+using ::testing::HasSubstr;
+
+// A blank 400 m by 60 m map with one road running east, 7 m wide, then `rest`.
+std::string on_east_road(const std::string& rest) {
+  return "import from MAP\n  length: 400\n  width: 60\n"
+         "RoadNetwork\n  road east_road\n"
+         "    left boundary: (0, 37) (400, 37)\n"
+         "    center lines: (0, 30) (400, 30)\n"
+         "    right boundary: (0, 23) (400, 23)\n" +
+         rest;
+}
+
+ScenarioParse read(const std::string& text) {
+  return parse_scenario(SourceFile("test.chs", text));
+}
+
+// The text a located value was written as.
+std::string text_at(const std::string& text, SourceLocation at) {
+  EXPECT_TRUE(at.known());
+  return text.substr(at.offset, at.length);
+}
+
+std::string messages(const Diagnostics& diagnostics) {
+  return format_diagnostics(SourceFile("test.chs", ""), diagnostics);
+}
+
+const WeatherComponent* weather(const ScenarioTemplate& scenario, const std::string& kind) {
+  for (const WeatherComponent& component : scenario.environment->weather)
+    if (component.kind == kind) return &component;
+  return nullptr;
+}
+
+TEST(ChsTranslation, TheWorkedExample) {
+  const SourceFile file =
+      scenfuzz::test::load(scenfuzz::test::lang_data_dir() / "chs" / "typhoon_minibus.chs");
+  const ScenarioParse parsed = parse_scenario(file);
+  ASSERT_TRUE(parsed.ok()) << format_diagnostics(file, parsed.diagnostics);
+  const ScenarioTemplate& s = parsed.scenario;
+  EXPECT_EQ(s.language, SourceLanguage::ch_scenario);
+  EXPECT_TRUE(s.has_scenario);
+  EXPECT_TRUE(s.parameters.empty());
+  // The blank map with its one road, every point located at its numbers.
+  EXPECT_EQ(s.map.name, "blank");
+  ASSERT_EQ(s.map.roads.size(), 1u);
+  const RoadOutline& road = s.map.roads[0];
+  EXPECT_EQ(road.name, "narrow_road");
+  ASSERT_EQ(road.centre_line.size(), 2u);
+  EXPECT_EQ(road.centre_line[1].x.constant, 400);
+  EXPECT_EQ(text_at(file.text(), road.centre_line[1].y.location), "25.0");
+  // The minibus is the ego (the only vehicle), in the forward lane next to the centre line.
+  EXPECT_EQ(s.ego.name, "minibus");
+  ASSERT_TRUE(s.ego.type);
+  EXPECT_EQ(s.ego.type->model, "van");
+  EXPECT_EQ(s.ego.initial.position.kind, PositionKind::lane);
+  EXPECT_EQ(s.ego.initial.position.lane, "narrow_road_f0");
+  EXPECT_EQ(s.ego.initial.position.s.constant, 50);
+  ASSERT_TRUE(s.ego.initial.speed);
+  EXPECT_DOUBLE_EQ(s.ego.initial.speed->constant, 12.5);  // 45 km/h
+  EXPECT_EQ(text_at(file.text(), s.ego.initial.speed->location), "45.0");
+  // The little boy stands on the pavement on the ego's right, 60 m ahead.
+  ASSERT_EQ(s.pedestrians.size(), 1u);
+  const Actor& boy = s.pedestrians[0];
+  EXPECT_EQ(boy.name, "pedestrians");
+  EXPECT_EQ(boy.initial.position.kind, PositionKind::relative);
+  EXPECT_EQ(boy.initial.position.reference, "minibus");
+  EXPECT_EQ(boy.initial.position.relative_location, "FSR");
+  EXPECT_EQ(boy.initial.position.s.constant, 60);
+  EXPECT_EQ(boy.initial.speed->constant, 0);
+  // Weather: the written precipitation and visibility beat the typhoon's floors (0.9, 0.5).
+  const WeatherComponent* rain = weather(s, "rain");
+  ASSERT_NE(rain, nullptr);
+  EXPECT_EQ(rain->intensity.constant, 1.0);
+  EXPECT_EQ(text_at(file.text(), rain->intensity.location), "1.0");
+  const WeatherComponent* fog = weather(s, "fog");
+  ASSERT_NE(fog, nullptr);
+  EXPECT_DOUBLE_EQ(fog->intensity.constant, 0.6);
+  EXPECT_EQ(text_at(file.text(), fog->intensity.location), "0.4");
+  // 17:30:42 from the timestamp, located at its time alone.
+  ASSERT_TRUE(s.environment->time_of_day);
+  EXPECT_EQ(s.environment->time_of_day->constant, 17 * 3600 + 30 * 60 + 42);
+  EXPECT_EQ(text_at(file.text(), s.environment->time_of_day->location), "17:30:42");
+  // Two safety protocols, each judged throughout the run.
+  ASSERT_EQ(s.specs.size(), 2u);
+  EXPECT_EQ(s.specs[0].name, "constraint1.safety_protocol");
+  EXPECT_EQ(s.specs[1].name, "constraint2.safety_protocol");
+  for (const Spec& spec : s.specs) {
+    EXPECT_EQ(spec.trace, s.trace_name);
+    EXPECT_EQ(spec.formula.kind, FormulaKind::always);
+    EXPECT_FALSE(spec.formula.interval);
+  }
+  // (wiper = true) && (lighton = true) && (hazardlighton = true)
+  const Formula& lamps = s.specs[0].formula.operands[0];
+  ASSERT_EQ(lamps.kind, FormulaKind::conjunction);
+  EXPECT_EQ(lamps.operands[0].kind, FormulaKind::conjunction);
+  EXPECT_EQ(lamps.operands[0].operands[0].terms[0].name, "wiperOn");
+  EXPECT_EQ(lamps.operands[0].operands[1].kind, FormulaKind::disjunction);
+  EXPECT_EQ(lamps.operands[1].terms[0].name, "warningFlashOn");
+  // ((dist > safedistance) = true) && (emergencybreak = false)
+  const Formula& distance = s.specs[1].formula.operands[0];
+  ASSERT_EQ(distance.kind, FormulaKind::conjunction);
+  const Formula& gap = distance.operands[0];
+  ASSERT_EQ(gap.kind, FormulaKind::comparison);
+  EXPECT_EQ(gap.compare, CompareOp::greater);
+  EXPECT_EQ(gap.terms[0].name, "NPCAhead");
+  EXPECT_EQ(gap.terms[1].kind, TermKind::multiply);
+  ASSERT_EQ(distance.operands[1].kind, FormulaKind::negation);
+  EXPECT_EQ(distance.operands[1].operands[0].terms[0].name, "brake");
+  // What is not simulated is said: the aim, the traffic light, the two events.
+  const std::string said = format_diagnostics(file, parsed.diagnostics);
+  EXPECT_THAT(said, HasSubstr("the aim 'The First People's Hospital' is no road"));
+  EXPECT_THAT(said, HasSubstr("traffic lights are not simulated"));
+  EXPECT_THAT(said, HasSubstr("typhoon_minibus.chs:51:5: warning: scenfuzz does not simulate events"));
+}
+
+TEST(ChsTranslation, AnEntityNamedTheEgoIsTheEgoElseTheFirstVehicle) {
+  const std::string entities =
+      "Entity\n  DynamicEntity1\n    name: walker\n    speed: 5\n"
+      "  DynamicEntity2\n    name: lorry\n    speed: 50\n"
+      "  DynamicEntity3\n    name: ego\n    speed: 40\n";
+  ScenarioParse named = read(on_east_road(entities));
+  ASSERT_TRUE(named.ok()) << messages(named.diagnostics);
+  EXPECT_EQ(named.scenario.ego.name, "ego");
+  ASSERT_EQ(named.scenario.vehicles.size(), 1u);
+  EXPECT_EQ(named.scenario.vehicles[0].type->model, "truck");
+  ASSERT_EQ(named.scenario.pedestrians.size(), 1u);
+
+  ScenarioParse first = read(on_east_road(
+      "Entity\n  DynamicEntity1\n    name: walker\n    speed: 5\n"
+      "  DynamicEntity2\n    name: current_vehicle\n    speed: 50\n"));
+  ASSERT_TRUE(first.ok()) << messages(first.diagnostics);
+  EXPECT_EQ(first.scenario.ego.name, "current_vehicle");
+
+  ScenarioParse none =
+      read(on_east_road("Entity\n  DynamicEntity1\n    name: pedestrian\n    speed: 5\n"));
+  EXPECT_FALSE(none.ok());
+  EXPECT_THAT(messages(none.diagnostics), HasSubstr("no dynamic entity that is a vehicle"));
+}
+
+TEST(ChsTranslation, DefaultPlacesFollowTheTrackWords) {
+  const std::string entities =
+      "Entity\n"
+      "  DynamicEntity1\n    name: car\n    speed: 36\n    track: heading to the west\n"
+      "  DynamicEntity2\n    name: lead_bus\n    speed: 30\n    track: ahead\n"
+      "  DynamicEntity3\n    name: van\n    speed: 30\n    track: behind\n"
+      "  DynamicEntity4\n    name: truck\n    speed: 60\n    track: oncoming\n"
+      "  DynamicEntity5\n    name: boy\n    speed: 4\n    track: crossing the road\n";
+  const ScenarioParse parsed = read(on_east_road(entities));
+  ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  const ScenarioTemplate& s = parsed.scenario;
+  // West is against the point order: the ego drives the left half.
+  EXPECT_EQ(s.ego.initial.position.lane, "east_road_b0");
+  EXPECT_EQ(s.ego.initial.position.s.constant, 50);
+  ASSERT_EQ(s.vehicles.size(), 3u);
+  EXPECT_EQ(s.vehicles[0].initial.position.kind, PositionKind::relative);
+  EXPECT_EQ(s.vehicles[0].initial.position.relative_location, "F");
+  EXPECT_EQ(s.vehicles[0].initial.position.s.constant, 40);
+  EXPECT_EQ(s.vehicles[1].initial.position.relative_location, "R");
+  EXPECT_EQ(s.vehicles[1].initial.position.s.constant, -25);
+  // Oncoming: the other half, 150 m ahead of the ego (400 - 50 - 150 along its own lane).
+  EXPECT_EQ(s.vehicles[2].initial.position.kind, PositionKind::lane);
+  EXPECT_EQ(s.vehicles[2].initial.position.lane, "east_road_f0");
+  EXPECT_EQ(s.vehicles[2].initial.position.s.constant, 200);
+  // The walker crosses from the pavement at its speed.
+  ASSERT_EQ(s.pedestrians.size(), 1u);
+  const Actor& boy = s.pedestrians[0];
+  EXPECT_EQ(boy.initial.position.relative_location, "FSR");
+  ASSERT_EQ(boy.motion.kind, MotionKind::manoeuvres);
+  ASSERT_EQ(boy.motion.phases.size(), 1u);
+  EXPECT_EQ(boy.motion.phases[0].manoeuvre, "Walk_Cross");
+  EXPECT_DOUBLE_EQ(boy.motion.phases[0].parameters[0].value.constant, 4 / 3.6);
+}
+
+TEST(ChsTranslation, WordsNotReadAreWarnedOf) {
+  const ScenarioParse parsed = read(on_east_road(
+      "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n"
+      "    track: zigzag merrily to the east\n"
+      "  DynamicEntity2\n    name: bus\n    speed: 36\n    track: change lane left\n"
+      "  StaticEntity1\n    name: thing\n    overview: something odd\n"));
+  ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  const std::string said = messages(parsed.diagnostics);
+  EXPECT_THAT(said, HasSubstr("does not read 'zigzag', 'merrily' in a track"));
+  EXPECT_THAT(said, HasSubstr("lane changes, overtaking and turns in a track are not simulated"));
+  EXPECT_THAT(said, HasSubstr("cannot tell what 'thing' is"));
+  EXPECT_EQ(parsed.scenario.ego.initial.position.lane, "east_road_f0");
+}
+
+TEST(ChsTranslation, AWrittenPositionIsACoordinateLocatedAtItsNumbers) {
+  const std::string text = on_east_road(
+      "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n    position: (12.5, 27)\n"
+      "  StaticEntity1\n    name: rock\n    overview: a fallen boulder\n"
+      "    position: (150, 28.5)\n");
+  const ScenarioParse parsed = read(text);
+  ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  const Position& ego = parsed.scenario.ego.initial.position;
+  EXPECT_EQ(ego.kind, PositionKind::coordinate);
+  EXPECT_EQ(text_at(text, ego.x.location), "12.5");
+  EXPECT_EQ(text_at(text, ego.y.location), "27");
+  ASSERT_EQ(parsed.scenario.obstacles.size(), 1u);
+  EXPECT_EQ(parsed.scenario.obstacles[0].position.x.constant, 150);
+  EXPECT_EQ(parsed.scenario.obstacles[0].shape->kind, ShapeKind::box);
+}
+
+TEST(ChsTranslation, ANamedMapNeedsTheEgosPosition) {
+  const ScenarioParse without =
+      read("map: san_francisco\nEntity\n  DynamicEntity1\n    name: car\n    speed: 36\n");
+  EXPECT_FALSE(without.ok());
+  EXPECT_THAT(messages(without.diagnostics),
+              HasSubstr("test.chs:3:3: error: on the named map 'san_francisco', car (the ego) "
+                        "needs a 'position: (x, y)'"));
+  const ScenarioParse with = read(
+      "map: san_francisco\nEntity\n  DynamicEntity1\n    name: car\n    speed: 36\n"
+      "    position: (587000, 4141000)\n");
+  ASSERT_TRUE(with.ok()) << messages(with.diagnostics);
+  EXPECT_EQ(with.scenario.map.name, "san_francisco");
+  EXPECT_TRUE(with.scenario.map.roads.empty());
+}
+
+TEST(ChsTranslation, ARoadOffTheBlankMapIsAnError) {
+  const ScenarioParse parsed = read(
+      "import from MAP\n  length: 100\n  width: 50\n"
+      "RoadNetwork\n  road r\n    left boundary: (0, 10) (120, 10)\n"
+      "    center lines: (0, 5) (100, 5)\n    right boundary: (0, 0) (100, 0)\n"
+      "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n");
+  EXPECT_FALSE(parsed.ok());
+  EXPECT_THAT(messages(parsed.diagnostics),
+              HasSubstr("test.chs:6:28: error: this point of road r lies off the map"));
+}
+
+TEST(ChsTranslation, DisastersBlockTheLaneAndDarkenTheSky) {
+  const ScenarioParse parsed = read(on_east_road(
+      "sandstorm: 1\nlandslide: 1\nvisibility: 0.8\n"
+      "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n"));
+  ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  const ScenarioTemplate& s = parsed.scenario;
+  // The sandstorm's fog (0.9) beats the written visibility's (0.2): the number is not mutable.
+  const WeatherComponent* fog = weather(s, "fog");
+  ASSERT_NE(fog, nullptr);
+  EXPECT_EQ(fog->intensity.constant, 0.9);
+  EXPECT_FALSE(fog->intensity.location.known());
+  ASSERT_EQ(s.obstacles.size(), 1u);
+  const Obstacle& landslide = s.obstacles[0];
+  EXPECT_EQ(landslide.name, "landslide");
+  EXPECT_EQ(landslide.position.kind, PositionKind::relative);
+  EXPECT_EQ(landslide.position.reference, "car");
+  EXPECT_EQ(landslide.position.s.constant, 120);
+  EXPECT_EQ(landslide.shape->dimensions[1].constant, 3.5);
+}
+
+struct ProtocolCase {
+  const char* protocol;
+  const char* error;  // empty: reads
+};
+
+TEST(ChsTranslation, SafetyProtocolMistakesAreLocated) {
+  const ProtocolCase cases[] = {
+      {"not (speed > 60)", ""},
+      {"(lighton != false) || (dist >= 10)", ""},
+      {"wiper", ""},
+      {"(wipers = 1)", "4:21: error: compare a condition with true or false"},
+      {"speed", "4:20: error: this is a number, where a condition is expected"},
+      {"(speed = true)", "4:21: error: this is a number, where a condition is expected"},
+      {"(warp > 3)", "4:21: error: scenfuzz knows no signal 'warp' of a safety protocol"},
+      {"true", "4:20: error: a constant true or false here decides nothing"},
+      {"(wiper < true)", "4:21: error: true and false are compared with = or != only"},
+  };
+  for (const ProtocolCase& c : cases) {
+    const std::string text = "ConstraintList\n  safety_protocol: " + std::string(c.protocol) + "\n";
+    const ScenarioParse parsed =
+        read(on_east_road("Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n") + text);
+    const std::string said = messages(parsed.diagnostics);
+    if (std::string(c.error).empty()) {
+      EXPECT_TRUE(parsed.ok()) << c.protocol << "\n" << said;
+      ASSERT_EQ(parsed.scenario.specs.size(), 1u) << c.protocol;
+      EXPECT_EQ(parsed.scenario.specs[0].name, "safety_protocol");
+    } else {
+      EXPECT_THAT(said, HasSubstr(std::string("test.chs:1") + c.error)) << c.protocol;
+    }
+  }
+}
+
+TEST(ChsTranslation, AConcreteScenarioIsWrittenInTheFilesOwnUnits) {
+  const std::string text = on_east_road(
+      "visibility: 0.7\n"
+      "Entity\n  DynamicEntity1\n    name: car\n    timestamp: 2022-01-30 17:30:42\n"
+      "    speed: 36\n    position: (12.5, 27)\n");
+  const SourceFile file("test.chs", text);
+  ScenarioParse parsed = parse_scenario(file);
+  ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  ScenarioTemplate& s = parsed.scenario;
+  // Parameters as the mutation space makes them: at the numbers' places, in the IR's units.
+  auto parameter = [&](const std::string& name, const std::string& unit, SourceLocation at) {
+    Parameter p;
+    p.name = name;
+    p.unit = unit;
+    p.location = at;
+    s.parameters.push_back(p);
+  };
+  parameter("car.init.speed", "m/s", s.ego.initial.speed->location);
+  parameter("car.init.position.x", "m", s.ego.initial.position.x.location);
+  parameter("environment.fog", "", weather(s, "fog")->intensity.location);
+  parameter("environment.time", "time of day", s.environment->time_of_day->location);
+  const std::vector<double> values = {15, 20.25, 0.5, 6 * 3600 + 5 * 60 + 9};
+  const std::string concrete = print_concrete(file, s, values);
+  EXPECT_THAT(concrete, HasSubstr("# concrete scenario of test.chs chosen by scenfuzz:\n"));
+  EXPECT_THAT(concrete, HasSubstr("#   car.init.speed = 15 m/s\n"));
+  // Written back: 15 m/s as 54 km/h, fog 0.5 as visibility 0.5, the time in the timestamp.
+  const ParseResult back = parse(SourceFile("concrete.chs", concrete));
+  ASSERT_TRUE(back.file) << format_diagnostics(SourceFile("concrete.chs", concrete),
+                                               back.diagnostics);
+  const DynamicEntity& car = back.file->dynamic_entities[0];
+  EXPECT_DOUBLE_EQ(car.speed.value, 54);
+  EXPECT_DOUBLE_EQ(car.position->x, 20.25);
+  EXPECT_EQ(car.timestamp.text, "2022-01-30 06:05:09");
+  EXPECT_DOUBLE_EQ(back.file->weather.visibility.value, 0.5);
+}
+
+}  // namespace
+}  // namespace scenfuzz::chs
