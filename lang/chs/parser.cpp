@@ -52,7 +52,12 @@ class Parser {
     if (read_header(line, key)) return;
     if (key == "importfrommap") return start_blank_map(line);
     if (section_ == Section::constraints && constraints_.read_start(line)) return;
-    if (section_ == Section::road_network && starts_road(line.text)) return start_road(line);
+    // A road line opens the road network, as the weather's keys open the weather.
+    if (section_ != Section::constraints && starts_road(line.text)) {
+      close_entity();
+      section_ = Section::road_network;
+      return start_road(line);
+    }
     if (line.text.front() == '(') return more_points(line);
     const std::size_t colon = line.text.find(':');
     if (colon == std::string_view::npos)
@@ -155,6 +160,8 @@ class Parser {
         break;
       default: break;
     }
+    if (boundary_of(probe_, key) != nullptr)
+      return error(key_at, "a boundary belongs to a road: start one with 'road NAME'");
     error(key_at, unknown_key_message(line.text.substr(0, colon), key, section_name()));
   }
 

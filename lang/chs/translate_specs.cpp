@@ -66,7 +66,7 @@ Formula negated(Formula a, SourceLocation at) {
 }
 
 // The share of full braking above which the ego brakes in an emergency (law signal `brake`).
-constexpr double kEmergencyBrake = 50;
+constexpr double kEmergencyBrake = 70;
 // The safe distance: what the ego drives in this many seconds (the two-second rule).
 constexpr double kSafeSeconds = 2;
 

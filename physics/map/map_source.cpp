@@ -1,4 +1,4 @@
-// Map names to maps: built-in generators, Apollo files and the map search path.
+// Map names to maps: built-in generators, Apollo files and the map search path; drawn roads.
 #include "physics/map/map_source.hpp"
 
 #include <cerrno>
@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "physics/map/apollo_map_reader.hpp"
+#include "physics/map/outline_map.hpp"
 
 namespace scenfuzz {
 
@@ -38,6 +39,24 @@ double parse_parameter_value(std::string_view map, std::string_view key, std::st
     throw MapError("map '" + std::string(map) + "': parameter '" + std::string(key) +
                    "' needs a number, not '" + std::string(text) + "'");
   return value;
+}
+
+std::vector<MapPoint> evaluated_points(const std::vector<Point>& points,
+                                       std::span<const double> parameter_values) {
+  std::vector<MapPoint> result;
+  for (const Point& point : points)
+    result.push_back({evaluate(point.x, parameter_values), evaluate(point.y, parameter_values)});
+  return result;
+}
+
+std::vector<RoadOutlineGeometry> evaluated_roads(const std::vector<RoadOutline>& roads,
+                                                 std::span<const double> parameter_values) {
+  std::vector<RoadOutlineGeometry> result;
+  for (const RoadOutline& road : roads)
+    result.push_back({road.name, evaluated_points(road.left_boundary, parameter_values),
+                      evaluated_points(road.centre_line, parameter_values),
+                      evaluated_points(road.right_boundary, parameter_values)});
+  return result;
 }
 
 }  // namespace
@@ -160,6 +179,10 @@ RoadMap load_map(std::string_view name, const MapSearchPath& search_path,
 
 RoadMap load_scenario_map(const MapReference& reference, const MapSearchPath& search_path,
                           std::span<const double> parameter_values) {
+  // A scenario that draws its roads (CH-Scenario) names a blank map: the roads are the map.
+  if (!reference.roads.empty())
+    return build_road_map(
+        describe_outline_map(reference.name, evaluated_roads(reference.roads, parameter_values)));
   std::vector<MapParameterValue> parameters;
   for (const NamedValue& parameter : reference.parameters)
     parameters.push_back({parameter.name, evaluate(parameter.value, parameter_values)});

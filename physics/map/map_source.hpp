@@ -5,6 +5,7 @@
 //     <dir>/san_francisco/base_map.bin (or .txt) for the first <dir> that has it.
 // The search path is the --map-path folders in order, then SCENFUZZ_MAP_PATH (folders separated
 // by ':'), then the repository's corpora/maps.
+// A scenario that draws its roads (CH-Scenario outlines) gets outline_map.hpp's lanes instead.
 #pragma once
 
 #include <filesystem>

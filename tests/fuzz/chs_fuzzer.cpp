@@ -1,13 +1,19 @@
 // libFuzzer harness for the CH-Scenario front end. For any input bytes: parsing and formatting
 // the diagnostics must not crash, leak or hang; a parse gives a file exactly when it reports no
 // error; every diagnostic and every located value lies within the input; a file that parses
-// prints to text that parses, without a diagnostic, to an equal tree.
+// prints to text that parses, without a diagnostic, to an equal tree; its translation into the
+// IR reports only diagnostics within the input, and its concrete scenario with the ego's speed
+// as a parameter reads back with that speed.
 // Built by scripts/fuzz.sh (SCENFUZZ_FUZZ=ON, clang, ASan + UBSan).
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <vector>
 
+#include "lang/chs/chs.hpp"
 #include "lang/chs/parser.hpp"
 #include "lang/chs/printer.hpp"
 #include "lang/diagnostic.hpp"
@@ -30,7 +36,11 @@ void expect_values_within(const SourceFile& source, const chs::File& file) {
   for (const chs::Road& road : file.roads) {
     expect_within(source, road.name.location, "a road's name");
     for (const auto* points : {&road.left_boundary, &road.centre_lines, &road.right_boundary})
-      for (const chs::Point& point : *points) expect_within(source, point.location, "a point");
+      for (const chs::Point& point : *points) {
+        expect_within(source, point.location, "a point");
+        expect_within(source, point.x_at, "a point's x");
+        expect_within(source, point.y_at, "a point's y");
+      }
   }
   for (const chs::DynamicEntity& entity : file.dynamic_entities) {
     expect_within(source, entity.name.location, "an entity's name");
@@ -59,6 +69,42 @@ void expect_prints_back(const chs::File& file) {
   }
 }
 
+// The translation locates its diagnostics in the input, and the ego's speed written back as a
+// concrete scenario's parameter (m/s in the IR, km/h in the file) reads back as written.
+void expect_translates(const SourceFile& source) {
+  const chs::ScenarioParse parsed = chs::parse_scenario(source);
+  for (const Diagnostic& diagnostic : parsed.diagnostics.all())
+    expect_within(source, diagnostic.location, "a translation diagnostic");
+  if (!parsed.ok()) return;
+  ScenarioTemplate scenario = parsed.scenario;
+  std::vector<double> values;
+  if (scenario.ego.initial.speed && scenario.ego.initial.speed->location.known()) {
+    Parameter speed;
+    speed.name = "ego.init.speed";
+    speed.unit = "m/s";
+    speed.location = scenario.ego.initial.speed->location;
+    scenario.parameters.push_back(speed);
+    values.push_back(scenario.ego.initial.speed->constant);
+  }
+  const std::string concrete = chs::print_concrete(source, scenario, values);
+  const chs::ParseResult reparsed = chs::parse(SourceFile("concrete.chs", concrete));
+  if (!reparsed.file) {
+    std::fprintf(stderr, "the concrete scenario does not parse:\n%s\n", concrete.c_str());
+    __builtin_trap();
+  }
+  const chs::ParseResult first = chs::parse(source);
+  const chs::File& original = *first.file;
+  for (std::size_t i = 0; i < original.dynamic_entities.size(); ++i) {
+    const double written = original.dynamic_entities[i].speed.value;
+    const double back = reparsed.file->dynamic_entities[i].speed.value;
+    if (std::abs(back - written) > 1e-9 * std::max(1.0, written)) {
+      std::fprintf(stderr, "a speed of %.17g km/h reads back as %.17g:\n%s\n", written, back,
+                   concrete.c_str());
+      __builtin_trap();
+    }
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -75,6 +121,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (result.file) {
     expect_values_within(source, *result.file);
     expect_prints_back(*result.file);
+    expect_translates(source);
   }
   return 0;
 }

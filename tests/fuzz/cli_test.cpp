@@ -115,12 +115,19 @@ TEST_F(CliTest, CheckReportsErrorsWithFileLineAndColumn) {
 
 // CH-Scenario and the accident formalism are not simulated yet: a clear error, never a file read
 // as AVUnit.
-TEST_F(CliTest, CheckSaysCHScenarioIsNotSimulatedYetAndReportsItsMistakes) {
-  const std::string good = write("good.chs", "map: san_francisco\ncloudiness: 0.5\n");
+TEST_F(CliTest, CheckReadsCHScenarioAndReportsItsMistakes) {
+  const std::string good = write("good.chs",
+                                 "import from MAP\n  length: 200\n  width: 20\n"
+                                 "road r\n  left boundary: (0, 17) (200, 17)\n"
+                                 "  centre line: (0, 10) (200, 10)\n"
+                                 "  right boundary: (0, 3) (200, 3)\n"
+                                 "Entity\n  DynamicEntity1\n    name: car\n    speed: 40\n");
   Outcome run = scenfuzz({"check", good});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const std::string no_ego = write("no_ego.chs", "map: san_francisco\ncloudiness: 0.5\n");
+  run = scenfuzz({"check", no_ego});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.err.find("good.chs:1:1: error: this CH-Scenario file reads without a mistake, "
-                         "but scenfuzz cannot simulate CH-Scenario yet"),
+  EXPECT_NE(run.err.find("no_ego.chs:1:1: error: the file has no dynamic entity that is a vehicle"),
             std::string::npos)
       << run.err;
   const std::string bad = write("bad.chs", "map: san_francisco\ncloudiness: 5\n");

@@ -202,6 +202,30 @@ TEST(ChsParser, ANamedMapWithoutSectionHeadersReadsTheSame) {
   EXPECT_EQ(file.static_entities[0].overview.text, "an old oak");
 }
 
+TEST(ChsParser, ARoadLineOpensTheRoadNetworkAndAnEntityMayHaveAPosition) {
+  ParseResult result = parse_text(
+      "import from MAP\n  length: 100\n  width: 20\n"
+      "road r\n  left boundary: (0, 17) (100, 17)\n  centre line: (0, 10) (100, 10)\n"
+      "  right boundary: (0, 3) (100, 3)\n"
+      "Entity\n  name: car\n  speed: 40\n  position: (5.5, 8)\n"
+      "  name: cone\n  overview: a traffic cone\n  position: (60, 9)\n");
+  ASSERT_TRUE(result.file) << messages(result.diagnostics);
+  ASSERT_EQ(result.file->roads.size(), 1u);
+  EXPECT_EQ(result.file->roads[0].right_boundary[1].y, 3);
+  ASSERT_TRUE(result.file->dynamic_entities[0].position);
+  const Point& car = *result.file->dynamic_entities[0].position;
+  EXPECT_EQ(car.x, 5.5);
+  EXPECT_EQ(car.x_at.column, 14u);
+  EXPECT_EQ(car.x_at.length, 3u);
+  EXPECT_EQ(car.y_at.column, 19u);
+  ASSERT_TRUE(result.file->static_entities[0].position);
+  EXPECT_EQ(result.file->static_entities[0].position->x, 60);
+  // The printer writes positions back.
+  const ParseResult back = parse_text(print(*result.file));
+  ASSERT_TRUE(back.file) << messages(back.diagnostics);
+  EXPECT_EQ(*back.file, *result.file);
+}
+
 // An expression as text, fully bracketed: what the parser made of the precedence.
 std::string shown(const Expression& e) {
   switch (e.kind) {
@@ -271,6 +295,14 @@ TEST(ChsParser, AnEventWrittenOnOneLineAndAListsOwnProtocol) {
 std::vector<MalformedCase> malformed_cases() {
   const std::string& b = kExample;
   return {
+      {"boundary_outside_a_road",
+       replaced(b, "Weather\n", "Weather\n  left boundary: (0, 1) (2, 1)\n"), 12, 3,
+       "a boundary belongs to a road: start one with 'road NAME'"},
+      {"position_of_two_points",
+       replaced(b, "speed: 45.0\n", "speed: 45.0\n    position: (1, 2) (3, 4)\n"), 45, 22,
+       "an entity's position is one point, (x, y)"},
+      {"position_not_a_point", replaced(b, "speed: 45.0\n", "speed: 45.0\n    position: 12\n"), 45,
+       15, "expected '(' to start a point such as (0.0, 25.0), found '1'"},
       {"misspelt_key", replaced(b, "acceleration: 0.0", "acceleratiobn: 0.0"), 45, 5,
        "unknown key 'acceleratiobn' in an entity; did you mean 'acceleration'?"},
       {"weather_out_of_range", replaced(b, "cloudiness: 1.0", "cloudiness: 1.5"), 12, 15,

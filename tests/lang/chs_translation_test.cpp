@@ -29,9 +29,7 @@ std::string on_east_road(const std::string& rest) {
          rest;
 }
 
-ScenarioParse read(const std::string& text) {
-  return parse_scenario(SourceFile("test.chs", text));
-}
+ScenarioParse read(const std::string& text) { return parse_scenario(SourceFile("test.chs", text)); }
 
 // The text a located value was written as.
 std::string text_at(const std::string& text, SourceLocation at) {
@@ -128,7 +126,8 @@ TEST(ChsTranslation, TheWorkedExample) {
   const std::string said = format_diagnostics(file, parsed.diagnostics);
   EXPECT_THAT(said, HasSubstr("the aim 'The First People's Hospital' is no road"));
   EXPECT_THAT(said, HasSubstr("traffic lights are not simulated"));
-  EXPECT_THAT(said, HasSubstr("typhoon_minibus.chs:51:5: warning: scenfuzz does not simulate events"));
+  EXPECT_THAT(said,
+              HasSubstr("typhoon_minibus.chs:51:5: warning: scenfuzz does not simulate events"));
 }
 
 TEST(ChsTranslation, AnEntityNamedTheEgoIsTheEgoElseTheFirstVehicle) {
@@ -143,9 +142,9 @@ TEST(ChsTranslation, AnEntityNamedTheEgoIsTheEgoElseTheFirstVehicle) {
   EXPECT_EQ(named.scenario.vehicles[0].type->model, "truck");
   ASSERT_EQ(named.scenario.pedestrians.size(), 1u);
 
-  ScenarioParse first = read(on_east_road(
-      "Entity\n  DynamicEntity1\n    name: walker\n    speed: 5\n"
-      "  DynamicEntity2\n    name: current_vehicle\n    speed: 50\n"));
+  ScenarioParse first =
+      read(on_east_road("Entity\n  DynamicEntity1\n    name: walker\n    speed: 5\n"
+                        "  DynamicEntity2\n    name: current_vehicle\n    speed: 50\n"));
   ASSERT_TRUE(first.ok()) << messages(first.diagnostics);
   EXPECT_EQ(first.scenario.ego.name, "current_vehicle");
 
@@ -190,11 +189,11 @@ TEST(ChsTranslation, DefaultPlacesFollowTheTrackWords) {
 }
 
 TEST(ChsTranslation, WordsNotReadAreWarnedOf) {
-  const ScenarioParse parsed = read(on_east_road(
-      "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n"
-      "    track: zigzag merrily to the east\n"
-      "  DynamicEntity2\n    name: bus\n    speed: 36\n    track: change lane left\n"
-      "  StaticEntity1\n    name: thing\n    overview: something odd\n"));
+  const ScenarioParse parsed = read(
+      on_east_road("Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n"
+                   "    track: zigzag merrily to the east\n"
+                   "  DynamicEntity2\n    name: bus\n    speed: 36\n    track: change lane left\n"
+                   "  StaticEntity1\n    name: thing\n    overview: something odd\n"));
   ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
   const std::string said = messages(parsed.diagnostics);
   EXPECT_THAT(said, HasSubstr("does not read 'zigzag', 'merrily' in a track"));
@@ -246,9 +245,9 @@ TEST(ChsTranslation, ARoadOffTheBlankMapIsAnError) {
 }
 
 TEST(ChsTranslation, DisastersBlockTheLaneAndDarkenTheSky) {
-  const ScenarioParse parsed = read(on_east_road(
-      "sandstorm: 1\nlandslide: 1\nvisibility: 0.8\n"
-      "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n"));
+  const ScenarioParse parsed =
+      read(on_east_road("sandstorm: 1\nlandslide: 1\nvisibility: 0.8\n"
+                        "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n"));
   ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
   const ScenarioTemplate& s = parsed.scenario;
   // The sandstorm's fog (0.9) beats the written visibility's (0.2): the number is not mutable.
