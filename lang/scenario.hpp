@@ -45,6 +45,7 @@ struct Point {
 struct RoadOutline {
   std::string name;
   std::vector<Point> left_boundary, centre_line, right_boundary;
+  std::optional<Value> speed_limit;  // m/s, every lane of the road; none: no limit
   SourceLocation location;
 
   bool operator==(const RoadOutline&) const = default;
@@ -173,6 +174,8 @@ struct WeatherComponent {
 struct Environment {
   std::optional<Value> time_of_day;  // seconds since midnight
   std::vector<WeatherComponent> weather;
+  // The road's grip as a share of dry asphalt's, in (0, 1]; none: dry (docs/simulation.md).
+  std::optional<Value> road_friction;
   std::vector<Attribute> attributes;
   SourceLocation location;
 

@@ -112,6 +112,7 @@ void walk_scenario(ScenarioTemplate& scenario, const Visit& visit) {
     walk_optional(scenario.environment->time_of_day, "environment.time", "time of day", visit);
     for (WeatherComponent& component : scenario.environment->weather)
       walk(component.intensity, "environment." + component.kind, "", visit);
+    walk_optional(scenario.environment->road_friction, "environment.road_friction", "", visit);
   }
   Traffic& traffic = scenario.traffic;
   for (SpeedLimit& limit : traffic.speed_limits) {

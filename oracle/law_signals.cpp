@@ -21,6 +21,7 @@
 #include "oracle/law_street_lights.hpp"
 #include "oracle/law_vehicle_signals.hpp"
 #include "physics/actors/actor_class.hpp"
+#include "physics/actors/road_friction.hpp"
 #include "physics/ego/perception.hpp"
 #include "physics/map/lane_route.hpp"
 #include "physics/trace/trace_footprint.hpp"
@@ -379,6 +380,14 @@ class SpeedLimits {
   std::vector<Limit> scenario_;
 };
 
+// The road's friction as the simulation took it (docs/simulation.md, "Road friction"); a value it
+// refused never reaches a trace, so anything but a friction here is a dry road.
+double road_friction(const ScenarioTemplate& scenario, std::span<const double> parameters) {
+  if (!scenario.environment || !scenario.environment->road_friction) return kDryRoad;
+  const double friction = evaluate(*scenario.environment->road_friction, parameters);
+  return is_road_friction(friction) ? friction : kDryRoad;
+}
+
 // How far the ego's perception sees vehicles (m) in the scenario's weather and light, as the
 // simulation degrades it from the default clear-weather range.
 double visibility(const ScenarioTemplate& scenario, std::span<const double> parameters,
@@ -588,7 +597,9 @@ SignalValues law_signal(const SpecTerm& term, const Trace& trace, const Scenario
     return numeric(std::vector<double>(count, visibility(scenario, parameters, term.location)));
   if (name == "gear") return discrete(std::vector<double>(count, kDriveGear));
   if (name == "brake") {
-    const double full_braking = actor_class(ego.category).max_deceleration;
+    // Full braking on this road: on ice the pedal is floored at a fraction of the dry limit.
+    const double full_braking =
+        on_road(actor_class(ego.category), road_friction(scenario, parameters)).max_deceleration;
     return numeric(each_sample(count, [&](std::size_t i) {
       return std::clamp(-ego.acceleration[i] / full_braking * 100, 0.0, 100.0);
     }));

@@ -57,6 +57,8 @@ class Deriver {
              0, kLastSecondOfDay);
     for (WeatherComponent& component : environment.weather)
       mutate(component.intensity, "environment." + component.kind, MutationKind::weather, "", 0, 1);
+    // The road's friction is not mutated: an icy road is what the file's words make the
+    // scenario, not a number to search around.
   }
 
  private:

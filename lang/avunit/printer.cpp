@@ -301,6 +301,7 @@ class Printer {
     return set_text(names);
   }
 
+  // The road's friction is left out: AVUnit has no syntax for it (only CH-Scenario sets it).
   std::string environment_text(const Environment& environment) const {
     std::string text = "Environment(";
     if (environment.time_of_day) text += time_text(*environment.time_of_day);

@@ -7,7 +7,8 @@
 namespace scenfuzz {
 
 // Tyres grip about as well sideways as when braking (the friction circle), so full braking is
-// also the most a class can corner with. Pedestrians have no steering and turn on the spot: 0.
+// also the most a class can corner with (of a body on a slippery road, road_friction.hpp, that
+// road's grip). Pedestrians have no steering and turn on the spot: 0.
 inline double grip_lateral_acceleration(const ActorClass& actor_class) {
   return actor_class.category == ActorCategory::pedestrian ? 0 : actor_class.max_deceleration;
 }

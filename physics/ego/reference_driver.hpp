@@ -28,6 +28,7 @@
 
 namespace scenfuzz {
 
+// For a dry road: on_road (driver_on_road.hpp) makes them a careful driver's on a slippery one.
 struct DriverSettings {
   double time_gap = 1.5;                     // s, IDM's desired time headway
   double standstill_gap = 2.5;               // m, bumper to bumper behind a stopped lead

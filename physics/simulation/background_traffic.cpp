@@ -51,8 +51,8 @@ BackgroundTraffic::BackgroundTraffic(const RoadMap& map, const SimulationSetup& 
 
 LaneFollower BackgroundTraffic::make_follower(std::size_t j, double speed) const {
   const FlowPlan& flow = setup_->flows[vehicles_[j].flow];
-  return LaneFollower(*map_, flow.route, flow.path, flow.places, flow_vehicle_body(), flow.speed,
-                      speed, true);
+  return LaneFollower(*map_, flow.route, flow.path, flow.places, flow.body, flow.speed, speed,
+                      true);
 }
 
 KinematicState BackgroundTraffic::initial_state(std::size_t j) const {

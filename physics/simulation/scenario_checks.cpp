@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "lang/number_format.hpp"
+#include "physics/actors/road_friction.hpp"
 #include "physics/map/lane_queries.hpp"
 #include "physics/simulation/simulation_limits.hpp"
 
@@ -69,6 +70,15 @@ bool check_duration(double duration, const SourceLocation& where, Diagnostics& d
   diagnostics.error(where, "the scenario's duration of " + format_number(duration) +
                                " s is beyond the longest the simulation runs (" +
                                format_number(kMaxScenarioDuration) + " s)");
+  return false;
+}
+
+bool check_road_friction(double friction, const SourceLocation& where, Diagnostics& diagnostics) {
+  if (is_road_friction(friction)) return true;
+  diagnostics.error(where,
+                    "the road's friction must be a number in (0, 1] (a share of dry "
+                    "asphalt's grip), not " +
+                        format_number(friction));
   return false;
 }
 

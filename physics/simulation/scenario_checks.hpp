@@ -25,6 +25,10 @@ bool check_position(MapPoint position, const SourceLocation& where, Diagnostics&
 // error.
 bool check_duration(double duration, const SourceLocation& where, Diagnostics& diagnostics);
 
+// The road's friction (a share of dry asphalt's grip): finite and in (0, 1] (road_friction.hpp).
+// False after reporting an error.
+bool check_road_friction(double friction, const SourceLocation& where, Diagnostics& diagnostics);
+
 // Warns when the ego starts farther than kFarFromLanes from every lane.
 void warn_if_far_from_lanes(const RoadMap& map, MapPoint start, const SourceLocation& where,
                             Diagnostics& diagnostics);

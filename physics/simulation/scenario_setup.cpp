@@ -48,6 +48,7 @@ struct Context {
   std::string actor;        // the actor being prepared, for messages
   bool pedestrian = false;  // whether it is one, for the bound on its speeds
   double duration = kDefaultDuration;
+  double road_friction = kDryRoad;  // every vehicle's body is on it (body_of)
 };
 
 double heading_in_radians(const Heading& heading, std::span<const double> values) {
@@ -198,7 +199,7 @@ ActorClass body_of(Context& context, const Actor& actor, ActorCategory fallback)
                                     " (docs/simulation.md lists the known models)");
     }
   }
-  ActorClass body = actor_class(category);
+  ActorClass body = on_road(actor_class(category), context.road_friction);
   if (actor.type && actor.type->height) {
     double height = evaluate(*actor.type->height, context.values);
     if (std::isfinite(height) && height > 0) body.height = height;
@@ -582,7 +583,8 @@ std::vector<MapPoint> vehicle_starts(const Context& context) {
                 context.initial_poses,
                 context.actor,
                 context.pedestrian,
-                context.duration};
+                context.duration,
+                context.road_friction};
   std::vector<MapPoint> starts;
   for (const Actor& actor : context.scenario.vehicles)
     if (auto pose = place_state_unchecked(quiet, actor.initial)) starts.push_back(pose->position);
@@ -668,6 +670,20 @@ Conditions conditions_of(Context& context) {
   return conditions;
 }
 
+// The road's friction the environment gives, checked; dry when it gives none, nullopt after an
+// error. Known before any body is made: every vehicle's limits depend on it.
+std::optional<double> road_friction_of(const ScenarioTemplate& scenario,
+                                       std::span<const double> values, Diagnostics& diagnostics) {
+  const auto& environment = scenario.environment;
+  if (!environment || !environment->road_friction) return kDryRoad;
+  const double friction = evaluate(*environment->road_friction, values);
+  if (!check_road_friction(friction,
+                           where(environment->road_friction->location, environment->location),
+                           diagnostics))
+    return std::nullopt;
+  return friction;
+}
+
 // A duration the file gives that ends before a spec can be decided.
 void warn_of_short_duration(const ScenarioTemplate& scenario, double duration,
                             Diagnostics& diagnostics) {
@@ -702,6 +718,10 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
       warn_of_short_duration(scenario, duration, diagnostics);
     }
   }
+
+  const auto road_friction = road_friction_of(scenario, values, diagnostics);
+  if (!road_friction) return std::nullopt;
+  context.road_friction = setup.road_friction = *road_friction;
 
   if (!check_lane_links(map, scenario.map.links, diagnostics)) return std::nullopt;
   const Actor& ego = scenario.ego;

@@ -1,7 +1,7 @@
 // From a scenario to what the simulation runs: every actor placed on the map with its class and
 // initial state, every scripted NPC's trajectory planned (lane routes, OMPL paths through
-// waypoints, pedestrians' walks), the ego's target, obstacles, traffic-light settings, weather
-// and duration, all evaluated at one point of the search space.
+// waypoints, pedestrians' walks), the ego's target, obstacles, traffic-light settings, weather,
+// the road's friction and duration, all evaluated at one point of the search space.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +14,7 @@
 #include "lang/diagnostic.hpp"
 #include "lang/scenario.hpp"
 #include "physics/actors/actor_class.hpp"
+#include "physics/actors/road_friction.hpp"
 #include "physics/actors/trajectory.hpp"
 #include "physics/collision/collision_world.hpp"
 #include "physics/ego/perception.hpp"
@@ -48,6 +49,7 @@ struct FlowPlan {
   // Route distances where the route enters and leaves each junction it runs through: no vehicle
   // is pre-filled there or within its stopping distance before one (traffic_flows.cpp).
   std::vector<std::pair<double, double>> junctions;
+  ActorClass body;  // every vehicle's: flow_vehicle_body() on the road's grip (road_friction.hpp)
 };
 
 // An NPC vehicle or pedestrian: it follows its trajectory and does not react; or, with
@@ -57,7 +59,9 @@ struct FlowPlan {
 struct ScriptedActor {
   std::string name;
   TraceActorKind kind = TraceActorKind::vehicle;
-  ActorClass body;  // dimensions (a pedestrian's height from the scenario)
+  // Its class on the road's grip (a vehicle's limits, road_friction.hpp), a pedestrian with its
+  // height from the scenario.
+  ActorClass body;
   Trajectory trajectory;
   std::optional<ManoeuvreScript> manoeuvres;
   std::optional<LaneDrive> lane_drive;
@@ -78,7 +82,7 @@ struct LightSetting {
 
 struct SimulationSetup {
   std::string ego_name = "ego";
-  ActorClass ego_body;
+  ActorClass ego_body;  // its class on the road's grip (road_friction.hpp)
   KinematicState ego_initial;
   std::optional<MapPose> ego_target;
   // Over the lane graph to the target, or along the lanes ahead when there is none.
@@ -88,6 +92,9 @@ struct SimulationSetup {
   std::vector<LightSetting> lights;
   std::vector<std::pair<LaneIndex, double>> speed_limits;  // the scenario's, m/s
   Conditions conditions;
+  // The road's grip as a share of dry asphalt's (road_friction.hpp): every body here is already
+  // on it; the reference driver also plans with it (driver_on_road.hpp).
+  double road_friction = kDryRoad;
   double duration = 30;  // s
   // WMG SDL timers: timer(T) reads seconds since the start plus the initial value.
   std::vector<std::string> timer_names;

@@ -18,6 +18,7 @@
 
 #include "lang/demand.hpp"
 #include "physics/collision/collision_world.hpp"
+#include "physics/ego/driver_on_road.hpp"
 #include "physics/ego/ego_indicators.hpp"
 #include "physics/ego/observation_json.hpp"
 #include "physics/ego/plugin_driver.hpp"
@@ -310,7 +311,9 @@ Run::Run(const RoadMap& map, const SimulationSetup& setup, const SimulationOptio
       sensing_(degraded(options.perception, setup.conditions)),
       perception_(sensing_, options.seed ^ kPerceptionStream, options.dt),
       route_(map, setup.ego_route, setup.speed_limits, options.driver.default_speed_limit),
-      driver_(map, route_, setup.ego_body, setup.ego_target.has_value(), options.driver, sensing_),
+      // The body is already on the road's grip; the driver's own settings learn of it here.
+      driver_(map, route_, setup.ego_body, setup.ego_target.has_value(),
+              on_road(options.driver, setup.road_friction), sensing_),
       signals_(map, setup.lights),
       ego_indicators_(map, route_),
       weather_lights_(weather_signals(weather_)),

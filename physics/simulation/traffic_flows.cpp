@@ -135,7 +135,7 @@ std::vector<FlowVehicle> draw_flow(const FlowPlan& flow, std::size_t index, doub
                                    std::vector<Occupant>& occupants) {
   std::vector<FlowVehicle> vehicles;
   if (!(flow.rate > 0)) return vehicles;
-  const ActorClass body = flow_vehicle_body();
+  const ActorClass& body = flow.body;
   const double speed = std::min(flow.speed, body.max_speed);
   const double gap = safe_gap(body, speed);
   const double headway = speed * 3600 / flow.rate;
@@ -259,7 +259,7 @@ std::vector<std::pair<double, double>> junctions_on(const RoadMap& map, const La
 
 std::optional<FlowPlan> prepare_flow(const TrafficFlow& flow, std::span<const double> values,
                                      const RoadMap& map, std::uint64_t seed, double duration,
-                                     Diagnostics& diagnostics) {
+                                     double road_friction, Diagnostics& diagnostics) {
   auto source = flow_lane(map, flow.source_lane, flow, diagnostics);
   auto rate = flow_rate(flow, values, diagnostics);
   if (!source || !rate) return std::nullopt;
@@ -276,8 +276,16 @@ std::optional<FlowPlan> prepare_flow(const TrafficFlow& flow, std::span<const do
   }
   std::vector<PathPlace> places;
   Polyline path = rounded_route_path(map, *route, 0, planning_radius(flow_vehicle_body()), places);
-  return FlowPlan{flow.name, flow.location, *route, std::move(path),          std::move(places),
-                  *rate,     *speed,        seed,   junctions_on(map, *route)};
+  return FlowPlan{flow.name,
+                  flow.location,
+                  *route,
+                  std::move(path),
+                  std::move(places),
+                  *rate,
+                  *speed,
+                  seed,
+                  junctions_on(map, *route),
+                  on_road(flow_vehicle_body(), road_friction)};
 }
 
 }  // namespace
@@ -289,7 +297,8 @@ void prepare_flows(const ScenarioTemplate& scenario, std::span<const double> val
                    Diagnostics& diagnostics) {
   const auto& flows = scenario.traffic.flows;
   for (std::size_t i = 0; i < flows.size(); ++i) {
-    auto plan = prepare_flow(flows[i], values, map, seed, setup.duration, diagnostics);
+    auto plan =
+        prepare_flow(flows[i], values, map, seed, setup.duration, setup.road_friction, diagnostics);
     if (plan) setup.flows.push_back(std::move(*plan));
   }
   const FlowSchedule schedule = draw_flow_schedule(setup, setup.duration);
@@ -315,7 +324,7 @@ std::optional<double> flow_entry_speed(const FlowPlan& flow, std::span<const Kin
                                        std::span<const double> lengths,
                                        std::span<const double> widths,
                                        std::span<const std::uint8_t> present) {
-  const ActorClass body = flow_vehicle_body();
+  const ActorClass& body = flow.body;
   const double desired = std::min(flow.speed, body.max_speed);
   const MapPose entry = pose_on(flow.path, 0);
   const double c = std::cos(entry.heading), s = std::sin(entry.heading);

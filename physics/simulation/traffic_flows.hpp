@@ -40,7 +40,7 @@ struct FlowSchedule {
   std::vector<std::size_t> capped;    // flows that lost vehicles to kMaxFlowVehicles
 };
 
-// What every flow vehicle is.
+// What every flow vehicle is, on a dry road (FlowPlan::body is it on the scenario's road).
 ActorClass flow_vehicle_body();
 
 // Resolves the scenario's flows into setup.flows. An unknown lane, no route to the destination

@@ -801,6 +801,14 @@ TEST_F(LawSignalsTest, GearIsDriveAndBrakeIsTheShareOfFullBraking) {
   const SignalValues brake = law_values(trace, straight, "trace |= brake > 10;\n");
   EXPECT_EQ(brake.values, (std::vector<double>{50, 0, 100, 0}));
   EXPECT_FALSE(brake.discrete);
+  // On a road with a fifth of the grip (CH-Scenario's ice), 1.6 m/s^2 is full braking.
+  test::ParsedScenario icy = parse_scenario(scenario_with("", "trace |= brake > 10;\n"));
+  if (!icy.scenario.environment) icy.scenario.environment.emplace();
+  icy.scenario.environment->road_friction = constant_value(0.2);
+  trace.actors[0].acceleration = {-0.8, 2, -1.6, -4};
+  const TraceSignals signals(trace, icy.scenario, icy.parameters, straight);
+  const SignalValues on_ice = signals.leaf(icy.scenario.specs.at(0).formula.terms.at(0));
+  EXPECT_EQ(on_ice.values, (std::vector<double>{50, 0, 100, 100}));
 }
 
 TEST_F(LawSignalsTest, SignalsTheOracleDoesNotComputeAreErrorsAtTheTerm) {
