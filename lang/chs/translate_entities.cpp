@@ -20,7 +20,7 @@ constexpr double kBehindGap = 25;  // likewise behind the ego
 constexpr double kOncomingDistance = 150;  // from the ego to the first oncoming vehicle
 constexpr double kStaticAhead = 60;        // from the ego to the first static entity or walker
 constexpr double kStaticGap = 20;          // between those
-constexpr double kPavement = 0.5;          // beyond the kerb lane, where walkers stand
+constexpr double kPavement = 2.5;          // from the kerb lane's centre: on the pavement beside it
 constexpr double kMinimumHalfWidth = 1.0;  // outline_map.hpp: a narrower half has no lanes
 // A static obstacle the words do not size: about a fallen rock or a pile of debris.
 constexpr double kObstacleSize[3] = {2, 2, 1};

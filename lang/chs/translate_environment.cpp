@@ -1,7 +1,8 @@
 // CH-Scenario weather, natural disasters and special high-risk conditions (translation.hpp;
 // docs/ch-scenario.md, "Weather and disasters"). The simulation knows rain, fog, snow, wetness and
 // the time of day: precipitation is rain, the visibility's shortfall is fog, and each disaster
-// sets a floor under them; a geological disaster puts an obstacle in the ego's lane ahead.
+// sets a floor under them; a geological disaster puts an obstacle in the ego's lane ahead. The
+// special high-risk conditions lower the speed limit (translate_map.cpp) and the road's friction.
 #include <algorithm>
 
 #include "lang/chs/translation.hpp"
@@ -73,6 +74,18 @@ std::optional<Value> time_of_day(const Text& timestamp) {
   return std::nullopt;
 }
 
+// The road's grip as a share of dry asphalt's (docs/ch-scenario.md, "Road friction"): the least
+// any of the file's conditions leaves; none on a dry, sound road.
+std::optional<double> road_friction(const File& file) {
+  const SpecialHighRisk& h = file.high_risk;
+  double friction = 1 - 0.3 * file.weather.wetness.value;  // wet asphalt: about 0.7 of dry
+  if (h.wade.value) friction = std::min(friction, 0.5);
+  if (h.muddy.value || file.disaster.debris_flow.value) friction = std::min(friction, 0.4);
+  if (h.ice_road.value) friction = std::min(friction, 0.2);
+  if (friction >= 1) return std::nullopt;
+  return friction;
+}
+
 // A geological disaster in the ego's lane ahead: its name, length along the lane and height.
 struct Blockage {
   const char* name;
@@ -81,8 +94,9 @@ struct Blockage {
 
 void geological_disasters(Translation& translation) {
   const NaturalDisaster& d = translation.file.disaster;
-  constexpr double kAhead = 120;     // m from the ego's start
-  constexpr double kLaneWide = 3.5;  // covers the lane it lies in
+  constexpr double kAhead = 120;  // m from the ego's start
+  // Fallen from the kerb side, it leaves room on the lane's left to pass in the other lane.
+  constexpr double kWidth = 2.5, kTowardsKerb = -0.75;
   for (auto [flag, blockage] : {std::pair{&d.landslide, Blockage{"landslide", 6, 2}},
                                 std::pair{&d.debris_flow, Blockage{"debris_flow", 10, 1}},
                                 std::pair{&d.collapse, Blockage{"collapse", 15, 0.5}}}) {
@@ -93,11 +107,12 @@ void geological_disasters(Translation& translation) {
     obstacle.position.reference = translation.scenario.ego.name;
     obstacle.position.s = constant_value(kAhead);
     obstacle.position.relative_location = "F";
+    obstacle.position.lateral = constant_value(kTowardsKerb);
     obstacle.position.location = flag->location;
-    obstacle.shape = Shape{ShapeKind::box,
-                           {constant_value(blockage.length), constant_value(kLaneWide),
-                            constant_value(blockage.height)},
-                           flag->location};
+    obstacle.shape = Shape{
+        ShapeKind::box,
+        {constant_value(blockage.length), constant_value(kWidth), constant_value(blockage.height)},
+        flag->location};
     obstacle.location = flag->location;
     translation.scenario.obstacles.push_back(std::move(obstacle));
   }
@@ -121,6 +136,8 @@ void translate_environment(Translation& translation) {
       environment.time_of_day = std::move(time);
       break;
     }
+  if (const auto friction = road_friction(file))
+    environment.road_friction = constant_value(*friction);
   translation.scenario.environment = std::move(environment);
   if (!translation.scenario.ego.name.empty()) geological_disasters(translation);
 }

@@ -1,7 +1,8 @@
 // The CH-Scenario map (translation.hpp): `map: NAME` is looked up as any map name is; a blank map
 // carries its roads as outlines, which physics/map/outline_map.hpp turns into lanes. Every road
 // point must lie on the blank rectangle, [0, length] x [0, width], as the grammar's example lays
-// its 400 m by 50 m map.
+// its 400 m by 50 m map. The grammar gives no speed limits: a road takes the defaults of China's
+// road traffic law, whose scenarios CH-Scenario describes (docs/ch-scenario.md, "Speed limits").
 #include "lang/chs/translation.hpp"
 #include "lang/number_format.hpp"
 
@@ -20,6 +21,19 @@ std::vector<scenfuzz::Point> outline(const std::vector<Point>& points) {
   std::vector<scenfuzz::Point> result;
   for (const Point& point : points) result.push_back(outline_point(point));
   return result;
+}
+
+// Art. 45 of the Regulation on the Implementation of the Road Traffic Safety Law: 50 km/h on a
+// road with a lane each way and no sign; Art. 46: 30 km/h on icy or muddy roads, going down a
+// steep slope, and in fog, rain, sand or hail that leaves 50 m of sight (the storms, here).
+double speed_limit(const File& file) {
+  constexpr double kUsual = 50 / 3.6, kHazardous = 30 / 3.6;
+  const SpecialHighRisk& h = file.high_risk;
+  const NaturalDisaster& d = file.disaster;
+  const bool hazardous = h.ice_road.value || h.muddy.value || h.wade.value ||
+                         h.steep_descent_ahead.value || d.rainstorm.value || d.typhoon.value ||
+                         d.sandstorm.value || d.tornado.value;
+  return hazardous ? kHazardous : kUsual;
 }
 
 void check_on_map(const Road& road, const MapSource& map, Diagnostics& diagnostics) {
@@ -45,10 +59,11 @@ void translate_map(Translation& translation) {
     return;
   }
   map.name = kBlankMapName;
+  const Value limit = constant_value(speed_limit(file));
   for (const Road& road : file.roads) {
     check_on_map(road, file.map, translation.diagnostics);
     map.roads.push_back({road.name.text, outline(road.left_boundary), outline(road.centre_lines),
-                         outline(road.right_boundary), road.location});
+                         outline(road.right_boundary), limit, road.location});
   }
 }
 

@@ -55,7 +55,8 @@ std::vector<RoadOutlineGeometry> evaluated_roads(const std::vector<RoadOutline>&
   for (const RoadOutline& road : roads)
     result.push_back({road.name, evaluated_points(road.left_boundary, parameter_values),
                       evaluated_points(road.centre_line, parameter_values),
-                      evaluated_points(road.right_boundary, parameter_values)});
+                      evaluated_points(road.right_boundary, parameter_values),
+                      road.speed_limit ? evaluate(*road.speed_limit, parameter_values) : 0.0});
   return result;
 }
 

@@ -166,7 +166,12 @@ MapDescription describe_outline_map(std::string name,
   map.name = std::move(name);
   map.source = kSource;
   map.default_lane_width = outline::kNominalLaneWidth;
-  for (const RoadOutlineGeometry& road : roads) add_road(map.lanes, road);
+  for (const RoadOutlineGeometry& road : roads) {
+    const std::size_t first = map.lanes.size();
+    add_road(map.lanes, road);
+    for (std::size_t i = first; i < map.lanes.size(); ++i)
+      map.lanes[i].speed_limit = road.speed_limit;
+  }
   connect_lanes(map.lanes);
   return map;
 }

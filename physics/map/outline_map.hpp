@@ -37,8 +37,9 @@
 //     0.01 m left of the centre line, judged at the nearest centre-line point, or vice versa),
 //     naming the point; two roads with the same name; a road with an empty name. An empty road
 //     list is an error too (its message starts with "map 'NAME': ").
-//  8. The description is named as given, its source is "CH-Scenario road network", its default
-//     lane width 3.5 m, and it has no projection.
+//  8. Every lane of a road has the road's speed limit. The description is named as given, its
+//     source is "CH-Scenario road network", its default lane width 3.5 m, and it has no
+//     projection.
 #pragma once
 
 #include <string>
@@ -53,6 +54,7 @@ namespace scenfuzz {
 struct RoadOutlineGeometry {
   std::string name;
   std::vector<MapPoint> left_boundary, centre_line, right_boundary;
+  double speed_limit = 0;  // m/s on every lane of the road; 0: none
 };
 
 // The lanes of `roads` by the rules above; build_road_map makes it a RoadMap. Throws MapError

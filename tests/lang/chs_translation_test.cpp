@@ -261,7 +261,35 @@ TEST(ChsTranslation, DisastersBlockTheLaneAndDarkenTheSky) {
   EXPECT_EQ(landslide.position.kind, PositionKind::relative);
   EXPECT_EQ(landslide.position.reference, "car");
   EXPECT_EQ(landslide.position.s.constant, 120);
-  EXPECT_EQ(landslide.shape->dimensions[1].constant, 3.5);
+  EXPECT_EQ(landslide.shape->dimensions[1].constant, 2.5);
+  EXPECT_EQ(landslide.position.lateral->constant, -0.75);
+  // A dry road keeps its grip; the speed limit is the law's 30 km/h in a sandstorm.
+  EXPECT_FALSE(s.environment->road_friction);
+  ASSERT_TRUE(s.map.roads[0].speed_limit);
+  EXPECT_DOUBLE_EQ(s.map.roads[0].speed_limit->constant, 30 / 3.6);
+}
+
+TEST(ChsTranslation, HighRiskConditionsLowerTheFrictionAndTheSpeedLimit) {
+  const auto friction = [](const std::string& conditions) -> double {
+    const ScenarioParse parsed =
+        read(on_east_road(conditions + "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n"));
+    EXPECT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+    const auto& value = parsed.scenario.environment->road_friction;
+    return value ? value->constant : 1.0;
+  };
+  EXPECT_EQ(friction(""), 1.0);
+  EXPECT_DOUBLE_EQ(friction("wetness: 1\n"), 0.7);
+  EXPECT_DOUBLE_EQ(friction("wetness: 1\nwade: 1\n"), 0.5);
+  EXPECT_DOUBLE_EQ(friction("muddy: 1\nwade: 1\n"), 0.4);
+  EXPECT_DOUBLE_EQ(friction("iceroad: 1\nmuddy: 1\n"), 0.2);
+  EXPECT_EQ(friction("rough: 1\n"), 1.0);
+  const ScenarioParse usual = read(on_east_road("Entity\n  name: car\n  speed: 36\n"));
+  ASSERT_TRUE(usual.ok()) << messages(usual.diagnostics);
+  EXPECT_DOUBLE_EQ(usual.scenario.map.roads[0].speed_limit->constant, 50 / 3.6);
+  const ScenarioParse steep =
+      read(on_east_road("steepdescentahead: 1\nEntity\n  name: car\n  speed: 36\n"));
+  ASSERT_TRUE(steep.ok()) << messages(steep.diagnostics);
+  EXPECT_DOUBLE_EQ(steep.scenario.map.roads[0].speed_limit->constant, 30 / 3.6);
 }
 
 struct ProtocolCase {

@@ -393,7 +393,7 @@ TEST(OutlineMap, WorkedExampleBuildsIntoARoadMap) {
 Point constant_point(double x, double y) { return {constant_value(x), constant_value(y)}; }
 
 TEST(OutlineMap, LoadScenarioMapBuildsTheRoadsOfAMapReference) {
-  // The left boundary's y is search parameter 0: 7 m gives two backward lanes.
+  // The left boundary's y is search parameter 0: 7 m gives two backward lanes. 45 km/h.
   MapReference reference;
   reference.name = "blank";
   reference.roads.push_back(
@@ -401,6 +401,7 @@ TEST(OutlineMap, LoadScenarioMapBuildsTheRoadsOfAMapReference) {
        {{constant_value(0), parameter_value(0)}, {constant_value(100), parameter_value(0)}},
        {constant_point(0, 0), constant_point(100, 0)},
        {constant_point(0, -3.5), constant_point(100, -3.5)},
+       constant_value(12.5),
        {}});
   const std::vector<double> values = {7.0};
   const RoadMap map = load_scenario_map(reference, map_search_path({}), values);
@@ -411,6 +412,8 @@ TEST(OutlineMap, LoadScenarioMapBuildsTheRoadsOfAMapReference) {
   EXPECT_EQ(ids, (std::set<std::string>{"narrow_road_f0", "narrow_road_b0", "narrow_road_b1"}));
   const Lane& b1 = map.lane(*map.find_lane("narrow_road_b1"));
   EXPECT_NEAR(b1.centre_line.points().front().y, 5.25, kTolerance);
+  // The road's speed limit is every lane's.
+  for (const Lane& lane : map.lanes()) EXPECT_EQ(lane.speed_limit, 12.5) << lane.id;
   // Bad geometry is reported as for any map.
   reference.roads[0].right_boundary[1] = constant_point(100, 2);
   try {

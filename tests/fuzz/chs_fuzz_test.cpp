@@ -1,0 +1,95 @@
+// CH-Scenario end to end, through the real executable as a user runs it: every corpora/ch file is
+// searched by concrete-seed mutation with the budget of 500 and finishes cleanly, its
+// other road users meet the ego as written, and a finding is the user's file with its numbers
+// replaced, which replays to its robustness.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "command_runner.hpp"
+
+namespace scenfuzz {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Outcome;
+using test::slurp;
+
+const fs::path kCorpus = fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "ch";
+
+std::vector<fs::path> corpus_files() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(kCorpus))
+    if (entry.path().extension() == ".chs") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class ChsFuzzTest : public test::CommandTest {
+ protected:
+  Outcome fuzz(const fs::path& scenario, const std::string& seed) {
+    return scenfuzz({"--budget", "500", "--seed", seed, "-j", "2", "--quiet", "--out",
+                     (dir_ / "out").string(), scenario.string()});
+  }
+  nlohmann::json summary() const {
+    return nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
+  }
+};
+
+TEST_F(ChsFuzzTest, EveryCorpusFileIsSearchedToTheEndOfItsBudget) {
+  const std::vector<fs::path> files = corpus_files();
+  ASSERT_GE(files.size(), 6u);
+  for (const fs::path& file : files) {
+    fs::remove_all(dir_ / "out");
+    const Outcome run = fuzz(file, "1");
+    // 0: no finding, 1: findings; never bad input or an internal error.
+    EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 1) << file << "\n" << run.err;
+    if (run.exit_code > 1) continue;
+    const nlohmann::json summary = this->summary();
+    EXPECT_EQ(summary["complete"], true) << file;
+    EXPECT_EQ(summary["stop"], "budget") << file;
+    EXPECT_GE(summary["judged"].get<int>(), 400) << file << ": most points should simulate";
+  }
+}
+
+TEST_F(ChsFuzzTest, EveryCorpusScenariosRoadUsersMeetTheEgoAsWritten) {
+  for (const fs::path& file : corpus_files()) {
+    const Outcome run = scenfuzz({"run", file.string(), "--json"});
+    ASSERT_TRUE(run.exit_code == 0 || run.exit_code == 1) << file << "\n" << run.err;
+    const nlohmann::json interaction = nlohmann::json::parse(run.out)["interaction"];
+    EXPECT_EQ(interaction["actors_interact"], true) << file << "\n" << interaction.dump();
+  }
+}
+
+TEST_F(ChsFuzzTest, AFindingIsTheUsersFileWithItsNumbersReplacedAndReplays) {
+  const Outcome run = fuzz(kCorpus / "typhoon_narrow_road_minibus.chs", "1");
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  const nlohmann::json findings = summary()["findings"];
+  ASSERT_GE(findings.size(), 1u);
+  const std::string scenario = findings[0]["file"].get<std::string>();
+  EXPECT_EQ(fs::path(scenario).extension(), ".chs");
+  const std::string text = slurp(scenario);
+  // The user's own lines, the Chinese of the timestamp included, after the `#` header.
+  EXPECT_NE(text.find("  road → name narrow_road\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("timestamp: 2022 年 1 月 30 日 "), std::string::npos) << text;
+  EXPECT_NE(text.find("#   ego.init.speed = "), std::string::npos) << text;
+  std::smatch replay;
+  ASSERT_TRUE(
+      std::regex_search(text, replay, std::regex("# replay: scenfuzz run (\\S+) --seed (\\d+)")));
+  const Outcome replayed = scenfuzz(
+      {"run", scenario, "--seed", replay[2].str(), "--json", "--out", (dir_ / "replay").string()});
+  ASSERT_EQ(replayed.exit_code, 1) << replayed.err;
+  const nlohmann::json judged = nlohmann::json::parse(replayed.out);
+  bool same = false;
+  for (const nlohmann::json& spec : judged["specs"])
+    same |=
+        std::abs(spec["robustness"].get<double>() - findings[0]["robustness"].get<double>()) < 1e-9;
+  EXPECT_TRUE(same) << replayed.out << "\n" << findings[0].dump();
+}
+
+}  // namespace
+}  // namespace scenfuzz
