@@ -1,12 +1,14 @@
 // A concrete CH-Scenario (chs.hpp): the user's text with each searched number replaced. The IR
 // holds SI values, so each number is written back in the unit of the field it sits in, found by
-// reading the file again.
+// reading the file again; a vehicle's point the translation read as a lane place (lane_places.hpp)
+// is written back as the point of the place the search chose.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
 
 #include "lang/chs/chs.hpp"
+#include "lang/chs/lane_places.hpp"
 #include "lang/chs/parser.hpp"
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
@@ -18,9 +20,8 @@ namespace {
 enum class Unit { as_written, kilometres_per_hour, visibility, time_of_day };
 
 // The fields whose number the IR holds in another unit, by the number's byte offset.
-std::map<std::uint32_t, Unit> units_by_offset(const SourceFile& file) {
+std::map<std::uint32_t, Unit> units_by_offset(const ParseResult& parsed) {
   std::map<std::uint32_t, Unit> units;
-  const ParseResult parsed = parse(file);
   if (!parsed.file) return units;
   for (const DynamicEntity& entity : parsed.file->dynamic_entities)
     units[entity.speed.location.offset] = Unit::kilometres_per_hour;
@@ -53,27 +54,71 @@ std::string value_text(const Parameter& parameter, double value, Unit unit) {
   }
 }
 
+// The text that replaces the number at each byte offset, and how long the number is.
+using Replacements = std::map<std::uint32_t, std::pair<std::uint32_t, std::string>>;
+
+// The written points of `file` that stand for a vehicle's lane place in `scenario`, by the offset
+// of their x (where the place's arc length stands).
+std::map<std::uint32_t, const Position*> lane_places_by_x(const ScenarioTemplate& scenario) {
+  std::map<std::uint32_t, const Position*> places;
+  auto add = [&](const Actor& actor) {
+    const Position& position = actor.initial.position;
+    if (position.kind == PositionKind::lane && position.lateral && position.s.location.known())
+      places.emplace(position.s.location.offset, &position);
+  };
+  add(scenario.ego);
+  for (const Actor& vehicle : scenario.vehicles) add(vehicle);
+  return places;
+}
+
+// Each point read as a lane place whose arc length or offset the search chose, written back as
+// the point of the place chosen.
+void replace_lane_points(const File& file, const ScenarioTemplate& scenario,
+                         std::span<const double> values, Replacements& replacements) {
+  const std::map<std::uint32_t, const Position*> places = lane_places_by_x(scenario);
+  auto replace_point = [&](const Point& point) {
+    const auto found = places.find(point.x_at.offset);
+    if (found == places.end() || !point.x_at.known()) return;
+    const Position& position = *found->second;
+    std::optional<LanePlace> place = lane_place_at(file.roads, point.x, point.y);
+    if (!place || (is_constant(position.s) && is_constant(*position.lateral))) return;
+    place->s = evaluate(position.s, values);
+    place->lateral = evaluate(*position.lateral, values);
+    const PlanePoint moved = point_of(*place);
+    replacements[point.x_at.offset] = {point.x_at.length, plain_number(moved.x)};
+    replacements[point.y_at.offset] = {point.y_at.length, plain_number(moved.y)};
+  };
+  for (const DynamicEntity& entity : file.dynamic_entities)
+    if (entity.position) replace_point(*entity.position);
+  for (const StaticEntity& entity : file.static_entities)
+    if (entity.position) replace_point(*entity.position);
+}
+
 }  // namespace
 
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
                            std::span<const double> parameter_values) {
   SCENFUZZ_DEMAND(parameter_values.size() == scenario.parameters.size());
-  const std::map<std::uint32_t, Unit> units = units_by_offset(file);
+  const ParseResult parsed = parse(file);
+  const std::map<std::uint32_t, Unit> units = units_by_offset(parsed);
   auto unit_at = [&](const Parameter& parameter) {
     auto found = units.find(parameter.location.offset);
     return found == units.end() ? Unit::as_written : found->second;
   };
-  std::map<std::uint32_t, std::size_t> by_offset;
-  for (std::size_t i = 0; i < scenario.parameters.size(); ++i)
-    if (scenario.parameters[i].location.known())
-      by_offset.emplace(scenario.parameters[i].location.offset, i);
-  std::string text = file.text();
-  for (auto it = by_offset.rbegin(); it != by_offset.rend(); ++it) {
-    const Parameter& parameter = scenario.parameters[it->second];
-    if (parameter.location.end_offset() <= text.size())
-      text.replace(parameter.location.offset, parameter.location.length,
-                   value_text(parameter, parameter_values[it->second], unit_at(parameter)));
+  Replacements replacements;
+  for (std::size_t i = 0; i < scenario.parameters.size(); ++i) {
+    const Parameter& parameter = scenario.parameters[i];
+    if (parameter.location.known())
+      replacements.emplace(
+          parameter.location.offset,
+          std::pair{parameter.location.length,
+                    value_text(parameter, parameter_values[i], unit_at(parameter))});
   }
+  if (parsed.file) replace_lane_points(*parsed.file, scenario, parameter_values, replacements);
+  std::string text = file.text();
+  for (auto it = replacements.rbegin(); it != replacements.rend(); ++it)
+    if (it->first + it->second.first <= text.size())
+      text.replace(it->first, it->second.first, it->second.second);
   std::string header = "# concrete scenario of " + file.path() + " chosen by scenfuzz:\n";
   for (std::size_t i = 0; i < scenario.parameters.size(); ++i) {
     const Parameter& parameter = scenario.parameters[i];

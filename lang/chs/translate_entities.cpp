@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "lang/chs/lane_places.hpp"
 #include "lang/chs/translation.hpp"
 #include "lang/chs/vocabulary.hpp"
 #include "lang/number_format.hpp"
@@ -46,10 +47,6 @@ const DynamicEntity* choose_ego(const File& file) {
     if (kind == EntityClass::vehicle || kind == EntityClass::unknown) return &entity;
   }
   return nullptr;
-}
-
-std::string lane_id(const Road& road, bool forward) {
-  return road.name.text + (forward ? "_f0" : "_b0");
 }
 
 // Whether a half of the road carries lanes, judged at its start, middle and end as the map layer
@@ -98,6 +95,18 @@ Position coordinate_position(const Point& point) {
   position.kind = PositionKind::coordinate;
   position.x = constant_value(point.x, point.x_at);
   position.y = constant_value(point.y, point.y_at);
+  position.location = point.location;
+  return position;
+}
+
+// A written point in a lane (lane_places.hpp) as that lane, its arc length standing at the x's
+// text and its lateral offset at the y's, which chs::print_concrete writes back as a point.
+Position written_lane_position(const Point& point, const LanePlace& place) {
+  Position position;
+  position.kind = PositionKind::lane;
+  position.lane = lane_id(*place.road, place.forward, place.lane);
+  position.s = constant_value(place.s, point.x_at);
+  position.lateral = constant_value(place.lateral, point.y_at);
   position.location = point.location;
   return position;
 }
@@ -152,7 +161,7 @@ class EntityTranslator {
     const TrackReading track = read_track(entity.track.text);
     warn_of_track(entity, track, true);
     if (entity.position) {
-      ego.initial.position = coordinate_position(*entity.position);
+      ego.initial.position = vehicle_position(*entity.position, &ego_forward_);
     } else if (file_.map.kind == MapSource::Kind::named) {
       diagnostics_.error(entity.location, "on the named map '" + file_.map.name.text + "', " +
                                               entity.name.text +
@@ -161,8 +170,9 @@ class EntityTranslator {
     } else {
       t_.ego_place = choose_ego_place(file_, track);
       if (!t_.ego_place) return false;  // the map layer reports a network without lanes
-      ego.initial.position = lane_position(lane_id(*t_.ego_place->road, t_.ego_place->forward),
+      ego.initial.position = lane_position(lane_id(*t_.ego_place->road, t_.ego_place->forward, 0),
                                            t_.ego_place->s, entity.location);
+      ego_forward_ = t_.ego_place->forward;
     }
     ego.initial.speed = located(entity.speed, kKilometresPerHour);
     ego.initial.location = entity.location;
@@ -176,10 +186,9 @@ class EntityTranslator {
     if (entity.aim.text.empty()) return;
     for (const Road& road : file_.roads)
       if (road.name.text == entity.aim.text) {
-        const bool forward = !t_.ego_place || t_.ego_place->forward;
         State target;
-        target.position = lane_position(lane_id(road, forward), polyline_length(road.centre_lines),
-                                        entity.aim.location);
+        target.position = lane_position(lane_id(road, ego_forward_, 0),
+                                        polyline_length(road.centre_lines), entity.aim.location);
         target.location = entity.aim.location;
         actor.target = target;
         return;
@@ -211,6 +220,14 @@ class EntityTranslator {
                            "when to stop");
   }
 
+  // A vehicle's written point: its place in the lane it lies in, else the point itself.
+  Position vehicle_position(const Point& point, bool* forward = nullptr) {
+    const std::optional<LanePlace> place = lane_place_at(file_.roads, point.x, point.y);
+    if (!place) return coordinate_position(point);
+    if (forward) *forward = place->forward;
+    return written_lane_position(point, *place);
+  }
+
   std::optional<ActorType> actor_type(const Text& name, const std::string& overview) {
     const EntityWords words = classify_entity(name.text, overview);
     if (words.model.empty()) return std::nullopt;
@@ -235,7 +252,7 @@ class EntityTranslator {
     if (words.kind == EntityClass::pedestrian) return walker(entity, track, std::move(actor));
     actor.kind = words.kind == EntityClass::cyclist ? ActorKind::cyclist : ActorKind::vehicle;
     if (entity.position) {
-      actor.initial.position = coordinate_position(*entity.position);
+      actor.initial.position = vehicle_position(*entity.position);
     } else {
       auto position = default_vehicle_position(entity, track);
       if (!position) return;
@@ -262,7 +279,7 @@ class EntityTranslator {
     const EgoPlace& place = *t_.ego_place;
     const double length = polyline_length(place.road->centre_lines);
     const double ahead = place.s + kOncomingDistance + kAheadGap * placed_.oncoming++;
-    return lane_position(lane_id(*place.road, !place.forward), std::max(0.0, length - ahead),
+    return lane_position(lane_id(*place.road, !place.forward, 0), std::max(0.0, length - ahead),
                          entity.location);
   }
 
@@ -334,7 +351,8 @@ class EntityTranslator {
     actor.name = entity.name.text;
     actor.location = entity.location;
     actor.type = ActorType{words.model, true, std::nullopt, std::nullopt, entity.name.location};
-    actor.initial.position = static_position(entity, false);
+    actor.initial.position =
+        entity.position ? vehicle_position(*entity.position) : static_position(entity, false);
     actor.initial.speed = constant_value(0);
     actor.initial.location = entity.location;
     actor.motion.kind = MotionKind::uniform;
@@ -357,6 +375,7 @@ class EntityTranslator {
   const File& file_;
   Diagnostics& diagnostics_;
   Placed placed_;
+  bool ego_forward_ = true;  // the direction of the ego's lane, where its aim is
 };
 
 }  // namespace

@@ -3,14 +3,17 @@
 // error; every diagnostic and every located value lies within the input; a file that parses
 // prints to text that parses, without a diagnostic, to an equal tree; its translation into the
 // IR reports only diagnostics within the input, and its concrete scenario with the ego's speed
-// as a parameter reads back with that speed.
+// as a parameter reads back with that speed, and with the ego's lane place (a written point in a
+// lane of a file's only road) moved across its lane reads back as that place.
 // Built by scripts/fuzz.sh (SCENFUZZ_FUZZ=ON, clang, ASan + UBSan).
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "lang/chs/chs.hpp"
@@ -69,6 +72,50 @@ void expect_prints_back(const chs::File& file) {
   }
 }
 
+// The ego's lane place (lane_places.hpp) moved across its lane, as the search would.
+struct LanePlaceMove {
+  std::string lane;
+  double s = 0, lateral = 0;
+};
+
+std::optional<LanePlaceMove> move_lane_place(const chs::File& file, ScenarioTemplate& scenario,
+                                             std::vector<double>& values) {
+  if (file.roads.size() != 1) return std::nullopt;
+  Position& position = scenario.ego.initial.position;
+  if (position.kind != PositionKind::lane || !position.lateral || !position.s.location.known())
+    return std::nullopt;
+  // Halfway to the lane's centre at the same station stays in the lane; elsewhere on a road whose
+  // width varies, or where roads overlap, the point may lie in another lane.
+  const LanePlaceMove moved{position.lane, position.s.constant, position.lateral->constant / 2};
+  for (auto [value, name, wanted] :
+       {std::tuple{&position.s, "ego.init.position.s", moved.s},
+        {&*position.lateral, "ego.init.position.lateral", moved.lateral}}) {
+    Parameter parameter;
+    parameter.name = name;
+    parameter.unit = "m";
+    parameter.location = value->location;
+    *value = parameter_value(static_cast<int>(scenario.parameters.size()), value->location);
+    scenario.parameters.push_back(parameter);
+    values.push_back(wanted);
+  }
+  return moved;
+}
+
+// A lane place written back as a point reads as the same place.
+void expect_lane_place_back(const std::string& concrete, const LanePlaceMove& moved) {
+  const chs::ScenarioParse back = chs::parse_scenario(SourceFile("concrete.chs", concrete));
+  const Position& position = back.scenario.ego.initial.position;
+  const bool same = back.ok() && position.kind == PositionKind::lane &&
+                    position.lane == moved.lane && position.lateral &&
+                    std::abs(position.s.constant - moved.s) < 1e-6 &&
+                    std::abs(position.lateral->constant - moved.lateral) < 1e-6;
+  if (!same) {
+    std::fprintf(stderr, "the ego's place %s s=%.17g lateral=%.17g does not read back:\n%s\n",
+                 moved.lane.c_str(), moved.s, moved.lateral, concrete.c_str());
+    __builtin_trap();
+  }
+}
+
 // The translation locates its diagnostics in the input, and the ego's speed written back as a
 // concrete scenario's parameter (m/s in the IR, km/h in the file) reads back as written.
 void expect_translates(const SourceFile& source) {
@@ -86,13 +133,15 @@ void expect_translates(const SourceFile& source) {
     scenario.parameters.push_back(speed);
     values.push_back(scenario.ego.initial.speed->constant);
   }
+  const chs::ParseResult first = chs::parse(source);
+  const std::optional<LanePlaceMove> moved = move_lane_place(*first.file, scenario, values);
   const std::string concrete = chs::print_concrete(source, scenario, values);
+  if (moved) expect_lane_place_back(concrete, *moved);
   const chs::ParseResult reparsed = chs::parse(SourceFile("concrete.chs", concrete));
   if (!reparsed.file) {
     std::fprintf(stderr, "the concrete scenario does not parse:\n%s\n", concrete.c_str());
     __builtin_trap();
   }
-  const chs::ParseResult first = chs::parse(source);
   const chs::File& original = *first.file;
   for (std::size_t i = 0; i < original.dynamic_entities.size(); ++i) {
     const double written = original.dynamic_entities[i].speed.value;

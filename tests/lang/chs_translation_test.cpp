@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lang/chs/chs.hpp"
+#include "lang/chs/lane_places.hpp"
 #include "lang/chs/parser.hpp"
 #include "lang/source_file.hpp"
 #include "tests/lang/test_files.hpp"
@@ -202,18 +203,36 @@ TEST(ChsTranslation, WordsNotReadAreWarnedOf) {
   EXPECT_EQ(parsed.scenario.ego.initial.position.lane, "east_road_f0");
 }
 
-TEST(ChsTranslation, AWrittenPositionIsACoordinateLocatedAtItsNumbers) {
+// east_road's halves are 7 m wide: two lanes of 3.5 m each way.
+TEST(ChsTranslation, AWrittenVehiclePointIsALanePlaceLocatedAtItsNumbers) {
   const std::string text = on_east_road(
       "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n    position: (12.5, 27)\n"
+      "  DynamicEntity2\n    name: van\n    speed: 36\n    position: (300, 35.5)\n"
+      "  DynamicEntity3\n    name: bus\n    speed: 0\n    position: (80, 45)\n"
       "  StaticEntity1\n    name: rock\n    overview: a fallen boulder\n"
       "    position: (150, 28.5)\n");
   const ScenarioParse parsed = read(text);
   ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  // 3 m right of the centre line: the forward lane next to it, 1.25 m right of its centre.
   const Position& ego = parsed.scenario.ego.initial.position;
-  EXPECT_EQ(ego.kind, PositionKind::coordinate);
-  EXPECT_EQ(text_at(text, ego.x.location), "12.5");
-  EXPECT_EQ(text_at(text, ego.y.location), "27");
+  EXPECT_EQ(ego.kind, PositionKind::lane);
+  EXPECT_EQ(ego.lane, "east_road_f0");
+  EXPECT_DOUBLE_EQ(ego.s.constant, 12.5);
+  EXPECT_DOUBLE_EQ(ego.lateral->constant, -1.25);
+  EXPECT_EQ(text_at(text, ego.s.location), "12.5");
+  EXPECT_EQ(text_at(text, ego.lateral->location), "27");
+  // 5.5 m left: the outer lane against the point order, 100 m from its start, 0.25 m right.
+  ASSERT_EQ(parsed.scenario.vehicles.size(), 2u);
+  const Position& van = parsed.scenario.vehicles[0].initial.position;
+  EXPECT_EQ(van.lane, "east_road_b1");
+  EXPECT_DOUBLE_EQ(van.s.constant, 100);
+  EXPECT_DOUBLE_EQ(van.lateral->constant, -0.25);
+  // Beyond the road's boundary a point stays a point; so do obstacles.
+  const Position& bus = parsed.scenario.vehicles[1].initial.position;
+  EXPECT_EQ(bus.kind, PositionKind::coordinate);
+  EXPECT_EQ(text_at(text, bus.y.location), "45");
   ASSERT_EQ(parsed.scenario.obstacles.size(), 1u);
+  EXPECT_EQ(parsed.scenario.obstacles[0].position.kind, PositionKind::coordinate);
   EXPECT_EQ(parsed.scenario.obstacles[0].position.x.constant, 150);
   EXPECT_EQ(parsed.scenario.obstacles[0].shape->kind, ShapeKind::box);
 }
@@ -342,10 +361,13 @@ TEST(ChsTranslation, AConcreteScenarioIsWrittenInTheFilesOwnUnits) {
     s.parameters.push_back(p);
   };
   parameter("car.init.speed", "m/s", s.ego.initial.speed->location);
-  parameter("car.init.position.x", "m", s.ego.initial.position.x.location);
+  parameter("car.init.position.s", "m", s.ego.initial.position.s.location);
+  parameter("car.init.position.lateral", "m", s.ego.initial.position.lateral->location);
   parameter("environment.fog", "", weather(s, "fog")->intensity.location);
   parameter("environment.time", "time of day", s.environment->time_of_day->location);
-  const std::vector<double> values = {15, 20.25, 0.5, 6 * 3600 + 5 * 60 + 9};
+  s.ego.initial.position.s = parameter_value(1, s.ego.initial.position.s.location);
+  s.ego.initial.position.lateral = parameter_value(2, s.ego.initial.position.lateral->location);
+  const std::vector<double> values = {15, 20.25, -0.25, 0.5, 6 * 3600 + 5 * 60 + 9};
   const std::string concrete = print_concrete(file, s, values);
   EXPECT_THAT(concrete, HasSubstr("# concrete scenario of test.chs chosen by scenfuzz:\n"));
   EXPECT_THAT(concrete, HasSubstr("#   car.init.speed = 15 m/s\n"));
@@ -355,9 +377,43 @@ TEST(ChsTranslation, AConcreteScenarioIsWrittenInTheFilesOwnUnits) {
                                                back.diagnostics);
   const DynamicEntity& car = back.file->dynamic_entities[0];
   EXPECT_DOUBLE_EQ(car.speed.value, 54);
+  // The lane place chosen (20.25 m along, 0.25 m right of the lane's centre) as a point.
   EXPECT_DOUBLE_EQ(car.position->x, 20.25);
+  EXPECT_DOUBLE_EQ(car.position->y, 28);
   EXPECT_EQ(car.timestamp.text, "2022-01-30 06:05:09");
   EXPECT_DOUBLE_EQ(back.file->weather.visibility.value, 0.5);
+}
+
+// Any point in a lane of a bent road reads as a place whose point is the one written, so that a
+// finding written back replays the place the search chose.
+TEST(ChsLanePlaces, APlaceReadsBackAsItsPointOnABentRoad) {
+  Road road;
+  road.name.text = "bend";
+  auto polyline = [](std::vector<std::pair<double, double>> points) {
+    std::vector<Point> line;
+    for (auto [x, y] : points) line.push_back(Point{x, y, {}, {}, {}});
+    return line;
+  };
+  road.left_boundary = polyline({{0, 8}, {100, 8}, {180, 68}});
+  road.centre_lines = polyline({{0, 0}, {100, 0}, {180, 60}});
+  road.right_boundary = polyline({{0, -8}, {100, -8}, {180, 52}});
+  const std::vector<Road> roads = {road};
+  EXPECT_EQ(lane_count(road, true), 2);
+  int read = 0;
+  for (double x = 5; x < 175; x += 7.3)
+    for (double y = -7.5; y < 67; y += 1.9) {
+      const std::optional<LanePlace> place = lane_place_at(roads, x, y);
+      if (!place) continue;
+      ++read;
+      const PlanePoint back = point_of(*place);
+      EXPECT_NEAR(back.x, x, 1e-9) << x << ", " << y;
+      EXPECT_NEAR(back.y, y, 1e-9) << x << ", " << y;
+      EXPECT_LT(std::abs(place->lateral), 2.0 + 1e-9) << x << ", " << y;
+    }
+  EXPECT_GT(read, 150);
+  // Off the road: beyond its boundary, before its start.
+  EXPECT_FALSE(lane_place_at(roads, 50, 9));
+  EXPECT_FALSE(lane_place_at(roads, -1, 2));
 }
 
 }  // namespace
