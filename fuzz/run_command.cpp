@@ -27,6 +27,7 @@
 #include "physics/simulation/simulation.hpp"
 #include "physics/trace/trace_export.hpp"
 #include "physics/trace/trace_svg.hpp"
+#include "sampler/mutation_space.hpp"
 #include "sampler/parameter_space.hpp"
 
 namespace scenfuzz {
@@ -276,14 +277,22 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   const ScenarioTemplate& scenario = input->scenario;
 
   const ParameterSpace space = parameter_space(scenario);
-  if (!space.dimensions.empty() && options.at.empty()) {
+  const bool only_events = searched_by_mutation(scenario) && !scenario.parameters.empty();
+  if (!space.dimensions.empty() && options.at.empty() && !only_events) {
     err << "scenfuzz: error: '" << options.path << "' is a logical scenario with "
         << space.dimensions.size()
         << " parameters; choose the point to simulate with --at mid or --at random\n";
     return kExitUsage;
   }
-  const std::vector<double> values =
-      decode(space, unit_point(space.dimensions.size(), options.at, options.seed));
+  std::vector<double> values;
+  if (only_events && options.at.empty()) {
+    // A concrete file with probabilistic events (CH-Scenario) runs as written: every event fires.
+    err << "scenfuzz: note: every probabilistic event fires (--at mid or --at random chooses "
+           "otherwise)\n";
+    values.assign(scenario.parameters.size(), 1);
+  } else {
+    values = decode(space, unit_point(space.dimensions.size(), options.at, options.seed));
+  }
 
   std::vector<std::filesystem::path> map_paths(options.simulation.map_paths.begin(),
                                                options.simulation.map_paths.end());

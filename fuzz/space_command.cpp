@@ -38,8 +38,10 @@ std::string join_choices(const std::vector<std::string>& choices) {
   return text;
 }
 
+// Derived around a concrete file's values; an event's outcome (CH-Scenario) has no such value.
 bool is_derived(const ParameterSpace& space) {
-  return !space.dimensions.empty() && space.dimensions.front().origin.has_value();
+  return std::any_of(space.dimensions.begin(), space.dimensions.end(),
+                     [](const Dimension& d) { return d.origin.has_value(); });
 }
 
 void print_table(const ScenarioTemplate& scenario, const ParameterSpace& space, std::ostream& out) {
@@ -73,7 +75,7 @@ void print_table(const ScenarioTemplate& scenario, const ParameterSpace& space, 
                format_bound(d, d.upper),
                d.unit.empty() ? "-" : d.unit,
                format_location(d.location)};
-    if (derived) row.insert(row.begin() + 2, format_bound(d, d.origin.value_or(0)));
+    if (derived) row.insert(row.begin() + 2, d.origin ? format_bound(d, *d.origin) : "-");
     if (any_discrete) row.push_back(join_choices(d.choices));
     rows.push_back(std::move(row));
   }

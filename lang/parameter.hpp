@@ -29,6 +29,9 @@ struct Parameter {
   // Set when scenfuzz derived the parameter around a concrete file's value (mutation,
   // sampler/mutation_space.hpp): that value, which `location` then spans.
   std::optional<double> origin;
+  // Whether it chooses whether a probabilistic event fires (CH-Scenario's `probability:`): a
+  // concrete file with such choices is still searched by mutation, the choices kept as they are.
+  bool event_outcome = false;
 
   bool operator==(const Parameter&) const = default;
 };

@@ -216,13 +216,22 @@ std::optional<std::string> apply_mutation_option(const std::string& option, Muta
   return std::nullopt;
 }
 
+namespace {
+
+bool only_event_outcomes(const std::vector<Parameter>& parameters) {
+  return std::all_of(parameters.begin(), parameters.end(),
+                     [](const Parameter& parameter) { return parameter.event_outcome; });
+}
+
+}  // namespace
+
 bool searched_by_mutation(const ScenarioTemplate& scenario) {
-  return scenario.has_scenario && scenario.parameters.empty();
+  return scenario.has_scenario && only_event_outcomes(scenario.parameters);
 }
 
 ScenarioTemplate derive_mutation_space(const ScenarioTemplate& scenario,
                                        const MutationSizes& sizes) {
-  SCENFUZZ_DEMAND(scenario.parameters.empty());
+  SCENFUZZ_DEMAND(only_event_outcomes(scenario.parameters));
   ScenarioTemplate derived = scenario;
   Deriver deriver(derived, sizes);
   if (derived.has_scenario) deriver.actor(derived.ego);

@@ -42,14 +42,16 @@ std::string mutation_sizes_text(const MutationSizes& sizes);
 // `--mutate KIND=SIZE` applied to `sizes`; an error message naming the problem, else nullopt.
 std::optional<std::string> apply_mutation_option(const std::string& option, MutationSizes& sizes);
 
-// Whether the search mutates `scenario`: it builds a scenario and has no parameter ranges.
+// Whether the search mutates `scenario`: it builds a scenario and has no parameter ranges (its
+// only parameters, if any, choose whether probabilistic events fire: Parameter::event_outcome).
 bool searched_by_mutation(const ScenarioTemplate& scenario);
 
 // The concrete `scenario` with each mutable number replaced by a derived parameter over
 // [value - half width, value + half width], clipped where the kind has bounds (speeds and lane
 // arc lengths >= 0, intensities in [0, 1], times within the day). A number written once and used
 // in several places (a variable) is one parameter. Numbers with no place in the file (defaults)
-// stay as they are. The scenario must have no parameters of its own (demanded).
+// stay as they are. The scenario's own parameters must all be event outcomes (demanded): they
+// stay, first.
 ScenarioTemplate derive_mutation_space(const ScenarioTemplate& scenario,
                                        const MutationSizes& sizes);
 

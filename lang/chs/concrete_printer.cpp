@@ -94,6 +94,40 @@ void replace_lane_points(const File& file, const ScenarioTemplate& scenario,
     if (entity.position) replace_point(*entity.position);
 }
 
+// The `#` lines naming each value chosen; an event's outcome with its probability, and the
+// probability of all the outcomes chosen together.
+std::string header(const SourceFile& file, const ParseResult& parsed,
+                   const ScenarioTemplate& scenario, std::span<const double> values) {
+  std::map<std::uint32_t, double> probabilities;  // by the offset of the probability's number
+  if (parsed.file)
+    for (const Constraint& constraint : parsed.file->constraints)
+      for (const Event& event : constraint.events)
+        probabilities[event.probability.location.offset] = event.probability.value;
+  std::string text = "# concrete scenario of " + file.path() + " chosen by scenfuzz:\n";
+  double together = 1;
+  bool any_event = false;
+  for (std::size_t i = 0; i < scenario.parameters.size(); ++i) {
+    const Parameter& parameter = scenario.parameters[i];
+    const auto p = probabilities.find(parameter.location.offset);
+    if (parameter.event_outcome && p != probabilities.end()) {
+      const bool fires = values[i] >= 0.5;
+      text += "#   " + parameter.name + " = " + (fires ? "fires" : "does not fire") +
+              " (probability " + format_number(fires ? p->second : 1 - p->second) + ")\n";
+      together *= fires ? p->second : 1 - p->second;
+      any_event = true;
+      continue;
+    }
+    text +=
+        "#   " + parameter.name + " = " + value_text(parameter, values[i], Unit::as_written) +
+        (parameter.unit.empty() || parameter.unit == "time of day" ? "" : " " + parameter.unit) +
+        "\n";
+  }
+  if (any_event)
+    text += "# the events' outcomes chosen have probability " + format_number(together) +
+            " together: at least the failure's, if it needs them\n";
+  return text;
+}
+
 }  // namespace
 
 std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scenario,
@@ -119,16 +153,7 @@ std::string print_concrete(const SourceFile& file, const ScenarioTemplate& scena
   for (auto it = replacements.rbegin(); it != replacements.rend(); ++it)
     if (it->first + it->second.first <= text.size())
       text.replace(it->first, it->second.first, it->second.second);
-  std::string header = "# concrete scenario of " + file.path() + " chosen by scenfuzz:\n";
-  for (std::size_t i = 0; i < scenario.parameters.size(); ++i) {
-    const Parameter& parameter = scenario.parameters[i];
-    header +=
-        "#   " + parameter.name + " = " +
-        value_text(parameter, parameter_values[i], Unit::as_written) +
-        (parameter.unit.empty() || parameter.unit == "time of day" ? "" : " " + parameter.unit) +
-        "\n";
-  }
-  return header + text;
+  return header(file, parsed, scenario, parameter_values) + text;
 }
 
 }  // namespace scenfuzz::chs

@@ -245,8 +245,10 @@ class EntityTranslator {
     actor.initial.location = entity.location;
     actor.initial.speed = located(entity.speed, kKilometresPerHour);
     if (track.manoeuvre == TrackManoeuvre::stop && entity.speed.value > 0) {
-      diagnostics_.warning(entity.speed.location,
-                           entity.name.text + " stands, as its track says: its speed is not used");
+      diagnostics_.warning(
+          entity.speed.location,
+          entity.name.text +
+              " stands, as its track says: its speed is used only when an event drives it off");
       actor.initial.speed = constant_value(0);
     }
     if (words.kind == EntityClass::pedestrian) return walker(entity, track, std::move(actor));

@@ -1,5 +1,5 @@
 // The CH-Scenario translation's driver (translation.hpp): the parts in the order they depend on
-// each other (entities need the map's roads; disasters and specs the ego).
+// each other (entities need the map's roads; disasters, specs and events the road users).
 #include "lang/chs/translation.hpp"
 
 namespace scenfuzz::chs {
@@ -19,6 +19,7 @@ ScenarioTemplate translate(const File& file, Diagnostics& diagnostics) {
   translate_entities(translation);
   translate_environment(translation);
   translate_specs(translation);
+  translate_events(translation);
   return std::move(translation.scenario);
 }
 

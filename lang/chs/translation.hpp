@@ -40,8 +40,10 @@ void translate_map(Translation& translation);
 void translate_entities(Translation& translation);
 // Weather, natural disasters, special high-risk conditions and the time of day.
 void translate_environment(Translation& translation);
-// Safety protocols as specs; constraints' related names and events checked.
+// Safety protocols as specs; constraints' related names checked.
 void translate_specs(Translation& translation);
+// Events as manoeuvre phases started by their guards, a parameter for each one's outcome.
+void translate_events(Translation& translation);
 
 // The whole file. The file must have read without an error.
 ScenarioTemplate translate(const File& file, Diagnostics& diagnostics);

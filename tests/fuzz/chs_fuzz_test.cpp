@@ -1,7 +1,7 @@
 // CH-Scenario end to end, through the real executable as a user runs it: every corpora/ch file is
 // searched by concrete-seed mutation with the budget of 500 and finishes cleanly, its
-// other road users meet the ego as written, and a finding is the user's file with its numbers
-// replaced, which replays to its robustness.
+// other road users meet the ego as written, a finding is the user's file with its numbers
+// replaced, which replays to its robustness, and an event's outcomes are both searched.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -89,6 +89,25 @@ TEST_F(ChsFuzzTest, AFindingIsTheUsersFileWithItsNumbersReplacedAndReplays) {
     same |=
         std::abs(spec["robustness"].get<double>() - findings[0]["robustness"].get<double>()) < 1e-9;
   EXPECT_TRUE(same) << replayed.out << "\n" << findings[0].dump();
+}
+
+// A probabilistic event is a dimension of the search: both of its outcomes are simulated, and a
+// finding says which it needed, written as a certainty so that it replays without a search.
+TEST_F(ChsFuzzTest, BothOutcomesOfAnEventAreSearchedAndAFindingStatesItsProbability) {
+  const Outcome run = fuzz(kCorpus / "parked_van_pulls_out.chs", "1");
+  ASSERT_TRUE(run.exit_code == 0 || run.exit_code == 1) << run.err;
+  const std::string evaluations = slurp(dir_ / "out" / "evaluations.csv");
+  for (const char* outcome : {",fires,", ",does not fire,"})
+    EXPECT_NE(evaluations.find(outcome), std::string::npos) << outcome;
+  for (const nlohmann::json& finding : summary()["findings"]) {
+    const std::string text = slurp(finding["file"].get<std::string>());
+    EXPECT_TRUE(std::regex_search(
+        text,
+        std::regex("#   constraint1\\.event = (fires|does not fire) \\(probability 0\\.[37]\\)")))
+        << text;
+    EXPECT_NE(text.find("# the events' outcomes chosen have probability "), std::string::npos);
+    EXPECT_TRUE(std::regex_search(text, std::regex("\n    probability: [01]\n"))) << text;
+  }
 }
 
 }  // namespace

@@ -123,12 +123,16 @@ TEST(ChsTranslation, TheWorkedExample) {
   EXPECT_EQ(gap.terms[1].kind, TermKind::multiply);
   ASSERT_EQ(distance.operands[1].kind, FormulaKind::negation);
   EXPECT_EQ(distance.operands[1].operands[0].terms[0].name, "brake");
-  // What is not simulated is said: the aim, the traffic light, the two events.
+  // What is not simulated is said: the aim, the traffic light, the two events (the example has no
+  // road user but the ego for them to move).
   const std::string said = format_diagnostics(file, parsed.diagnostics);
   EXPECT_THAT(said, HasSubstr("the aim 'The First People's Hospital' is no road"));
   EXPECT_THAT(said, HasSubstr("traffic lights are not simulated"));
-  EXPECT_THAT(said,
-              HasSubstr("typhoon_minibus.chs:51:5: warning: scenfuzz does not simulate events"));
+  EXPECT_THAT(said, HasSubstr("typhoon_minibus.chs:52:13: warning: the constraint relates with no "
+                              "road user scenfuzz drives"));
+  EXPECT_THAT(said, HasSubstr("typhoon_minibus.chs:58:13: warning: the constraint relates with no "
+                              "road user scenfuzz drives"));
+  EXPECT_TRUE(s.parameters.empty());
 }
 
 TEST(ChsTranslation, AnEntityNamedTheEgoIsTheEgoElseTheFirstVehicle) {

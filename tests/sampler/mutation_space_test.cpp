@@ -168,5 +168,28 @@ TEST(MutationSpace, AScenarioWithRangesIsNotMutated) {
   EXPECT_FALSE(searched_by_mutation(parse.scenario));
 }
 
+// A CH-Scenario event that fires with a probability is a choice of the search's own
+// (Parameter::event_outcome): the file is still concrete, its numbers mutated, the choice kept.
+TEST(MutationSpace, EventOutcomesStayFirstAndTheRestIsMutated) {
+  const avunit::ParseResult parse = avunit::parse(SourceFile("concrete.avu", kConcrete));
+  ASSERT_TRUE(parse.ok());
+  ScenarioTemplate scenario = parse.scenario;
+  Parameter outcome;
+  outcome.name = "constraint1.event";
+  outcome.kind = ParameterKind::discrete;
+  outcome.upper = 1;
+  outcome.choices = {"does not fire", "fires"};
+  outcome.event_outcome = true;
+  scenario.parameters.push_back(outcome);
+  ASSERT_TRUE(searched_by_mutation(scenario));
+  const ScenarioTemplate derived = derive_mutation_space(scenario, MutationSizes{});
+  ASSERT_EQ(derived.parameters.size(), 17u);
+  EXPECT_EQ(derived.parameters[0], outcome);
+  EXPECT_EQ(derived.parameters[1].name, "ego.init.position.s");
+  // Any other parameter of its own makes the file a parameter space, searched as written.
+  scenario.parameters.back().event_outcome = false;
+  EXPECT_FALSE(searched_by_mutation(scenario));
+}
+
 }  // namespace
 }  // namespace scenfuzz
