@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzz the front ends with libFuzzer, each for SECONDS (default 60): build avunit_fuzzer (AVUnit,
-# scenest), wmg_fuzzer (WMG SDL levels 1 and 2) and chs_fuzzer (CH-Scenario) with preset `fuzz`
+# scenest), wmg_fuzzer (WMG SDL levels 1 and 2), chs_fuzzer (CH-Scenario) and acc_fuzzer (the
+# CarSim accident formalism) with preset `fuzz`
 # (clang, ASan + UBSan, in build/fuzz); for each, re-run every saved regression input, then fuzz from a fresh corpus
 # seeded with the project's scenario files. Exits non-zero on any crash, leak, timeout,
 # out-of-memory or printer round-trip mismatch.
@@ -89,3 +90,6 @@ fuzz_one wmg_fuzzer wmg.dict tests/fuzz/regressions-wmg "$root/build/fuzz/wmg-fu
 
 fuzz_one chs_fuzzer chs.dict tests/fuzz/regressions-chs "$root/build/fuzz/chs-fuzz.log" \
   "$root/build/fuzz/artifacts/chs" tests/lang/data/chs
+
+fuzz_one acc_fuzzer acc.dict tests/fuzz/regressions-acc "$root/build/fuzz/acc-fuzz.log" \
+  "$root/build/fuzz/artifacts/acc" corpora/accident tests/lang/data/accident

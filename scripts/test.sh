@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Build and test from scratch on Debian 12: install the packages, configure and build the `ci`
 # preset (warnings are errors), build the executable once more with CMake's default Makefile
-# generator, run every test with ctest, then fuzz the AVUnit, WMG SDL and CH-Scenario front
+# generator, run every test with ctest, then fuzz the AVUnit, WMG SDL, CH-Scenario and accident front
 # ends for a minute each. This is what CI runs (.ci/run).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

@@ -21,19 +21,13 @@
 #include "lang/chs/printer.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/source_file.hpp"
+#include "tests/fuzz/fuzz_checks.hpp"
 
 namespace {
 
 using namespace scenfuzz;
 
-void expect_within(const SourceFile& source, const SourceLocation& where, const char* what) {
-  if (!where.known()) return;
-  if (where.line > source.line_count() || where.end_offset() > source.text().size()) {
-    std::fprintf(stderr, "%s at %u:%u (bytes %u+%u) lies outside the %zu-byte input\n", what,
-                 where.line, where.column, where.offset, where.length, source.text().size());
-    __builtin_trap();
-  }
-}
+using fuzz_checks::expect_within;
 
 void expect_values_within(const SourceFile& source, const chs::File& file) {
   for (const chs::Road& road : file.roads) {
@@ -159,14 +153,7 @@ void expect_translates(const SourceFile& source) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const SourceFile source("fuzz.chs", std::string(reinterpret_cast<const char*>(data), size));
   const chs::ParseResult result = chs::parse(source);
-  (void)format_diagnostics(source, result.diagnostics);
-  for (const Diagnostic& diagnostic : result.diagnostics.all())
-    expect_within(source, diagnostic.location, "a diagnostic");
-  if (result.file.has_value() == result.diagnostics.has_errors()) {
-    std::fprintf(stderr, "a parse %s a file but %s errors\n", result.file ? "gave" : "did not give",
-                 result.diagnostics.has_errors() ? "reported" : "reported no");
-    __builtin_trap();
-  }
+  fuzz_checks::expect_consistent_parse(source, result.diagnostics, result.file.has_value());
   if (result.file) {
     expect_values_within(source, *result.file);
     expect_prints_back(*result.file);

@@ -18,7 +18,6 @@ namespace scenfuzz::chs {
 namespace {
 
 using scenfuzz::test::error_lines;
-using scenfuzz::test::errors_of;
 using scenfuzz::test::MalformedCase;
 using scenfuzz::test::replaced;
 
@@ -394,17 +393,7 @@ TEST_P(ChsMalformed, FirstErrorIsAtTheMistake) {
                                              [](const std::string& t) { (void)parse_text(t); }));
   ParseResult result = parse_text(c.text);
   EXPECT_FALSE(result.file);
-  auto errors = errors_of(result.diagnostics);
-  ASSERT_FALSE(errors.empty()) << c.name;
-  // The first error by place in the file.
-  const Diagnostic* first = errors.front();
-  for (const Diagnostic* d : errors)
-    if (d->location.line < first->location.line ||
-        (d->location.line == first->location.line && d->location.column < first->location.column))
-      first = d;
-  EXPECT_EQ(first->location.line, c.line) << messages(result.diagnostics);
-  EXPECT_EQ(first->location.column, c.column) << messages(result.diagnostics);
-  EXPECT_THAT(first->message, ::testing::HasSubstr(c.message));
+  scenfuzz::test::expect_first_error(c, result.diagnostics, messages(result.diagnostics));
 }
 
 INSTANTIATE_TEST_SUITE_P(Chs, ChsMalformed, ::testing::ValuesIn(malformed_cases()),

@@ -4,6 +4,7 @@
 // case.
 #pragma once
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -73,5 +74,21 @@ struct MalformedCase {
 };
 
 inline std::ostream& operator<<(std::ostream& out, const MalformedCase& c) { return out << c.name; }
+
+// The first error by place in the file is the case's: at its line and column, saying its message.
+// `shown` is the diagnostics as a user sees them, for the failure message.
+inline void expect_first_error(const MalformedCase& c, const Diagnostics& diagnostics,
+                               const std::string& shown) {
+  const std::vector<const Diagnostic*> errors = errors_of(diagnostics);
+  ASSERT_FALSE(errors.empty()) << c.name;
+  const Diagnostic* first = errors.front();
+  for (const Diagnostic* d : errors)
+    if (d->location.line < first->location.line ||
+        (d->location.line == first->location.line && d->location.column < first->location.column))
+      first = d;
+  EXPECT_EQ(first->location.line, c.line) << shown;
+  EXPECT_EQ(first->location.column, c.column) << shown;
+  EXPECT_THAT(first->message, ::testing::HasSubstr(c.message)) << shown;
+}
 
 }  // namespace scenfuzz::test
