@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "command_runner.hpp"
+#include "corpus_search_test_base.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -21,39 +21,14 @@ using test::slurp;
 
 const fs::path kCorpus = fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "ch";
 
-std::vector<fs::path> corpus_files() {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(kCorpus))
-    if (entry.path().extension() == ".chs") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<fs::path> corpus_files() { return test::corpus_files(kCorpus, ".chs"); }
 
-class ChsFuzzTest : public test::CommandTest {
- protected:
-  Outcome fuzz(const fs::path& scenario, const std::string& seed) {
-    return scenfuzz({"--budget", "500", "--seed", seed, "-j", "2", "--quiet", "--out",
-                     (dir_ / "out").string(), scenario.string()});
-  }
-  nlohmann::json summary() const {
-    return nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
-  }
-};
+class ChsFuzzTest : public test::CorpusSearchTest {};
 
 TEST_F(ChsFuzzTest, EveryCorpusFileIsSearchedToTheEndOfItsBudget) {
   const std::vector<fs::path> files = corpus_files();
   ASSERT_GE(files.size(), 6u);
-  for (const fs::path& file : files) {
-    fs::remove_all(dir_ / "out");
-    const Outcome run = fuzz(file, "1");
-    // 0: no finding, 1: findings; never bad input or an internal error.
-    EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 1) << file << "\n" << run.err;
-    if (run.exit_code > 1) continue;
-    const nlohmann::json summary = this->summary();
-    EXPECT_EQ(summary["complete"], true) << file;
-    EXPECT_EQ(summary["stop"], "budget") << file;
-    EXPECT_GE(summary["judged"].get<int>(), 400) << file << ": most points should simulate";
-  }
+  expect_searched_to_budget(files);
 }
 
 TEST_F(ChsFuzzTest, EveryCorpusScenariosRoadUsersMeetTheEgoAsWritten) {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "command_runner.hpp"
+#include "corpus_search_test_base.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -21,37 +21,12 @@ using test::slurp;
 
 const fs::path kCorpus = fs::path(SCENFUZZ_SOURCE_DIR) / "corpora" / "wmg";
 
-class WmgFuzzTest : public test::CommandTest {
- protected:
-  Outcome fuzz(const fs::path& scenario, const std::string& seed,
-               const std::vector<std::string>& extra = {}) {
-    std::vector<std::string> arguments = {
-        "--budget", "500", "--seed", seed, "-j", "2", "--quiet", "--out", (dir_ / "out").string()};
-    arguments.insert(arguments.end(), extra.begin(), extra.end());
-    arguments.push_back(scenario.string());
-    return scenfuzz(arguments);
-  }
-  nlohmann::json summary() const {
-    return nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
-  }
-};
+class WmgFuzzTest : public test::CorpusSearchTest {};
 
 TEST_F(WmgFuzzTest, EveryCorpusFileIsSearchedToTheEndOfItsBudget) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(kCorpus))
-    if (entry.path().extension() == ".sdl") files.push_back(entry.path());
+  const std::vector<fs::path> files = test::corpus_files(kCorpus, ".sdl");
   ASSERT_GE(files.size(), 10u);
-  for (const fs::path& file : files) {
-    fs::remove_all(dir_ / "out");
-    const Outcome run = fuzz(file, "1");
-    // 0: no finding, 1: findings; never bad input or an internal error.
-    EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 1) << file << "\n" << run.err;
-    if (run.exit_code > 1) continue;
-    const nlohmann::json summary = this->summary();
-    EXPECT_EQ(summary["complete"], true) << file;
-    EXPECT_EQ(summary["stop"], "budget") << file;
-    EXPECT_GE(summary["judged"].get<int>(), 400) << file << ": most points should simulate";
-  }
+  expect_searched_to_budget(files);
 }
 
 // Issue 24: at the centre of its space every corpus scenario's actors come near the ego's path
