@@ -90,6 +90,13 @@ std::optional<EgoPlace> choose_ego_place(const File& file, const TrackReading& t
   return best;
 }
 
+// The manoeuvre of a track's lane change (`change lane left`), else null.
+const char* lane_change_of(const TrackReading& track) {
+  if (track.manoeuvre == TrackManoeuvre::change_left) return "LaneChangeLeft";
+  if (track.manoeuvre == TrackManoeuvre::change_right) return "LaneChangeRight";
+  return nullptr;
+}
+
 Position coordinate_position(const Point& point) {
   Position position;
   position.kind = PositionKind::coordinate;
@@ -210,9 +217,13 @@ class EntityTranslator {
     }
     const bool manoeuvre =
         track.manoeuvre != TrackManoeuvre::follow && track.manoeuvre != TrackManoeuvre::stop;
-    if (manoeuvre)
+    if (ego && manoeuvre)
       diagnostics_.warning(entity.track.location,
-                           "lane changes, overtaking and turns in a track are not simulated yet: " +
+                           "the ego is driven by the system under test, which decides itself when "
+                           "to change lanes, overtake or turn");
+    else if (manoeuvre && !lane_change_of(track))
+      diagnostics_.warning(entity.track.location,
+                           "overtaking and turns in a track are not simulated yet: " +
                                entity.name.text + " follows its lane");
     if (ego && track.manoeuvre == TrackManoeuvre::stop)
       diagnostics_.warning(entity.track.location,
@@ -259,6 +270,14 @@ class EntityTranslator {
       auto position = default_vehicle_position(entity, track);
       if (!position) return;
       actor.initial.position = std::move(*position);
+    }
+    if (const char* change = lane_change_of(track)) {
+      // The track's lane change is what the vehicle does first, from the start.
+      ManoeuvrePhase phase;
+      phase.manoeuvre = change;
+      phase.location = entity.track.location;
+      actor.motion.kind = MotionKind::manoeuvres;
+      actor.motion.phases.push_back(std::move(phase));
     }
     t_.scenario.vehicles.push_back(std::move(actor));
   }

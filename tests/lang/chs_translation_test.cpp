@@ -202,9 +202,31 @@ TEST(ChsTranslation, WordsNotReadAreWarnedOf) {
   ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
   const std::string said = messages(parsed.diagnostics);
   EXPECT_THAT(said, HasSubstr("does not read 'zigzag', 'merrily' in a track"));
-  EXPECT_THAT(said, HasSubstr("lane changes, overtaking and turns in a track are not simulated"));
   EXPECT_THAT(said, HasSubstr("cannot tell what 'thing' is"));
   EXPECT_EQ(parsed.scenario.ego.initial.position.lane, "east_road_f0");
+}
+
+// A track's lane change is the vehicle's first manoeuvre, from the start; overtaking and turns are
+// not simulated, and the ego's own manoeuvres are the system under test's to decide.
+TEST(ChsTranslation, ATracksLaneChangeIsTheVehiclesFirstManoeuvre) {
+  const ScenarioParse parsed = read(on_east_road(
+      "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n    track: turn left\n"
+      "  DynamicEntity2\n    name: bus\n    speed: 36\n    track: ahead, change lane left\n"
+      "  DynamicEntity3\n    name: van\n    speed: 36\n    track: overtake the bus\n"));
+  ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  ASSERT_EQ(parsed.scenario.vehicles.size(), 2u);
+  const Motion& bus = parsed.scenario.vehicles[0].motion;
+  ASSERT_EQ(bus.kind, MotionKind::manoeuvres);
+  ASSERT_EQ(bus.phases.size(), 1u);
+  EXPECT_EQ(bus.phases[0].manoeuvre, "LaneChangeLeft");
+  EXPECT_FALSE(bus.phases[0].start_when);
+  EXPECT_EQ(parsed.scenario.vehicles[1].motion.kind, MotionKind::follow_route);
+  const std::string said = messages(parsed.diagnostics);
+  EXPECT_THAT(said, HasSubstr("test.chs:13:12: warning: the ego is driven by the system under "
+                              "test, which decides itself when to change lanes"));
+  EXPECT_THAT(said, HasSubstr("test.chs:21:12: warning: overtaking and turns in a track are not "
+                              "simulated yet: van follows its lane"));
+  EXPECT_THAT(said, ::testing::Not(HasSubstr("bus follows its lane")));
 }
 
 // east_road's halves are 7 m wide: two lanes of 3.5 m each way.
