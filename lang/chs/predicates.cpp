@@ -24,64 +24,6 @@ std::string joined_words(const std::string& name) {
   return joined;
 }
 
-SpecTerm signal_term(const char* name, SourceLocation at, std::vector<SpecTerm> operands) {
-  SpecTerm term;
-  term.kind = TermKind::signal;
-  term.name = name;
-  term.operands = std::move(operands);
-  term.location = at;
-  return term;
-}
-
-SpecTerm word_term(std::string word, SourceLocation at) {
-  SpecTerm term;
-  term.kind = TermKind::word;
-  term.name = std::move(word);
-  term.location = at;
-  return term;
-}
-
-SpecTerm number_term(double value, SourceLocation at) {
-  SpecTerm term;
-  term.kind = TermKind::number;
-  term.value = constant_value(value, at);
-  term.location = at;
-  return term;
-}
-
-SpecTerm product_term(SpecTerm a, SpecTerm b, SourceLocation at) {
-  SpecTerm term;
-  term.kind = TermKind::multiply;
-  term.operands = {std::move(a), std::move(b)};
-  term.location = at;
-  return term;
-}
-
-Formula comparison(CompareOp op, SpecTerm a, SpecTerm b, SourceLocation at) {
-  Formula formula;
-  formula.kind = FormulaKind::comparison;
-  formula.compare = op;
-  formula.terms = {std::move(a), std::move(b)};
-  formula.location = at;
-  return formula;
-}
-
-Formula combined(FormulaKind kind, Formula a, Formula b, SourceLocation at) {
-  Formula formula;
-  formula.kind = kind;
-  formula.operands = {std::move(a), std::move(b)};
-  formula.location = at;
-  return formula;
-}
-
-Formula negated(Formula a, SourceLocation at) {
-  Formula formula;
-  formula.kind = FormulaKind::negation;
-  formula.operands = {std::move(a)};
-  formula.location = at;
-  return formula;
-}
-
 std::optional<Meaning> PredicateTranslator::meaning(const Expression& e) {
   switch (e.kind) {
     case Expression::Kind::name: return names_(e.text, e.location);

@@ -13,6 +13,7 @@
 
 #include "lang/chs/syntax.hpp"
 #include "lang/diagnostic.hpp"
+#include "lang/formula_builders.hpp"
 #include "lang/spec.hpp"
 
 namespace scenfuzz::chs {
@@ -25,14 +26,6 @@ using Meaning = std::variant<Formula, SpecTerm, Truth>;
 
 // The meaning of a name, or nullopt after the resolver has reported why it has none.
 using NameMeaning = std::function<std::optional<Meaning>(const std::string& name, SourceLocation)>;
-
-SpecTerm signal_term(const char* name, SourceLocation at, std::vector<SpecTerm> operands = {});
-SpecTerm word_term(std::string word, SourceLocation at);
-SpecTerm number_term(double value, SourceLocation at);
-SpecTerm product_term(SpecTerm a, SpecTerm b, SourceLocation at);
-Formula comparison(CompareOp op, SpecTerm a, SpecTerm b, SourceLocation at);
-Formula combined(FormulaKind kind, Formula a, Formula b, SourceLocation at);
-Formula negated(Formula a, SourceLocation at);
 
 // "wiper_on", "Wiper On" -> "wiperon": names compare by their words, without case.
 std::string joined_words(const std::string& name);
