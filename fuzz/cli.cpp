@@ -150,6 +150,26 @@ void declare_run(CLI::App& app, Action& action) {
   });
 }
 
+void declare_reconstruct(CLI::App& app, Action& action) {
+  auto options = std::make_shared<ReconstructCommandOptions>();
+  CLI::App* reconstruct = app.add_subcommand(
+      "reconstruct",
+      "Reconstruct an accident description (.acc): search its unknowns (speeds, start distances, "
+      "event timings) for a run in which the described collisions happen as described; write it "
+      "as a replayable AVUnit scenario with the ego in the victim's place, its trace and picture "
+      "(exit 1 when the budget ran out first: the closest run is written)");
+  reconstruct->add_option("FILE", options->path, "accident description (.acc)")
+      ->required()
+      ->type_name("");
+  add_reconstruct_options(reconstruct, *options);
+  reconstruct->callback([options, &action] {
+    action = [options](std::ostream& out, std::ostream& err) {
+      if (!simulation_options_valid(options->simulation, err)) return kExitUsage;
+      return run_reconstruct(*options, out, err);
+    };
+  });
+}
+
 void declare_stl(CLI::App& app, Action& action) {
   auto options = std::make_shared<StlCommandOptions>();
   CLI::App* stl = app.add_subcommand(
@@ -486,8 +506,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   declare_search(app, search, search_entries);
   Action action;
   for (void (*declare)(CLI::App&, Action&) :
-       {declare_check, declare_space, declare_map, declare_run, declare_stl, declare_convert,
-        declare_tmin, declare_coverage, declare_cmin, declare_bench, declare_campaign})
+       {declare_check, declare_space, declare_map, declare_run, declare_reconstruct, declare_stl,
+        declare_convert, declare_tmin, declare_coverage, declare_cmin, declare_bench,
+        declare_campaign})
     declare(app, action);
   try {
     app.parse(argc, argv);

@@ -99,6 +99,7 @@ struct MutationCommandOptions {
 
 struct FuzzCommandOptions {
   std::string path;  // FILE
+#define SCENFUZZ_BUDGET_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
 #define SCENFUZZ_SEARCH_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
 #include "fuzz/options.def"
   SimulationCommandOptions simulation;
@@ -115,6 +116,21 @@ int run_space(const std::string& path, bool json, const MutationCommandOptions& 
 // `scenfuzz [options] FILE`: searches the scenario's parameter space and writes every finding.
 // Exit status kExitSuccess (no finding), kExitViolated (findings), kExitBadInput / kExitUsage.
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err);
+
+struct ReconstructCommandOptions {
+  std::string path;  // FILE.acc
+#define SCENFUZZ_BUDGET_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#define SCENFUZZ_RECONSTRUCT_OPTION(TYPE, FIELD, DEFAULT, ...) TYPE FIELD = DEFAULT;
+#include "fuzz/options.def"
+  SimulationCommandOptions simulation;
+};
+
+// `scenfuzz reconstruct FILE.acc`: searches the accident's unknowns (speeds, start distances,
+// event timings) for a run in which the described collisions happen as described, and writes it
+// as a concrete AVUnit scenario with its trace and picture into --out. kExitSuccess when
+// reconstructed, kExitViolated when the budget ran out first (the closest run is reported and
+// written), kExitBadInput / kExitUsage for a bad file or option.
+int run_reconstruct(const ReconstructCommandOptions& options, std::ostream& out, std::ostream& err);
 
 struct TminCommandOptions {
   std::string path;      // FINDING: a finding of the search, or a plain concrete scenario

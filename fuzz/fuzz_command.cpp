@@ -24,6 +24,7 @@
 #include "fuzz/progress_report.hpp"
 #include "fuzz/report_format.hpp"
 #include "fuzz/scenario_evaluator.hpp"
+#include "fuzz/scenario_language.hpp"
 #include "fuzz/search.hpp"
 #include "fuzz/search_outputs.hpp"
 #include "fuzz/search_strategy.hpp"
@@ -329,6 +330,13 @@ Minimised minimise_search_findings(const FuzzCommandOptions& options, FolderSear
 }  // namespace
 
 int run_fuzz(const FuzzCommandOptions& options, std::ostream& out, std::ostream& err) {
+  if (is_accident_file(options.path)) {
+    // An accident describes what happened, not a space of scenarios to falsify a driver in.
+    err << "scenfuzz: error: '" << options.path
+        << "' is an accident description: 'scenfuzz reconstruct " << options.path
+        << "' reconstructs it and writes a scenario that puts a driver in the victim's place\n";
+    return kExitBadInput;
+  }
   std::optional<ScenarioFile> input = read_scenario(options.path, "search", err, options.choice);
   if (!input) return kExitBadInput;
   // The search targets the specs the oracle can judge; the others are named, with the reason.

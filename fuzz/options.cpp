@@ -228,11 +228,22 @@ void add_mutation_options(CLI::App* app, MutationCommandOptions& options) {
 }
 
 void add_search_options(CLI::App* app, FuzzCommandOptions& options) {
+#define SCENFUZZ_BUDGET_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
+  add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
 #define SCENFUZZ_SEARCH_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
   add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
 #include "fuzz/options.def"
   add_scenario_options(app, options.choice);
   add_mutation_options(app, options.mutation);
+  add_simulation_options(app, options.simulation);
+}
+
+void add_reconstruct_options(CLI::App* app, ReconstructCommandOptions& options) {
+#define SCENFUZZ_BUDGET_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
+  add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
+#define SCENFUZZ_RECONSTRUCT_OPTION(TYPE, FIELD, DEFAULT, SHOWN, NAMES, VALUE, CHECK, HELP) \
+  add_checked_option(app, NAMES, options.FIELD, VALUE, CHECK, HELP, SHOWN);
+#include "fuzz/options.def"
   add_simulation_options(app, options.simulation);
 }
 

@@ -87,6 +87,8 @@ void add_simulation_options(CLI::App* app, SimulationCommandOptions& options);
 void add_run_options(CLI::App* app, RunCommandOptions& options);
 // The search's own options, the mutation's and the simulation's.
 void add_search_options(CLI::App* app, FuzzCommandOptions& options);
+// `reconstruct`'s options: the budget's, its own and the simulation's.
+void add_reconstruct_options(CLI::App* app, ReconstructCommandOptions& options);
 // -j and --seed of the corpus tools, on `options` (CoverageCommandOptions, CminCommandOptions),
 // and the simulation's options.
 template <typename CorpusOptions>

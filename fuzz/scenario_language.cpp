@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "lang/accident/parser.hpp"
+#include "lang/accident/accident.hpp"
 #include "lang/avunit/avunit.hpp"
 #include "lang/avunit/scenario_choice.hpp"
 #include "lang/chs/chs.hpp"
@@ -14,6 +14,10 @@ bool is_wmg_file(const std::string& path) {
   return std::filesystem::path(path).extension() == ".sdl";
 }
 
+bool is_accident_file(const std::string& path) {
+  return std::filesystem::path(path).extension() == ".acc";
+}
+
 namespace {
 
 std::string extension_of(const std::string& path) {
@@ -22,23 +26,15 @@ std::string extension_of(const std::string& path) {
 
 bool is_chs_file(const std::string& path) { return extension_of(path) == ".chs"; }
 
-// An accident description is read and checked, its mistakes reported where they are, but not
-// yet made a scenario: an error either way, so that no command takes it for AVUnit.
-ScenarioParse accident_not_simulated(const SourceFile& file) {
-  ScenarioParse result;
-  accident::ParseResult parsed = accident::parse(file);
-  result.diagnostics = std::move(parsed.diagnostics);
-  if (parsed.file)
-    result.diagnostics.error({1, 1, 0, 0},
-                             "the accident description reads without a mistake, but scenfuzz does "
-                             "not make a scenario of the accident formalism (.acc) yet");
-  return result;
-}
-
 }  // namespace
 
 ScenarioParse parse_scenario_file(const SourceFile& file, const avunit::ParseOptions& choice) {
-  if (extension_of(file.path()) == ".acc") return accident_not_simulated(file);
+  if (is_accident_file(file.path())) {
+    accident::ScenarioParse parsed = accident::parse_scenario(file);
+    ScenarioParse result{std::move(parsed.scenario), std::move(parsed.diagnostics), {}};
+    result.scenarios.push_back(result.scenario.scenario_name);
+    return result;
+  }
   if (is_chs_file(file.path())) {
     chs::ScenarioParse parsed = chs::parse_scenario(file);
     ScenarioParse result{std::move(parsed.scenario), std::move(parsed.diagnostics), {}};

@@ -15,6 +15,8 @@
 namespace scenfuzz {
 
 bool is_wmg_file(const std::string& path);
+// An accident description (`.acc`): reconstructed (`scenfuzz reconstruct`), not searched.
+bool is_accident_file(const std::string& path);
 
 struct ScenarioParse {
   ScenarioTemplate scenario;  // complete only when there are no errors

@@ -1,0 +1,267 @@
+// `scenfuzz reconstruct FILE.acc` (commands.hpp): an accident description's unknowns searched for
+// a run that reproduces its collisions, reported and written as a replayable AVUnit scenario with
+// its trace and picture.
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "fuzz/atomic_file.hpp"
+#include "fuzz/cli.hpp"
+#include "fuzz/commands.hpp"
+#include "fuzz/options.hpp"
+#include "fuzz/reconstruction_scenario.hpp"
+#include "fuzz/reconstruction_search.hpp"
+#include "fuzz/scenario_language.hpp"
+#include "fuzz/significant_digits.hpp"
+#include "fuzz/stop_signals.hpp"
+#include "lang/accident/accident.hpp"
+#include "lang/avunit/avunit.hpp"
+#include "lang/number_format.hpp"
+#include "physics/trace/trace_export.hpp"
+#include "physics/trace/trace_svg.hpp"
+
+namespace scenfuzz {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// What a report prints of a measured number: enough digits to tell runs apart.
+std::string shown(double value) { return format_number(round_to_significant(value, 3)); }
+
+std::string part_name(VehiclePart part) {
+  switch (part) {
+    case VehiclePart::front: return "front";
+    case VehiclePart::rear: return "rear";
+    case VehiclePart::left_side: return "left side";
+    case VehiclePart::right_side: return "right side";
+    case VehiclePart::unknown: return "unknown part";
+  }
+  return "unknown part";
+}
+
+std::string side_name(BodySide side) {
+  switch (side) {
+    case BodySide::front: return "front";
+    case BodySide::rear: return "rear";
+    case BodySide::left: return "left side";
+    case BodySide::right: return "right side";
+  }
+  return "front";
+}
+
+std::optional<accident::ScenarioParse> read_accident(const ReconstructCommandOptions& options,
+                                                     std::optional<SourceFile>& file,
+                                                     std::ostream& err) {
+  if (!is_accident_file(options.path)) {
+    err << "scenfuzz: error: reconstruct reads an accident description (.acc), not '"
+        << options.path << "'\n";
+    return std::nullopt;
+  }
+  file = read_input(options.path, err);
+  if (!file) return std::nullopt;
+  accident::ScenarioParse parsed = accident::parse_scenario(*file, {options.ego});
+  err << format_diagnostics(*file, parsed.diagnostics);
+  if (!parsed.ok()) return std::nullopt;
+  return parsed;
+}
+
+// "truck1's front hit car1's left side at 4.35 s, 0.4 m from the described place".
+std::string collision_text(const ExpectedCollision& expected, const CollisionCheck& check,
+                           std::span<const double> values) {
+  std::string text = expected.striker + "'s " + part_name(expected.striker_part) + " on " +
+                     expected.victim + "'s " + part_name(expected.victim_part) + ": ";
+  if (!check.happened)
+    return text + "no contact; closest approach " + shown(check.closest_approach) + " m";
+  text += "hit at " + shown(check.time) + " s, " + expected.striker + "'s " +
+          side_name(check.striker_side) + " on " + expected.victim + "'s " +
+          side_name(check.victim_side);
+  if (expected.position) {
+    const double dx = check.contact.x - evaluate(expected.position->x, values);
+    const double dy = check.contact.y - evaluate(expected.position->y, values);
+    text += ", " + shown(std::hypot(dx, dy)) + " m from the described place";
+  }
+  if (!check.satisfied) text += " (" + check.problem + ")";
+  return text;
+}
+
+struct Outcome {
+  const ReconstructionSearch& search;
+  const ReconstructionRun& run;
+  std::uint64_t seed = 0;
+};
+
+std::string parameter_text(const ScenarioTemplate& scenario, std::span<const double> values,
+                           std::size_t i) {
+  const Parameter& parameter = scenario.parameters[i];
+  if (parameter.kind == ParameterKind::discrete)
+    return parameter.name + " = " + parameter.choices[static_cast<std::size_t>(values[i])];
+  return parameter.name + " = " + shown(values[i]) +
+         (parameter.unit.empty() ? "" : " " + parameter.unit);
+}
+
+std::vector<std::string> report_lines(const ScenarioTemplate& scenario, const Outcome& outcome) {
+  std::vector<std::string> lines;
+  const std::vector<double>& values = outcome.run.run.values;
+  for (std::size_t i = 0; i < scenario.parameters.size(); ++i)
+    lines.push_back(parameter_text(scenario, values, i));
+  for (std::size_t k = 0; k < scenario.expected_collisions.size(); ++k)
+    lines.push_back(
+        "collision " + std::to_string(k + 1) + ", " +
+        collision_text(scenario.expected_collisions[k], outcome.run.score->collisions[k], values));
+  return lines;
+}
+
+std::string headline(const std::string& path, const Outcome& outcome) {
+  if (outcome.search.reconstructed)
+    return "reconstructed " + path + " in " + std::to_string(outcome.search.simulations) +
+           " simulations (seed " + std::to_string(outcome.seed) + ")";
+  return "not reconstructed " + path + " within " +
+         std::to_string(outcome.search.summary.judged + outcome.search.summary.failed) +
+         " simulations (seed " + std::to_string(outcome.seed) + "); the closest run, simulation " +
+         std::to_string(outcome.search.simulations) + ", misses by " +
+         shown(outcome.run.score->robustness) + " m";
+}
+
+std::string scenario_text(const ScenarioTemplate& accident, const std::string& path,
+                          const Outcome& outcome) {
+  const ScenarioTemplate replay = replay_scenario(accident, *outcome.run.run.trace);
+  std::string text = "// " + headline(path, outcome) + ", by scenfuzz reconstruct\n";
+  for (const std::string& line : report_lines(accident, outcome)) text += "//   " + line + "\n";
+  text += "// The ego, " + accident.ego.name +
+          ", starts as it did and is driven to where it went by the system under test; the "
+          "other vehicles replay their reconstructed runs.\n";
+  if (!accident.traffic.lights.empty())
+    text +=
+        "// The description's light colours are not written: AVUnit cannot set a light; "
+        "the crossroads' signals run their plan from the start.\n";
+  return text + avunit::print(replay);
+}
+
+nlohmann::json summary_json(const ScenarioTemplate& accident, const Outcome& outcome,
+                            const std::vector<std::string>& written) {
+  nlohmann::json summary;
+  summary["reconstructed"] = outcome.search.reconstructed;
+  summary["simulations"] = outcome.search.simulations;
+  summary["simulations_run"] = outcome.search.summary.judged + outcome.search.summary.failed;
+  summary["seed"] = outcome.seed;
+  summary["robustness"] = outcome.run.score->robustness;
+  nlohmann::json parameters = nlohmann::json::object();
+  for (std::size_t i = 0; i < accident.parameters.size(); ++i)
+    parameters[accident.parameters[i].name] = outcome.run.run.values[i];
+  summary["parameters"] = parameters;
+  nlohmann::json collisions = nlohmann::json::array();
+  for (std::size_t k = 0; k < accident.expected_collisions.size(); ++k) {
+    const CollisionCheck& check = outcome.run.score->collisions[k];
+    nlohmann::json item = {{"actor", accident.expected_collisions[k].striker},
+                           {"victim", accident.expected_collisions[k].victim},
+                           {"happened", check.happened},
+                           {"as_described", check.satisfied},
+                           {"robustness", check.robustness}};
+    if (check.happened) {
+      item["time"] = check.time;
+      item["contact"] = {check.contact.x, check.contact.y};
+      item["actor_side"] = side_name(check.striker_side);
+      item["victim_side"] = side_name(check.victim_side);
+    }
+    if (!check.problem.empty()) item["problem"] = check.problem;
+    collisions.push_back(item);
+  }
+  summary["collisions"] = collisions;
+  summary["written"] = written;
+  return summary;
+}
+
+// The scenario, trace and picture of the outcome, then the summary naming them; false after an
+// error on `err`.
+bool write_outputs(const ReconstructCommandOptions& options, const ScenarioTemplate& accident,
+                   const Outcome& outcome, std::ostream& err, std::vector<std::string>& written) {
+  std::error_code error;
+  fs::create_directories(options.out_dir, error);
+  if (error) {
+    err << "scenfuzz: error: cannot create '" << options.out_dir << "': " << error.message()
+        << "\n";
+    return false;
+  }
+  const Trace& trace = *outcome.run.run.trace;
+  std::vector<std::string> lane_ids;
+  for (const Lane& lane : outcome.run.run.map->lanes()) lane_ids.push_back(lane.id);
+  TraceSvgOptions picture;
+  picture.caption.spec = kReconstructionObjective;
+  picture.caption.robustness = outcome.run.score->robustness;
+  const fs::path dir = options.out_dir;
+  const std::vector<std::pair<std::string, std::string>> outputs = {
+      {"reconstruction.avu", scenario_text(accident, options.path, outcome)},
+      {"trace.csv", trace_csv(trace, lane_ids)},
+      {"trace.svg", render_trace_svg(*outcome.run.run.map, trace, picture)}};
+  for (const auto& [name, content] : outputs) {
+    if (std::string failure = write_file_atomically(dir / name, content); !failure.empty()) {
+      err << "scenfuzz: error: " << failure << "\n";
+      return false;
+    }
+    written.push_back((dir / name).string());
+  }
+  written.push_back((dir / "summary.json").string());
+  const std::string summary = summary_json(accident, outcome, written).dump(2) + "\n";
+  if (std::string failure = write_file_atomically(dir / "summary.json", summary);
+      !failure.empty()) {
+    err << "scenfuzz: error: " << failure << "\n";
+    return false;
+  }
+  return true;
+}
+
+SearchOptions search_options(const ReconstructCommandOptions& options) {
+  SearchOptions search;
+  search.algorithm = options.algorithm;
+  search.budget = options.budget;
+  search.time_limit = options.time_limit;
+  search.seed = options.seed;
+  search.jobs = options.jobs;
+  return search;
+}
+
+}  // namespace
+
+int run_reconstruct(const ReconstructCommandOptions& options, std::ostream& out,
+                    std::ostream& err) {
+  std::optional<SourceFile> file;
+  const std::optional<accident::ScenarioParse> parsed = read_accident(options, file, err);
+  if (!parsed) return kExitBadInput;
+  const ScenarioTemplate& accident = parsed->scenario;
+  std::optional<ReconstructionEvaluator> evaluator;
+  try {
+    std::vector<fs::path> map_paths(options.simulation.map_paths.begin(),
+                                    options.simulation.map_paths.end());
+    evaluator.emplace(*file, accident, map_search_path(map_paths),
+                      simulation_options(options.simulation));
+  } catch (const MapError& error) {
+    err << "scenfuzz: error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  StopSignalGuard stop_signals;
+  ReconstructionSearch search;
+  try {
+    search = search_reconstruction(*evaluator, search_options(options),
+                                   [] { return StopSignalGuard::stop_requested(); });
+  } catch (const std::invalid_argument& error) {
+    err << "scenfuzz: error: " << error.what() << "\n";
+    return kExitUsage;
+  }
+  if (!search.best) {
+    err << "scenfuzz: error: no run of '" << options.path
+        << "' could be simulated: every point was infeasible or failed\n";
+    return kExitBadInput;
+  }
+  const ReconstructionRun run = evaluator->reconstruct(search.best->point, search.best->seed);
+  const Outcome outcome{search, run, options.seed};
+  std::vector<std::string> written;
+  if (!write_outputs(options, accident, outcome, err, written)) return kExitBadInput;
+  out << headline(options.path, outcome) << "\n";
+  for (const std::string& line : report_lines(accident, outcome)) out << "  " << line << "\n";
+  for (const std::string& path : written) out << "wrote " << path << "\n";
+  return search.reconstructed ? kExitSuccess : kExitViolated;
+}
+
+}  // namespace scenfuzz
