@@ -126,11 +126,12 @@ std::string headline(const std::string& path, const Outcome& outcome) {
 
 std::string scenario_text(const ScenarioTemplate& accident, const std::string& path,
                           const Outcome& outcome) {
-  const ScenarioTemplate replay = replay_scenario(accident, *outcome.run.run.trace);
+  const ScenarioTemplate replay =
+      replay_scenario(accident, *outcome.run.run.trace, *outcome.run.run.map);
   std::string text = "// " + headline(path, outcome) + ", by scenfuzz reconstruct\n";
   for (const std::string& line : report_lines(accident, outcome)) text += "//   " + line + "\n";
   text += "// The ego, " + accident.ego.name +
-          ", starts as it did and is driven to where it went by the system under test; the "
+          ", starts as it did and is driven where it was going by the system under test; the "
           "other vehicles replay their reconstructed runs.\n";
   if (!accident.traffic.lights.empty())
     text +=
@@ -188,8 +189,12 @@ bool write_outputs(const ReconstructCommandOptions& options, const ScenarioTempl
   std::vector<std::string> lane_ids;
   for (const Lane& lane : outcome.run.run.map->lanes()) lane_ids.push_back(lane.id);
   TraceSvgOptions picture;
-  picture.caption.spec = kReconstructionObjective;
-  picture.caption.robustness = outcome.run.score->robustness;
+  picture.caption.headline =
+      (outcome.search.reconstructed ? "Reconstruction of " : "Closest run to ") +
+      fs::path(options.path).filename().string() + ": " +
+      (outcome.search.reconstructed ? "every collision as described"
+                                    : "misses by " + shown(outcome.run.score->robustness) + " m") +
+      " (" + std::to_string(outcome.search.simulations) + " simulations)";
   const fs::path dir = options.out_dir;
   const std::vector<std::pair<std::string, std::string>> outputs = {
       {"reconstruction.avu", scenario_text(accident, options.path, outcome)},

@@ -5,9 +5,11 @@ namespace scenfuzz {
 
 namespace {
 
-// The whole accident, however many collisions it takes: a run does not end at the first.
+// The whole accident, however many collisions it takes: a run does not end at the first, and
+// the vehicles an impact throws on carry on into the next.
 SimulationOptions through_collisions(SimulationOptions options) {
   options.stop_at_collision = false;
+  options.slide_after_impact = true;
   return options;
 }
 

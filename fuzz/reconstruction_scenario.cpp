@@ -17,41 +17,55 @@ constexpr double kWaypointInterval = 1.0;
 // A vehicle that has moved less than this since its last waypoint has stopped: no new one.
 constexpr double kStandingStill = 0.5;
 
-// Rounded as a person reads them: centimetres, tenths of a degree, centimetres per second.
-double rounded(double value, double unit) { return std::round(value / unit) * unit; }
+// How far past the accident the ego is sent: beyond the junction or the scene, into its lane.
+constexpr double kTargetBeyond = 30;
+
+// Rounded as a person reads them (1 / scale: centimetres, tenths of a degree, ...), to the double
+// nearest the decimal, so that it prints as one.
+double rounded(double value, double scale) { return std::round(value * scale) / scale; }
 
 State state_at(const TraceActor& actor, std::size_t i) {
   State state;
   state.position.kind = PositionKind::coordinate;
-  state.position.x = constant_value(rounded(actor.x[i], 0.01));
-  state.position.y = constant_value(rounded(actor.y[i], 0.01));
+  state.position.x = constant_value(rounded(actor.x[i], 100));
+  state.position.y = constant_value(rounded(actor.y[i], 100));
   Heading heading;
-  heading.angle = constant_value(rounded(actor.heading[i] * 180 / std::numbers::pi, 0.1));
+  heading.angle = constant_value(rounded(actor.heading[i] * 180 / std::numbers::pi, 10));
   heading.unit = AngleUnit::degree;
   state.heading = heading;
-  state.speed = constant_value(rounded(actor.speed[i], 0.01));
+  state.speed = constant_value(rounded(actor.speed[i], 100));
   return state;
 }
 
-const TraceActor& trace_actor(const Trace& trace, const std::string& name) {
+ActorId trace_actor(const Trace& trace, const std::string& name) {
   const std::optional<ActorId> id = trace.find_actor(name);
   SCENFUZZ_DEMAND(id.has_value());
-  return trace.actors[*id];
+  return *id;
 }
 
-// Its run as waypoints every kWaypointInterval, the last sample included.
-Motion waypoints_of(const TraceActor& actor, const Trace& trace) {
+// The sample of the actor's first collision, or the trace's last.
+std::size_t first_collision_sample(const Trace& trace, ActorId actor) {
+  for (const Collision& collision : trace.collisions)
+    if (collision.first == actor || collision.second == actor)
+      return std::min(trace.sample_count() - 1,
+                      static_cast<std::size_t>(std::lround(collision.time / trace.dt)));
+  return trace.sample_count() - 1;
+}
+
+// Its run up to its first collision as waypoints every kWaypointInterval, that moment included:
+// what it did before the impact is the accident's; what an impact made of it afterwards is not
+// what a driver in the ego's place, who may avoid the impact, is to meet.
+Motion waypoints_of(const TraceActor& actor, ActorId id, const Trace& trace) {
   Motion motion;
   motion.kind = MotionKind::waypoints;
   const std::size_t step =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kWaypointInterval / trace.dt)));
-  const std::size_t last = trace.sample_count() - 1;
+  const std::size_t last = first_collision_sample(trace, id);
   std::size_t previous = 0;
   // Every interval up to the last sample, which always ends the path.
   for (std::size_t i = std::min(step, last); i > previous; i = std::min(i + step, last)) {
-    const bool moved =
-        std::hypot(actor.x[i] - actor.x[previous], actor.y[i] - actor.y[previous]) >=
-        kStandingStill;
+    const bool moved = std::hypot(actor.x[i] - actor.x[previous], actor.y[i] - actor.y[previous]) >=
+                       kStandingStill;
     if (moved) {
       motion.states.push_back(state_at(actor, i));
       previous = i;
@@ -62,18 +76,41 @@ Motion waypoints_of(const TraceActor& actor, const Trace& trace) {
   return motion;
 }
 
-Actor replayed(const Actor& described, const Trace& trace) {
-  const TraceActor& actor = trace_actor(trace, described.name);
+// Where the ego was going: the lane it was in when it first collided (the last it was in before,
+// if it was off every lane then), past the junction if it was in one, kTargetBeyond metres on or
+// to the lane's end. An impact may throw it off the road, so where it ended is no target.
+State ego_target(const Trace& trace, const RoadMap& map) {
+  const TraceActor& ego = trace.actors[kEgo];
+  std::size_t i = first_collision_sample(trace, kEgo);
+  while (i > 0 && ego.lane[i] < 0) --i;
+  State target;
+  if (ego.lane[i] < 0) return state_at(ego, trace.sample_count() - 1);
+  LaneIndex lane = static_cast<LaneIndex>(ego.lane[i]);
+  double s = ego.s[i] + kTargetBeyond;
+  for (int hops = 0; map.lane(lane).junction && !map.lane(lane).successors.empty() && hops < 8;
+       ++hops) {
+    lane = map.lane(lane).successors.front();
+    s = kTargetBeyond;
+  }
+  target.position.kind = PositionKind::lane;
+  target.position.lane = map.lane(lane).id;
+  target.position.s = constant_value(rounded(std::min(s, map.lane(lane).length()), 100));
+  return target;
+}
+
+Actor replayed(const Actor& described, const Trace& trace, const RoadMap& map) {
+  const ActorId id = trace_actor(trace, described.name);
+  const TraceActor& actor = trace.actors[id];
   Actor copy;
   copy.kind = described.kind;
   copy.name = described.name;
   copy.type = described.type;
   copy.initial = state_at(actor, 0);
   if (described.kind == ActorKind::ego) {
-    copy.target = state_at(actor, trace.sample_count() - 1);
+    copy.target = ego_target(trace, map);
     copy.motion.kind = MotionKind::follow_route;
   } else {
-    copy.motion = waypoints_of(actor, trace);
+    copy.motion = waypoints_of(actor, id, trace);
   }
   return copy;
 }
@@ -90,7 +127,8 @@ std::string map_with_parameters(const MapReference& map) {
   return name;
 }
 
-ScenarioTemplate replay_scenario(const ScenarioTemplate& accident, const Trace& trace) {
+ScenarioTemplate replay_scenario(const ScenarioTemplate& accident, const Trace& trace,
+                                 const RoadMap& map) {
   SCENFUZZ_DEMAND(trace.sample_count() > 0);
   ScenarioTemplate replay;
   replay.language = SourceLanguage::avunit;
@@ -98,9 +136,9 @@ ScenarioTemplate replay_scenario(const ScenarioTemplate& accident, const Trace& 
   replay.scenario_name = "accident";
   replay.trace_name = "trace";
   replay.map.name = map_with_parameters(accident.map);
-  replay.ego = replayed(accident.ego, trace);
+  replay.ego = replayed(accident.ego, trace, map);
   for (const Actor& vehicle : accident.vehicles)
-    replay.vehicles.push_back(replayed(vehicle, trace));
+    replay.vehicles.push_back(replayed(vehicle, trace, map));
   replay.obstacles = accident.obstacles;
   // The others replay the accident whatever the ego does, as the reconstruction's vehicles did.
   replay.npc_behaviour = NpcBehaviour::scripted;

@@ -390,7 +390,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
           return a.judged() && (!b.judged() || a.robustness < b.robustness);
         });
     if (worst != verdicts.end() && worst->judged())
-      picture.caption = {worst->name, worst->robustness, worst->time, worst->atom_text, "", ""};
+      picture.caption = {worst->name, worst->robustness, worst->time, worst->atom_text, "", "", ""};
     // An ego that failed before the first sample leaves no trace to write.
     if (trace.sample_count() > 0)
       outputs.insert(outputs.begin(), {{"trace.csv", trace_csv(trace, lane_ids)},

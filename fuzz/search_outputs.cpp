@@ -359,8 +359,13 @@ std::string SearchOutputs::write_finding(const Finding& finding, std::string& fa
     picture.caption.spec = finding.objective_name;
     if (!finding.ego_failure()) {
       const SpecVerdict& verdict = run.verdicts[finding.objective];
-      picture.caption = {verdict.name,      verdict.robustness,     verdict.time,
-                         verdict.atom_text, finding.responsibility, finding.collision_reason};
+      picture.caption = {verdict.name,
+                         verdict.robustness,
+                         verdict.time,
+                         verdict.atom_text,
+                         finding.responsibility,
+                         finding.collision_reason,
+                         ""};
     }
     files.emplace_back(finding_path(finding, ".svg"),
                        render_trace_svg(*run.map, *run.trace, picture));

@@ -135,8 +135,19 @@ PartShape part_at(const Trace& trace, ActorId actor, std::size_t sample,
   return part;
 }
 
+MapPoint midpoint(Segment s) { return {(s.a.x + s.b.x) / 2, (s.a.y + s.b.y) / 2}; }
+
+// Between two named faces: how far their middles are apart, never less than their gap. Faces
+// nearly touching at their corners (a front corner grazing a rear corner) are not nearly the
+// described contact, and a search that read the gap alone stalled there; the middles come together
+// only as the faces line up, alongside or head on, as they do in the contact described.
+double face_distance(Segment p, Segment q) {
+  const MapPoint a = midpoint(p), b = midpoint(q);
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
 double part_distance(const PartShape& p, const PartShape& q) {
-  if (p.edge && q.edge) return segment_distance(*p.edge, *q.edge);
+  if (p.edge && q.edge) return face_distance(*p.edge, *q.edge);
   if (p.edge) return segment_body_distance(*p.edge, q.body);
   if (q.edge) return segment_body_distance(*q.edge, p.body);
   return std::max(signed_distance(p.body, q.body), 0.0);

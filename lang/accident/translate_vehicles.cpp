@@ -98,11 +98,9 @@ struct Builder {
   Value value(int parameter) const { return parameter_value(parameter, at); }
 };
 
-// The lane a vehicle starts in, when its chain fixes it: a turn from the lane that has the turn's
-// connector, a move to the left from the kerb lane, to the right from the lane beside it. None
-// when the road has one lane each way or the chain does not say.
-std::optional<int> lane_from_chain(const Vehicle& vehicle, int lanes) {
-  if (lanes == 1) return 0;
+// The lane a chain of events needs to start in: a turn from the lane that has the turn's
+// connector, a move to the left from the kerb lane, to the right from the lane beside it.
+std::optional<int> lane_for_chain(const Vehicle& vehicle, int lanes) {
   for (const Event& event : vehicle.chain) {
     switch (event.kind.value) {
       case EventKind::turn_left:
@@ -112,6 +110,40 @@ std::optional<int> lane_from_chain(const Vehicle& vehicle, int lanes) {
       case EventKind::overtake: return 0;
       default: break;
     }
+  }
+  return std::nullopt;
+}
+
+// The lane a lane change goes to, when the vehicle changes lanes.
+std::optional<int> lane_changed_to(const Vehicle& vehicle, int lanes) {
+  for (const Event& event : vehicle.chain) {
+    if (event.kind.value == EventKind::change_lane_left) return lanes - 1;
+    if (event.kind.value == EventKind::change_lane_right) return 0;
+  }
+  return std::nullopt;
+}
+
+const Vehicle* vehicle_named(const File& file, const std::string& name) {
+  for (const Vehicle& vehicle : file.vehicles)
+    if (vehicle.id.text == name) return &vehicle;
+  return nullptr;
+}
+
+// The lane a vehicle starts in, when the description fixes it: the one its chain needs, else the
+// one a vehicle heading its way changes into to collide with it (a sideswipe's victim is in the
+// lane the other moves to). None when the road has two lanes each way and nothing says which.
+std::optional<int> start_lane(const File& file, const Vehicle& vehicle, int lanes) {
+  if (lanes == 1) return 0;
+  if (auto lane = lane_for_chain(vehicle, lanes)) return lane;
+  for (const Collision& collision : file.collisions) {
+    const bool actor = collision.actor.id.text == vehicle.id.text;
+    if (!actor && collision.victim.id.text != vehicle.id.text) continue;
+    const Vehicle* other =
+        vehicle_named(file, actor ? collision.victim.id.text : collision.actor.id.text);
+    if (!other || !other->init_direction || !vehicle.init_direction ||
+        other->init_direction->value != vehicle.init_direction->value)
+      continue;
+    if (auto lane = lane_changed_to(*other, lanes)) return lane;
   }
   return std::nullopt;
 }
@@ -129,7 +161,7 @@ Value affine(double a, double b, std::optional<int> parameter, SourceLocation at
 State start_state(Builder& b, const Approach& way) {
   const SceneLayout& layout = b.translation.layout;
   const int distance = b.parameter("start_distance", kStartDistance[0], kStartDistance[1], "m");
-  std::optional<int> lane = lane_from_chain(b.vehicle, layout.lanes);
+  std::optional<int> lane = start_lane(b.translation.file, b.vehicle, layout.lanes);
   std::optional<int> lane_choice;
   if (!lane) {
     Parameter p;

@@ -25,6 +25,10 @@ constexpr double kMinimumJerkPeak = 5.7735;
 constexpr double kLaneChangeGripShare = 0.8;
 // A speed within this of its target counts as reached.
 constexpr double kSpeedTolerance = 0.1;  // m/s
+// A heedless script (ManoeuvreScript::heedless) outside its phases: cruising slower than this is
+// standing (as lane_cruise's), and it gets back to its speed at most this briskly (IDM's a there).
+constexpr double kStandingCruise = 0.5;        // m/s
+constexpr double kHeedlessAcceleration = 1.5;  // m/s^2
 
 // Minimum-jerk progress of a lateral move over normalised time x in [0, 1]: 0 to 1 with zero
 // velocity and acceleration at both ends, the shape of a human lane change.
@@ -41,6 +45,12 @@ bool is_turn(const Lane& lane, LaneTurn turn) { return lane.junction && lane.tur
 // own direction jumps there, which at a crawl reads as a turn tighter than any steering allows.
 double smooth_lane_heading(const RoadMap& map, LaneIndex lane, double s) {
   return direction_at(map.lane(lane).centre_line, s).heading;
+}
+
+// How far `other`'s centre line lies from `lane`'s at s.
+double centre_line_distance(const RoadMap& map, LaneIndex lane, double s, LaneIndex other) {
+  const MapPoint centre = map.lane(lane).centre_line.point_at(s);
+  return std::abs(map.lane(other).centre_line.project(centre).lateral);
 }
 
 }  // namespace
@@ -67,12 +77,12 @@ int ManoeuvreDriver::phase() const { return running_ ? static_cast<int>(next_) :
 
 VehicleSignals ManoeuvreDriver::indicator() const {
   if (pedestrian_) return 0;
-  // m off the new lane's centre at the start of a sideways move that is a lane change, not a
-  // small correction towards the centre line.
+  // m a sideways move that is a lane change covers, not a small correction towards the centre.
   constexpr double kLaneChangeOffset = 1.0;
   if (lateral_duration_ > 0 && lateral_elapsed_ < lateral_duration_ &&
-      std::abs(lateral_from_) > kLaneChangeOffset)
-    return lateral_from_ > 0 ? vehicle_signal::right_indicator : vehicle_signal::left_indicator;
+      std::abs(lateral_to_ - lateral_from_) > kLaneChangeOffset)
+    return lateral_from_ > lateral_to_ ? vehicle_signal::right_indicator
+                                       : vehicle_signal::left_indicator;
   if (turn_available_ && !turn_done_) {
     if (turn_wanted_ == LaneTurn::left) return vehicle_signal::left_indicator;
     if (turn_wanted_ == LaneTurn::right) return vehicle_signal::right_indicator;
@@ -82,10 +92,11 @@ VehicleSignals ManoeuvreDriver::indicator() const {
 
 void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, double dt) {
   update_phases(world, self);
-  double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self);
+  double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self, dt);
   held_back_ = false;
-  if (running_ && on_lane_ && !state_.reversing) {
-    // A phase drives as scripted, but not into the traffic ahead (the ego aside).
+  if (running_ && on_lane_ && !state_.reversing && !script_->heedless) {
+    // A phase drives as scripted, but not into the traffic ahead (the ego aside), unless its
+    // script drives without looking.
     NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
     const double limit = phase_leader_limit(world, self, *on_lane_, next, body_);
     if (limit < acceleration) {
@@ -166,6 +177,10 @@ void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self
       change_lane(world, self, phase.choice.side, primitive_duration_);
       if (phase.gap) plan_cut_in(world, phase);
       break;
+    case MotionPrimitive::overtake:
+      primitive_duration_ = phase.duration.value_or(kDefaultLaneChangeTime);
+      overtake(primitive_duration_);
+      break;
     case MotionPrimitive::stop:
       primitive_duration_ = phase.duration.value_or(speed / body_.comfortable_deceleration);
       break;
@@ -234,6 +249,16 @@ void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self
 void ManoeuvreDriver::change_lane(const WorldSnapshot& world, std::uint32_t self, LaneSide side,
                                   double duration) {
   if (!on_lane_) return;
+  if (auto target = lane_change_target(world, self, side)) move_into(*target);
+  // Also without a target lane: settle onto the centre line of the lane it is in.
+  start_lateral_move(0, duration);
+}
+
+std::optional<LaneIndex> ManoeuvreDriver::lane_change_target(const WorldSnapshot& world,
+                                                             std::uint32_t self,
+                                                             LaneSide side) const {
+  // Out on the oncoming lane after an overtake, the way back to the right is its own lane.
+  if (side == LaneSide::right && out_on_oncoming_lane()) return std::nullopt;
   const PhaseMotion& phase = script_->phases[next_];
   const Lane& lane = map_->lane(on_lane_->lane);
   const std::int32_t reference_lane = world.lanes[phase.reference].lane;
@@ -270,22 +295,48 @@ void ManoeuvreDriver::change_lane(const WorldSnapshot& world, std::uint32_t self
       break;
     case LaneSide::left_else_right: target = left.empty() ? first(right) : first(left); break;
   }
-  if (target) {
-    // Continue in the target lane's frame, starting as far to its side as the actor now is.
-    PolylineProjection there = map_->lane(*target).centre_line.project({state_.x, state_.y});
-    on_lane_ = LanePosition{*target, there.s, there.lateral};
+  return target;
+}
+
+void ManoeuvreDriver::overtake(double duration) {
+  if (!on_lane_) return;
+  const Lane& lane = map_->lane(on_lane_->lane);
+  double to = 0;
+  if (!lane.left_forward_neighbours.empty()) {
+    move_into(lane.left_forward_neighbours.front());
+  } else if (!lane.left_reverse_neighbours.empty()) {
+    // Onto the oncoming lane, but still driving its own way: its own lane's frame keeps its
+    // heading and its route, the offset puts it on the other centre line.
+    to = centre_line_distance(*map_, on_lane_->lane, on_lane_->s,
+                              lane.left_reverse_neighbours.front());
   }
-  // Also without a target lane: settle onto the centre line of the lane it is in, no faster than
-  // its tyres allow (a minimum-jerk move of w metres over T seconds peaks at 5.77 w / T^2).
+  start_lateral_move(to, duration);
+}
+
+bool ManoeuvreDriver::out_on_oncoming_lane() const {
+  // Only a lane with no neighbour its way on the left: after a lane change to the right the
+  // actor is beyond its new lane's left edge too, in the lane it is leaving.
+  const Lane& lane = map_->lane(on_lane_->lane);
+  return lane.left_forward_neighbours.empty() && on_lane_->lateral > lane.narrowest_left_width;
+}
+
+void ManoeuvreDriver::move_into(LaneIndex lane) {
+  PolylineProjection there = map_->lane(lane).centre_line.project({state_.x, state_.y});
+  on_lane_ = LanePosition{lane, there.s, there.lateral};
+}
+
+void ManoeuvreDriver::start_lateral_move(double to, double duration) {
+  // No faster than its tyres allow (a minimum-jerk move of w metres over T seconds peaks at
+  // 5.77 w / T^2).
   lateral_from_ = on_lane_->lateral;
+  lateral_to_ = to;
+  const double width = std::abs(lateral_to_ - lateral_from_);
   const double grip = kLaneChangeGripShare * body_.max_deceleration;
-  lateral_duration_ =
-      std::max({duration, std::sqrt(kMinimumJerkPeak * std::abs(lateral_from_) / grip), 1e-3});
+  lateral_duration_ = std::max({duration, std::sqrt(kMinimumJerkPeak * width / grip), 1e-3});
   lateral_elapsed_ = 0;
   // Sideways only as it moves on: over at least the distance that keeps the curve within full
   // lock, so that a car slowed to a crawl (or standing) mid-change does not turn on the spot.
-  const double shortest =
-      std::sqrt(kMinimumJerkPeak * std::abs(lateral_from_) * planning_radius(body_));
+  const double shortest = std::sqrt(kMinimumJerkPeak * width * planning_radius(body_));
   lateral_speed_ = std::max(state_.speed, shortest / lateral_duration_);
 }
 
@@ -375,8 +426,16 @@ double ManoeuvreDriver::longitudinal_acceleration(double dt) const {
   return std::clamp(acceleration, -body_.max_deceleration, body_.max_acceleration);
 }
 
-double ManoeuvreDriver::between_phases(const WorldSnapshot& world, std::uint32_t self) const {
+double ManoeuvreDriver::between_phases(const WorldSnapshot& world, std::uint32_t self,
+                                       double dt) const {
   if (pedestrian_ || !on_lane_ || state_.reversing) return 0;
+  if (script_->heedless) {
+    // Back to its cruising speed after a bend, whatever is ahead; standing where a phase ended
+    // at a standstill.
+    const double wanted = cruise_speed_ < kStandingCruise ? 0 : cruise_speed_;
+    return std::clamp((wanted - state_.speed) / dt, -body_.comfortable_deceleration,
+                      std::min(kHeedlessAcceleration, body_.max_acceleration));
+  }
   NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
   return cruise_acceleration(world, self, *on_lane_, next, body_, cruise_speed_);
 }
@@ -444,9 +503,10 @@ void ManoeuvreDriver::move_on_lane(double acceleration, double dt) {
     const double pace = std::min(1.0, (std::abs(v0) + std::abs(v1)) / 2 / lateral_speed_);
     lateral_elapsed_ += dt * pace;
     double x = std::clamp(lateral_elapsed_ / lateral_duration_, 0.0, 1.0);
-    at.lateral = lateral_from_ * (1 - smooth_progress(x));
-    lateral_slope_ =
-        -lateral_from_ * smooth_progress_rate(x) / (lateral_duration_ * lateral_speed_);
+    // Written so that a move to 0 computes what it did before moves had other targets.
+    at.lateral = lateral_from_ * (1 - smooth_progress(x)) + lateral_to_ * smooth_progress(x);
+    lateral_slope_ = (lateral_to_ - lateral_from_) * smooth_progress_rate(x) /
+                     (lateral_duration_ * lateral_speed_);
     lateral_rate_ = lateral_slope_ * std::min(std::abs(v1), lateral_speed_);
   }
   auto pose = lane_pose_at(*map_, at.lane, at.s, at.lateral);
@@ -519,6 +579,7 @@ bool ManoeuvreDriver::phase_complete(const WorldSnapshot& world, std::uint32_t s
     // Held back by the traffic ahead, the phase's speed may never be reached: its time is up.
     case MotionPrimitive::keep_lane: return elapsed && (speed_reached || held_back_);
     case MotionPrimitive::lane_change:
+    case MotionPrimitive::overtake:
     case MotionPrimitive::cut_in: return elapsed && (speed_reached || held_back_);
     case MotionPrimitive::stop:
     case MotionPrimitive::stopped: return state_.speed <= 0;

@@ -1,7 +1,8 @@
 // Drives one WMG SDL actor through its manoeuvre phases, online: its phases start and end on
 // conditions over the current world (the ego's speed, offsets, lights, timers), so its motion
 // cannot be planned before the run as scripted NPCs' is. Outside its phases a vehicle on a lane
-// drives on reactively (lane_cruise.hpp), and it stops before the end of a lane leading nowhere.
+// drives on reactively (lane_cruise.hpp), or keeps its speed when its script is heedless, and it
+// stops before the end of a lane leading nowhere.
 // Vehicles move along the lane graph (arc length, lateral offset and velocity along the heading,
 // negative when reversing, integrated each step; lane changes are smooth sideways curves in the
 // target lane's frame); pedestrians and vehicles off every lane move freely with the point-mass and
@@ -46,6 +47,16 @@ class ManoeuvreDriver {
   void start_phase(const WorldSnapshot& world, std::uint32_t self);
   bool phase_complete(const WorldSnapshot& world, std::uint32_t self) const;
   void change_lane(const WorldSnapshot& world, std::uint32_t self, LaneSide side, double duration);
+  std::optional<LaneIndex> lane_change_target(const WorldSnapshot& world, std::uint32_t self,
+                                              LaneSide side) const;
+  // One lane to the left: the left neighbour, else out onto the oncoming lane (Overtake).
+  void overtake(double duration);
+  // Whether its centre is beyond its lane's left edge: out on the oncoming lane after an overtake.
+  bool out_on_oncoming_lane() const;
+  // Continues in `lane`'s frame, starting as far to its side as the actor now is.
+  void move_into(LaneIndex lane);
+  // Starts a sideways move from the present lateral offset to `to` in on_lane_'s frame.
+  void start_lateral_move(double to, double duration);
   void plan_cut_in(const WorldSnapshot& world, const PhaseMotion& phase);
   // The velocity along the heading the phase aims for (negative backwards), if it sets one.
   std::optional<double> target_velocity(const PhaseMotion& phase) const;
@@ -56,8 +67,9 @@ class ManoeuvreDriver {
   bool gap_reached(const WorldSnapshot& world, const PhaseMotion& phase) const;
   // Along the heading, negative backwards.
   double longitudinal_acceleration(double dt) const;
-  // Outside its phases: a vehicle on a lane drives on reactively at its cruising speed.
-  double between_phases(const WorldSnapshot& world, std::uint32_t self) const;
+  // Outside its phases: a vehicle on a lane drives on reactively at its cruising speed (heedless:
+  // back to it, whatever is ahead).
+  double between_phases(const WorldSnapshot& world, std::uint32_t self, double dt) const;
   void move_on_lane(double acceleration, double dt);
   void move_free(const WorldSnapshot& world, double acceleration, double dt);
   LaneIndex next_lane(LaneIndex from) const;
@@ -83,10 +95,12 @@ class ManoeuvreDriver {
   // On a lane: where along it and how far to its left.
   std::optional<LanePosition> on_lane_;
   double lateral_rate_ = 0;  // m/s, for the heading
-  // A lateral move towards the lane's centre line: from `lateral_from_` when it starts to 0
-  // `lateral_duration_` seconds later; none when lateral_duration_ is 0. It runs to its end even
-  // when the phase that started it ends first: a car does not stop half-way across a lane line.
+  // A lateral move: from `lateral_from_` when it starts to `lateral_to_` (the lane's centre line,
+  // or the oncoming lane's when overtaking on a road with one lane each way) `lateral_duration_`
+  // seconds later; none when lateral_duration_ is 0. It runs to its end even when the phase that
+  // started it ends first: a car does not stop half-way across a lane line.
   double lateral_from_ = 0;
+  double lateral_to_ = 0;
   double lateral_duration_ = 0;
   double lateral_elapsed_ = 0;  // s since it started, at the planned pace
   double lateral_speed_ = 1;    // m/s the curve is planned for: slower, it progresses less

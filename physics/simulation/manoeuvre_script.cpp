@@ -43,6 +43,8 @@ std::optional<PrimitiveChoice> motion_primitive_named(std::string_view manoeuvre
   if (starts_with(key, "lanechange"))
     return PrimitiveChoice{MotionPrimitive::lane_change,
                            named_side(key, LaneSide::left_else_right)};
+  if (starts_with(key, "overtake"))
+    return PrimitiveChoice{MotionPrimitive::overtake, LaneSide::left};
   if (starts_with(key, "stopped")) return PrimitiveChoice{MotionPrimitive::stopped, {}};
   if (starts_with(key, "stop")) return PrimitiveChoice{MotionPrimitive::stop, {}};
   if (starts_with(key, "turnleft")) return PrimitiveChoice{MotionPrimitive::turn_left, {}};

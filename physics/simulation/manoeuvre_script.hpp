@@ -33,6 +33,10 @@ enum class MotionPrimitive {
   walk_cross,       // Walk/Run/Slide_Cross: straight across the lane
   walk_towards,     // Walk/Run/Slide_Towards: towards the reference
   walk_away,        // Walk/Run/Slide_Away: away from the reference
+  // Overtake: one lane to the left, into the left neighbour lane; on a road with one lane each
+  // way, out onto the oncoming lane while still driving its own way (LaneChangeRight brings it
+  // back).
+  overtake,
 };
 
 // Which neighbour lane a lane change goes to.
@@ -65,6 +69,11 @@ struct PhaseMotion {
 struct ManoeuvreScript {
   KinematicState initial;
   std::vector<PhaseMotion> phases;
+  // Driven along the script without looking, as scripted NPC behaviour asks (an accident
+  // reconstruction: the truck that rear-ends a stopped car must not brake for it): no holding
+  // back for the traffic ahead in a phase, and between and after phases the speed is kept
+  // instead of following the traffic and the lights; only bends and dead ends still slow it.
+  bool heedless = false;
 };
 
 }  // namespace scenfuzz

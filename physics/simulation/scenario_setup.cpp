@@ -436,8 +436,34 @@ std::optional<ManoeuvreScript> manoeuvre_script(Context& context, const Actor& a
   return script;
 }
 
-// Each phase's reference actor and conditions, and the scenario's timers and end conditions,
-// resolved against the prepared actors (`sources[i]` is the scenario's actor of setup.actors[i]).
+// A script's phase references and conditions, resolved against `names` (by actor id: the ego,
+// then the prepared actors); `actor` is the scenario's actor the script was made from.
+void resolve_script(Context& context, const std::vector<std::string>& names,
+                    const TriggerNames& trigger_names, const Actor& actor,
+                    ManoeuvreScript& script) {
+  auto compile = [&](const std::optional<Formula>& formula, std::optional<TriggerCondition>& to) {
+    if (formula) to = compile_trigger(*formula, trigger_names, context.diagnostics);
+  };
+  auto& phases = script.phases;
+  for (std::size_t p = 0; p < phases.size() && p < actor.motion.phases.size(); ++p) {
+    const ManoeuvrePhase& phase = actor.motion.phases[p];
+    if (!phase.reference.empty()) {
+      auto found = std::find(names.begin(), names.end(), phase.reference);
+      if (found == names.end())
+        context.diagnostics.error(where(phase.location, actor.location),
+                                  actor.name + "'s phase " + std::to_string(p + 1) +
+                                      " refers to an unknown actor '" + phase.reference + "'");
+      else
+        phases[p].reference = static_cast<std::uint32_t>(found - names.begin());
+    }
+    compile(phase.start_when, phases[p].start_when);
+    compile(phase.continue_while, phases[p].continue_while);
+  }
+}
+
+// Each phase's reference actor and conditions (the ego's script's too), and the scenario's
+// timers and end conditions, resolved against the prepared actors (`sources[i]` is the
+// scenario's actor of setup.actors[i]).
 void resolve_phases(Context& context, SimulationSetup& setup,
                     const std::vector<const Actor*>& sources) {
   std::vector<std::string> names{setup.ego_name};
@@ -454,32 +480,31 @@ void resolve_phases(Context& context, SimulationSetup& setup,
   }
   TriggerNames trigger_names{context.map, names, setup.timer_names, setup.timer_initial_values,
                              context.values};
-  auto compile = [&](const std::optional<Formula>& formula, std::optional<TriggerCondition>& to) {
-    if (formula) to = compile_trigger(*formula, trigger_names, context.diagnostics);
-  };
-  for (std::size_t i = 0; i < setup.actors.size(); ++i) {
-    if (!setup.actors[i].manoeuvres) continue;
-    const Actor& actor = *sources[i];
-    auto& phases = setup.actors[i].manoeuvres->phases;
-    for (std::size_t p = 0; p < phases.size() && p < actor.motion.phases.size(); ++p) {
-      const ManoeuvrePhase& phase = actor.motion.phases[p];
-      if (!phase.reference.empty()) {
-        auto found = std::find(names.begin(), names.end(), phase.reference);
-        if (found == names.end())
-          context.diagnostics.error(where(phase.location, actor.location),
-                                    actor.name + "'s phase " + std::to_string(p + 1) +
-                                        " refers to an unknown actor '" + phase.reference + "'");
-        else
-          phases[p].reference = static_cast<std::uint32_t>(found - names.begin());
-      }
-      compile(phase.start_when, phases[p].start_when);
-      compile(phase.continue_while, phases[p].continue_while);
-    }
-  }
+  if (setup.ego_script)
+    resolve_script(context, names, trigger_names, context.scenario.ego, *setup.ego_script);
+  for (std::size_t i = 0; i < setup.actors.size(); ++i)
+    if (setup.actors[i].manoeuvres)
+      resolve_script(context, names, trigger_names, *sources[i], *setup.actors[i].manoeuvres);
   for (const Formula& formula : context.scenario.end_conditions) {
     auto condition = compile_trigger(formula, trigger_names, context.diagnostics);
     if (condition) setup.end_conditions.push_back(std::move(*condition));
   }
+}
+
+// Whether the ego replays its phases as a script instead of being driven. Only an accident
+// reconstruction asks that: WMG SDL gives the ego phases too when a sequence names it, and there
+// the ego under test is still driven by its driver (the phases give at most its initial speed).
+bool ego_replays_script(const ScenarioTemplate& scenario) {
+  return scenario.ego.motion.kind == MotionKind::manoeuvres &&
+         scenario.language == SourceLanguage::accident;
+}
+
+// Scripted NPC behaviour: every script, the ego's included, runs without looking.
+void set_heedless(SimulationSetup& setup) {
+  const bool heedless = setup.npc_behaviour == NpcBehaviour::scripted;
+  if (setup.ego_script) setup.ego_script->heedless = heedless;
+  for (ScriptedActor& actor : setup.actors)
+    if (actor.manoeuvres) actor.manoeuvres->heedless = heedless;
 }
 
 // A vehicle that turns at no phase takes the lanes ahead through a junction: straight on, which
@@ -766,6 +791,10 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
     // ahead: it drives without a route, as off the lanes.
     if (setup.ego_route.length < kMinimumEgoRoute) setup.ego_route = {};
   }
+  if (ego_replays_script(scenario)) {
+    setup.ego_script = manoeuvre_script(context, ego, *ego_pose, *ego_speed, setup.ego_body);
+    if (!setup.ego_script) return std::nullopt;
+  }
 
   for (const SpeedLimit& limit : scenario.traffic.speed_limits) {
     auto lane = map.find_lane(limit.lane);
@@ -826,6 +855,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   prepare_lights(context, setup);
   setup.conditions = conditions_of(context);
   setup.npc_behaviour = scenario.npc_behaviour.value_or(NpcBehaviour::reactive);
+  set_heedless(setup);
   if (diagnostics.error_count() > errors_before) return std::nullopt;
   return setup;
 }

@@ -87,6 +87,9 @@ struct SimulationSetup {
   std::optional<MapPose> ego_target;
   // Over the lane graph to the target, or along the lanes ahead when there is none.
   LaneRoute ego_route;
+  // The ego replays a script, as in an accident reconstruction, instead of being driven by the
+  // reference driver or plugin (its phases resolved as the actors' are).
+  std::optional<ManoeuvreScript> ego_script;
   std::vector<ScriptedActor> actors;  // vehicles first, then pedestrians, as in the scenario
   std::vector<StaticObstacle> obstacles;
   std::vector<LightSetting> lights;

@@ -2,7 +2,8 @@
 // actor (state, lane, and how the ego perceived it), check the end conditions, then let the
 // driver choose the ego's control and advance the ego with the bicycle model. Scripted actors
 // are evaluated at each step's time directly, so they accumulate no integration error; actors
-// with manoeuvre phases (WMG SDL) react to the world and are stepped by their ManoeuvreDriver.
+// with manoeuvre phases (WMG SDL) react to the world and are stepped by their ManoeuvreDriver,
+// as is an ego that replays a script (an accident reconstruction) instead of being driven.
 // Background traffic (flows) comes after the obstacles in actor order; its vehicles are actors
 // throughout, present on the map only between their entry and exit (background_traffic.hpp).
 #include "physics/simulation/simulation.hpp"
@@ -23,6 +24,7 @@
 #include "physics/ego/observation_json.hpp"
 #include "physics/ego/plugin_driver.hpp"
 #include "physics/simulation/background_traffic.hpp"
+#include "physics/simulation/impact_slide.hpp"
 #include "physics/simulation/junction_arrivals.hpp"
 #include "physics/simulation/lane_follower.hpp"
 #include "physics/simulation/lane_tracker.hpp"
@@ -182,6 +184,12 @@ std::vector<std::optional<ManoeuvreDriver>> manoeuvre_drivers(const RoadMap& map
   return drivers;
 }
 
+std::optional<ManoeuvreDriver> scripted_ego(const RoadMap& map, const SimulationSetup& setup) {
+  if (!setup.ego_script) return std::nullopt;
+  return std::optional<ManoeuvreDriver>(std::in_place, map, *setup.ego_script, setup.ego_body,
+                                        false);
+}
+
 template <typename T>
 bool any_present(const std::vector<std::optional<T>>& slots) {
   return std::any_of(slots.begin(), slots.end(), [](const auto& slot) { return slot.has_value(); });
@@ -215,6 +223,13 @@ class Run {
  private:
   void add_bodies();
   void prepare_columns();
+  // An impact between bodies a and b: both slide on with the pair's momentum, or a vehicle
+  // stops at an obstacle (impact_slide.hpp).
+  void start_slides(const Contact& contact);
+  double braking_of(std::size_t k) const {
+    return k == kEgo ? setup_.ego_body.max_deceleration
+                     : setup_.actors[k - 1].body.max_deceleration;
+  }
   std::span<const std::uint8_t> present_now() const {
     return traffic_.empty() ? std::span<const std::uint8_t>{}
                             : std::span<const std::uint8_t>(present_);
@@ -231,6 +246,8 @@ class Run {
   // WMG SDL actors with manoeuvre phases react to the world, so they are driven step by step;
   // drivers_[k - 1] belongs to actor k.
   std::vector<std::optional<ManoeuvreDriver>> drivers_;
+  // An ego that replays its script: neither the reference driver nor a plugin drives it.
+  std::optional<ManoeuvreDriver> scripted_ego_;
   // Lane-following NPCs drive reactively unless the scenario or the options say scripted;
   // followers_[k - 1] belongs to actor k.
   std::vector<std::optional<LaneFollower>> followers_;
@@ -254,6 +271,9 @@ class Run {
   EgoIndicators ego_indicators_;
   SignalMemory ego_memory_;
   bool ego_collided_ = false;
+  // By actor id: the velocity of a vehicle sliding after an impact (slide_after_impact), which no
+  // driver moves any more.
+  std::vector<std::optional<MapPoint>> slides_;
   const VehicleSignals weather_lights_;
   // The ego's signals at the sample just written, until its driver decides at this step: what
   // the last sample keeps when the run ends before that.
@@ -297,8 +317,10 @@ Run::Run(const RoadMap& map, const SimulationSetup& setup, const SimulationOptio
       dt_(options.dt),
       duration_(options.duration.value_or(setup.duration)),
       drivers_(manoeuvre_drivers(map, setup)),
+      scripted_ego_(scripted_ego(map, setup)),
       followers_(lane_followers(map, setup, options)),
-      watches_manoeuvres_(!setup.end_conditions.empty() || any_present(drivers_)),
+      watches_manoeuvres_(!setup.end_conditions.empty() || any_present(drivers_) ||
+                          scripted_ego_.has_value()),
       first_obstacle_(1 + setup.actors.size()),
       first_flow_(first_obstacle_ + setup.obstacles.size()),
       traffic_(map, setup, draw_flow_schedule(setup, duration_), first_flow_),
@@ -317,10 +339,11 @@ Run::Run(const RoadMap& map, const SimulationSetup& setup, const SimulationOptio
       signals_(map, setup.lights),
       ego_indicators_(map, route_),
       weather_lights_(weather_signals(weather_)),
-      // At the start, the brake held while it stands, and for the reference driver the
-      // weather's lights (a plugin chooses its own).
-      ego_signals_now_((options.ego_plugin.empty() ? weather_lights_ : VehicleSignals{0}) |
-                       brake_lights(setup.ego_initial.acceleration, setup.ego_initial.speed, true)),
+      // At the start, the brake held while it stands, and for the reference driver (or a
+      // script) the weather's lights (a plugin chooses its own).
+      ego_signals_now_(
+          (options.ego_plugin.empty() || setup.ego_script ? weather_lights_ : VehicleSignals{0}) |
+          brake_lights(setup.ego_initial.acceleration, setup.ego_initial.speed, true)),
       lanes_(actor_count_, LaneTracker(map.widest_half_lane())),
       fixes_(actor_count_),
       manoeuvres_(actor_count_, ObservedManoeuvre::going_ahead),
@@ -330,6 +353,7 @@ Run::Run(const RoadMap& map, const SimulationSetup& setup, const SimulationOptio
       sequence_starts_(actor_count_, std::numeric_limits<double>::quiet_NaN()),
       uses_grid_(actor_count_ >= kGridFromActors),
       last_step_(static_cast<std::size_t>(std::floor(duration_ / dt_ + 1e-9))) {
+  slides_.resize(actor_count_);
   trace_.map_name = map.name();
   trace_.seed = options.seed;
   trace_.dt = dt_;
@@ -351,10 +375,9 @@ void Run::add_bodies() {
   const BodyGeometry ego_geometry = body_geometry(setup_.ego_body);
   trace_.actors.push_back(
       describe(setup_.ego_name, TraceActorKind::ego, setup_.ego_body.category, ego_geometry));
-  world_.add_body(ego_geometry,
-                  {{setup_.ego_initial.x, setup_.ego_initial.y}, setup_.ego_initial.heading},
-                  false);
-  states_.push_back(setup_.ego_initial);
+  const KinematicState ego_start = scripted_ego_ ? scripted_ego_->state() : setup_.ego_initial;
+  world_.add_body(ego_geometry, {{ego_start.x, ego_start.y}, ego_start.heading}, false);
+  states_.push_back(ego_start);
   for (std::size_t i = 0; i < setup_.actors.size(); ++i) {
     const ScriptedActor& actor = setup_.actors[i];
     const BodyGeometry geometry = body_geometry(actor.body);
@@ -409,7 +432,7 @@ void Run::prepare_columns() {
 }
 
 bool Run::start_plugin() {
-  if (options_.ego_plugin.empty()) return true;
+  if (options_.ego_plugin.empty() || scripted_ego_) return true;
   try {
     plugin_.emplace(PluginOptions{options_.ego_plugin, options_.plugin_step_timeout,
                                   options_.plugin_start_timeout},
@@ -423,7 +446,11 @@ bool Run::start_plugin() {
 
 // Every actor to where it is at t, its body with it, and the ego's place on its route.
 void Run::move_actors(std::size_t step, double t) {
+  for (std::size_t k = 0; k < first_obstacle_; ++k)
+    if (slides_[k]) states_[k] = slide_step(states_[k], *slides_[k], braking_of(k), dt_);
+  if (scripted_ego_ && !slides_[kEgo]) states_[kEgo] = scripted_ego_->state();
   for (std::size_t k = 1; k <= setup_.actors.size(); ++k) {
+    if (slides_[k]) continue;
     // Assigned in place: a conditional expression copied the state through the stack.
     if (drivers_[k - 1])
       states_[k] = drivers_[k - 1]->state();
@@ -444,6 +471,7 @@ bool Run::record_collisions(double t) {
   bool ego_hit = false;
   for (const Contact& contact : world_.find_contacts()) {
     world_.ignore_pair(contact.first, contact.second);
+    if (options_.slide_after_impact) start_slides(contact);
     trace_.collisions.push_back(
         {t, contact.first, contact.second, contact.point, contact.first_side, contact.second_side});
     trace_.events.push_back({TraceEventKind::collision,
@@ -454,6 +482,32 @@ bool Run::record_collisions(double t) {
   }
   ego_collided_ = ego_collided_ || ego_hit;
   return ego_hit;
+}
+
+void Run::start_slides(const Contact& contact) {
+  const ActorId a = contact.first, b = contact.second;
+  auto movable = [&](ActorId k) {
+    return k < first_obstacle_ && kinds_[k] != TraceActorKind::pedestrian;
+  };
+  auto obstacle = [&](ActorId k) { return k >= first_obstacle_ && k < first_flow_; };
+  if (movable(a) && obstacle(b)) slides_[a] = MapPoint{0, 0};
+  if (movable(b) && obstacle(a)) slides_[b] = MapPoint{0, 0};
+  if (!movable(a) || !movable(b)) return;
+  auto body = [&](ActorId k) {
+    return ImpactBody{slides_[k] ? *slides_[k] : velocity_of(states_[k]),
+                      impact_mass(trace_.actors[k].category)};
+  };
+  // The face struck broadside gives the normal: a's side face hit by b's front or rear (then it
+  // points into b the other way), else b's face.
+  const bool a_broadside =
+      (contact.first_side == BodySide::left || contact.first_side == BodySide::right) &&
+      (contact.second_side == BodySide::front || contact.second_side == BodySide::rear);
+  MapPoint normal = a_broadside ? face_normal(states_[a].heading, contact.first_side)
+                                : face_normal(states_[b].heading, contact.second_side);
+  if (!a_broadside) normal = {-normal.x, -normal.y};
+  const auto [after_a, after_b] = impact_velocities(body(a), body(b), normal);
+  slides_[a] = after_a;
+  slides_[b] = after_b;
 }
 
 // The step's sample of every actor, their signals and the lights', and what the ego perceives.
@@ -511,6 +565,7 @@ WorldSnapshot Run::look(double t) {
     predictor_.predict(states_, prediction_time_, predicted_);
     grid_.build(states_, predicted_, lengths_, widths_, present_now());
   }
+  if (scripted_ego_) sequence_starts_[kEgo] = scripted_ego_->sequence_start();
   for (std::size_t k = 1; k <= drivers_.size(); ++k)
     if (drivers_[k - 1]) sequence_starts_[k] = drivers_[k - 1]->sequence_start();
   return {&map_,
@@ -555,8 +610,10 @@ bool Run::ends(std::size_t step, double t, bool ego_hit, const WorldSnapshot& sn
   return false;
 }
 
-// Manoeuvre phases react to the world as it is now; they move on to t + dt with the ego.
+// Manoeuvre phases react to the world as it is now; they move on to t + dt with the ego (a
+// scripted ego among them).
 void Run::step_npcs(const WorldSnapshot& snapshot) {
+  if (scripted_ego_) scripted_ego_->step(snapshot, kEgo, dt_);
   for (std::size_t k = 1; k <= drivers_.size(); ++k)
     if (drivers_[k - 1]) drivers_[k - 1]->step(snapshot, static_cast<std::uint32_t>(k), dt_);
   for (std::size_t k = 1; k <= followers_.size(); ++k)
@@ -567,8 +624,19 @@ void Run::step_npcs(const WorldSnapshot& snapshot) {
 }
 
 // The ego's driver (the plugin, or the reference driver) chooses its control and signals, and
-// the ego moves on to t + dt.
+// the ego moves on to t + dt. A scripted ego has moved on with the NPCs: only its signals.
 bool Run::drive_ego(double t) {
+  // Sliding after an impact, it is no one's to drive (move_actors moves it).
+  if (slides_[kEgo]) return true;
+  if (scripted_ego_) {
+    // Its script has moved it on (step_npcs): it shows what a scripted NPC shows.
+    const KinematicState& next = scripted_ego_->state();
+    ego_signals_now_ =
+        static_cast<VehicleSignals>(scripted_ego_->indicator() | weather_lights_ |
+                                    brake_lights(next.acceleration, next.speed, true));
+    trace_.actors[kEgo].signals.back() = ego_signals_now_;
+    return true;
+  }
   VehicleControl control;
   if (plugin_) {
     fill_observation(route_, states_[kEgo], t, *seen_, *colours_, setup_.ego_target.has_value(),

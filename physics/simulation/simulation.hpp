@@ -1,7 +1,8 @@
 // The simulation loop: a prepared scenario stepped at a fixed dt into a Trace. Scripted actors
 // follow their trajectories, the ego is driven by the reference driver (or a plugin in a child
-// process) through its perception, the collision world is checked every step, and the run ends
-// at the duration, when the ego reaches its target, or at its first collision.
+// process) through its perception, unless it replays a script (an accident reconstruction), the
+// collision world is checked every step, and the run ends at the duration, when the ego reaches
+// its target, or at its first collision.
 #pragma once
 
 #include <cstdint>
@@ -19,8 +20,12 @@ struct SimulationOptions {
   double dt = 0.05;                // s per step
   std::optional<double> duration;  // overrides the scenario's
   bool stop_at_collision = true;   // end at the first collision involving the ego
-  std::uint64_t seed = 0;          // perception noise and misses; passed to a plugin
-  PerceptionSettings perception;   // clear-weather figures, degraded by the scenario's weather
+  // At an impact between scenario vehicles (the ego included) or with an obstacle, they stop
+  // following their scripts and slide (impact_slide.hpp): an accident's chain of collisions.
+  // Otherwise bodies pass through each other after their first contact.
+  bool slide_after_impact = false;
+  std::uint64_t seed = 0;         // perception noise and misses; passed to a plugin
+  PerceptionSettings perception;  // clear-weather figures, degraded by the scenario's weather
   DriverSettings driver;
   std::string ego_plugin;          // a shared library to drive the ego; empty: the reference driver
   double plugin_step_timeout = 2;  // s of wall time a plugin may take for one step

@@ -73,6 +73,7 @@ struct TextLine {
 };
 
 std::string title_line(const Trace& trace, const TraceCaption& caption) {
+  if (!caption.headline.empty()) return caption.headline;
   if (caption.spec.empty())
     return "Trace on " + (trace.map_name.empty() ? std::string("a map") : trace.map_name) +
            " (seed " + std::to_string(trace.seed) + ")";
@@ -727,7 +728,8 @@ std::string document_title(const Trace& trace, const TraceCaption& caption) {
       "Trace on " + (trace.map_name.empty() ? std::string("a map") : trace.map_name) + " (seed " +
       std::to_string(trace.seed) + "): ended by " + std::string(end_reason_name(trace.end)) +
       " after " + seconds(trace.time.empty() ? 0 : trace.time.back());
-  if (!caption.spec.empty()) title += "; " + title_line(trace, caption);
+  if (!caption.spec.empty() || !caption.headline.empty())
+    title += "; " + title_line(trace, caption);
   return title;
 }
 

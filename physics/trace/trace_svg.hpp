@@ -23,6 +23,9 @@ struct TraceCaption {
   std::string atom;            // the responsible atom as written
   std::string responsibility;  // of the collision: "ego", "other" or "shared"
   std::string reason;          // why, in one sentence
+  // The title's first line in the caller's words, in place of a spec's verdict (an accident's
+  // reconstruction); empty: the spec's.
+  std::string headline;
 };
 
 struct TraceSvgOptions {

@@ -155,12 +155,13 @@ TEST(AccTranslation, OvertakingGoesOutAndComesBackAfterAPassTime) {
   EXPECT_DOUBLE_EQ(scenario.expected_collisions[0].position->x.constant, 245);
 }
 
-TEST(AccTranslation, TwoLanesEachWayWhenAVehicleChangesLanesAndTheOthersLaneIsSearched) {
+TEST(AccTranslation, TwoLanesEachWayWhenAVehicleChangesLanesAndTheLanesAreReadFromTheAccident) {
   const std::string text = description(
       "straightroad", "",
       vehicle("car1", "car", "east",
               "EVENT [ KIND = driving_forward; ] CRITICAL_EVENT [ KIND = change_lane_left; ]") +
-          vehicle("car2", "car", "east", "EVENT [ KIND = driving_forward; ]"),
+          vehicle("car2", "car", "east", "EVENT [ KIND = driving_forward; ]") +
+          vehicle("car3", "truck", "east", "EVENT [ KIND = driving_forward; ]"),
       "COLLISION [ ACTOR = car1, leftside; VICTIM = car2, rightside; ]\n");
   const ScenarioParse parsed = read(text);
   ASSERT_TRUE(parsed.ok()) << messages(text, parsed.diagnostics);
@@ -169,16 +170,21 @@ TEST(AccTranslation, TwoLanesEachWayWhenAVehicleChangesLanesAndTheOthersLaneIsSe
   for (const NamedValue& parameter : scenario.map.parameters)
     if (parameter.name == "lanes") two_lanes = parameter.value.constant == 2;
   EXPECT_TRUE(two_lanes);
-  // car1 changes left, so it starts in the kerb lane; car2's lane is a choice.
-  EXPECT_THAT(parameter_names(scenario),
-              ElementsAre("car1.start_distance", "car1.speed", "car1.event2.delay",
-                          "car2.start_distance", "car2.lane", "car2.speed"));
-  const Actor& car2 = scenario.ego;
-  ASSERT_EQ(car2.name, "car2");
+  // car1 changes left, so it starts in the kerb lane; car2, which it sideswipes, in the lane it
+  // changes to; car3's lane is a choice.
+  EXPECT_THAT(
+      parameter_names(scenario),
+      ElementsAre("car1.start_distance", "car1.speed", "car1.event2.delay", "car2.start_distance",
+                  "car2.speed", "car3.start_distance", "car3.lane", "car3.speed"));
+  ASSERT_EQ(scenario.ego.name, "car2");
   std::vector<double> values(scenario.parameters.size(), 0);
-  EXPECT_DOUBLE_EQ(evaluate(car2.initial.position.y, values), -5.25);
-  values[4] = 1;  // beside the kerb lane
-  EXPECT_DOUBLE_EQ(evaluate(car2.initial.position.y, values), -1.75);
+  EXPECT_DOUBLE_EQ(evaluate(scenario.ego.initial.position.y, values), -1.75);
+  ASSERT_EQ(scenario.vehicles.size(), 2u);
+  EXPECT_DOUBLE_EQ(evaluate(scenario.vehicles[0].initial.position.y, values), -5.25);
+  const Actor& car3 = scenario.vehicles[1];
+  EXPECT_DOUBLE_EQ(evaluate(car3.initial.position.y, values), -5.25);
+  values[6] = 1;  // beside the kerb lane
+  EXPECT_DOUBLE_EQ(evaluate(car3.initial.position.y, values), -1.75);
 }
 
 TEST(AccTranslation, EgoCanBeAnyNamedVehicleAndAnUnknownOneIsAnError) {

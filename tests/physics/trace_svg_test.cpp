@@ -174,8 +174,8 @@ TEST(TraceSvg, IsAWellFormedDocumentWithEscapedNames) {
 
 TEST(TraceSvg, TitleSaysTheSpecRobustnessResponsibilityAndReason) {
   TraceSvgOptions options;
-  options.caption = {"no_collision",         -0.25, 7.0,
-                     "dis(ego, npc) >= 0.5", "ego", "hit the crossing car's rear"};
+  options.caption = {
+      "no_collision", -0.25, 7.0, "dis(ego, npc) >= 0.5", "ego", "hit the crossing car's rear", ""};
   const std::string svg = render_trace_svg(crossroads(), crossing_trace(), options);
   EXPECT_NE(svg.find(">Spec no_collision violated, robustness -0.25 at 7.00 s</text>"),
             std::string::npos);
@@ -251,7 +251,7 @@ TEST(TraceSvg, WithoutACollisionTheInsetIsAtTheVerdictsTime) {
   trace.collisions.clear();
   trace.end = EndReason::duration;
   TraceSvgOptions options;
-  options.caption = {"keep_distance", -1, 2.0, "", "", ""};
+  options.caption = {"keep_distance", -1, 2.0, "", "", "", ""};
   const std::string svg = render_trace_svg(crossroads(), trace, options);
   EXPECT_NE(svg.find("Zoomed on the verdict&apos;s time at 2.00 s"), std::string::npos);
   // At 2 s the ego is at x = -30: the inset is about it, not about the junction.
@@ -365,7 +365,8 @@ TEST(TraceSvg, LongStraightDriveKeepsABoundedAspectRatioAndItsLabelsApart) {
                      12,
                      "",
                      "other",
-                     std::string(300, 'x')};  // a word longer than any line
+                     std::string(300, 'x'),  // a word longer than any line
+                     ""};
   const std::string svg = render_trace_svg(crossroads(), trace, options);
   EXPECT_EQ(xml_problem(svg), "");
   EXPECT_EQ(test::layout_problems(svg), "");
@@ -373,7 +374,7 @@ TEST(TraceSvg, LongStraightDriveKeepsABoundedAspectRatioAndItsLabelsApart) {
 
 TEST(TraceSvg, EveryCrossingPictureKeepsItsLabelsOnTheCanvasApart) {
   TraceSvgOptions options;
-  options.caption = {"no_collision", -0.5, 7, "", "shared", "both entered the junction"};
+  options.caption = {"no_collision", -0.5, 7, "", "shared", "both entered the junction", ""};
   EXPECT_EQ(test::layout_problems(render_trace_svg(crossroads(), crossing_trace(), options)), "");
   // Names at the picture's edge (the old picture cut them: "ego_vehic").
   Trace edge = crossing_trace();
