@@ -48,7 +48,9 @@ struct CollisionCheck {
   BodySide striker_side = BodySide::front;
   BodySide victim_side = BodySide::front;
   // When not happened: the smallest distance (m) over the run between the named parts (the whole
-  // body for `unknown`); +inf when the two were never on the map together.
+  // body for `unknown`; between two named faces, how far their middles are apart, since the gap
+  // alone stalled searches on corners grazing each other); +inf when the two were never on the
+  // map together.
   double closest_approach = 0;
   // What is wrong, in one sentence for a report ("truck1 hit car1 with its front on car1's rear,
   // not its left side"); empty when satisfied.

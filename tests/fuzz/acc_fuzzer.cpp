@@ -2,13 +2,16 @@
 // bytes: parsing and formatting the diagnostics must not crash, leak or hang; a parse gives a
 // file exactly when it reports no error; every diagnostic and every located value lies within
 // the input; a file that parses prints to text that parses, without a diagnostic, to an equal
-// tree. Built by scripts/fuzz.sh (SCENFUZZ_FUZZ=ON, clang, ASan + UBSan).
+// tree, and translates into a scenario (or a located error) with the ego among its vehicles, a
+// search range for every unknown and an expected collision for every collision. Built by
+// scripts/fuzz.sh (SCENFUZZ_FUZZ=ON, clang, ASan + UBSan).
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
 
+#include "lang/accident/accident.hpp"
 #include "lang/accident/parser.hpp"
 #include "lang/accident/printer.hpp"
 #include "lang/diagnostic.hpp"
@@ -86,6 +89,25 @@ void expect_prints_back(const accident::File& file) {
   }
 }
 
+void fail(const char* what, const SourceFile& source) {
+  std::fprintf(stderr, "translation: %s\n--- input ---\n%s\n", what, source.text().c_str());
+  __builtin_trap();
+}
+
+void expect_translates(const SourceFile& source, const accident::File& file) {
+  const accident::ScenarioParse translated = accident::parse_scenario(source);
+  for (const Diagnostic& diagnostic : translated.diagnostics.all())
+    expect_within(source, diagnostic.location, "a translation diagnostic");
+  if (!translated.ok()) return;
+  const ScenarioTemplate& scenario = translated.scenario;
+  if (scenario.ego.kind != ActorKind::ego || scenario.vehicles.size() + 1 != file.vehicles.size())
+    fail("the ego and the other vehicles are not the description's vehicles", source);
+  for (const Parameter& parameter : scenario.parameters)
+    if (!(parameter.lower <= parameter.upper)) fail("an inverted search range", source);
+  if (scenario.expected_collisions.size() != file.collisions.size())
+    fail("a collision is not expected", source);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -95,6 +117,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (result.file) {
     expect_values_within(source, *result.file);
     expect_prints_back(*result.file);
+    expect_translates(source, *result.file);
   }
   return 0;
 }
