@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "fuzz/journal_replay.hpp"
+#include "fuzz/options.hpp"
 #include "fuzz/report_format.hpp"
 #include "lang/demand.hpp"
 #include "oracle/robustness.hpp"
@@ -126,12 +127,7 @@ void FolderSearch::warn(const std::string& warning) {
 }
 
 SearchOptions search_plan(const FuzzCommandOptions& options) {
-  SearchOptions plan;
-  plan.algorithm = options.algorithm;
-  plan.budget = options.budget;
-  plan.time_limit = options.time_limit;
-  plan.seed = options.seed;
-  plan.jobs = options.jobs;
+  SearchOptions plan = budget_search_options(options);
   plan.sub_violation_targets = options.target == "sub-violations";
   return plan;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fuzz/commands.hpp"
+#include "fuzz/search.hpp"
 #include "lang/scenario.hpp"
 #include "lang/spec.hpp"
 #include "oracle/judge.hpp"
@@ -124,6 +125,16 @@ std::vector<std::string> duration_warnings(const SimulationCommandOptions& optio
 
 // What the simulation is asked for by the command line's options (the seed apart).
 SimulationOptions simulation_options(const SimulationCommandOptions& options);
+
+// The search's options the BUDGET rows of fuzz/options.def set, from a command's options (the
+// search's, `reconstruct`'s): each row's field has the same name in SearchOptions.
+template <typename CommandOptions>
+SearchOptions budget_search_options(const CommandOptions& options) {
+  SearchOptions search;
+#define SCENFUZZ_BUDGET_OPTION(TYPE, FIELD, ...) search.FIELD = options.FIELD;
+#include "fuzz/options.def"
+  return search;
+}
 
 // The scenario as the command line overrides it: --npc-behaviour replaces the scenario's own
 // switch, so that setting up the simulation (its warnings included) sees the behaviour it runs.

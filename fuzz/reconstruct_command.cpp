@@ -217,16 +217,6 @@ bool write_outputs(const ReconstructCommandOptions& options, const ScenarioTempl
   return true;
 }
 
-SearchOptions search_options(const ReconstructCommandOptions& options) {
-  SearchOptions search;
-  search.algorithm = options.algorithm;
-  search.budget = options.budget;
-  search.time_limit = options.time_limit;
-  search.seed = options.seed;
-  search.jobs = options.jobs;
-  return search;
-}
-
 }  // namespace
 
 int run_reconstruct(const ReconstructCommandOptions& options, std::ostream& out,
@@ -248,7 +238,7 @@ int run_reconstruct(const ReconstructCommandOptions& options, std::ostream& out,
   StopSignalGuard stop_signals;
   ReconstructionSearch search;
   try {
-    search = search_reconstruction(*evaluator, search_options(options),
+    search = search_reconstruction(*evaluator, budget_search_options(options),
                                    [] { return StopSignalGuard::stop_requested(); });
   } catch (const std::invalid_argument& error) {
     err << "scenfuzz: error: " << error.what() << "\n";

@@ -5,6 +5,7 @@
 #include <string>
 #include <variant>
 
+#include "lang/formula_builders.hpp"
 #include "lang/wmg/scenario_translation.hpp"
 
 namespace scenfuzz::wmg {
@@ -14,49 +15,30 @@ namespace {
 constexpr double kKilometresPerHour = 3.6;
 
 SpecTerm word(const std::string& text, SourceLocation location) {
-  SpecTerm term;
-  term.kind = TermKind::word;
-  term.name = text;
-  term.location = location;
-  return term;
+  return word_term(text, location);
 }
 
 SpecTerm signal(const std::string& name, const std::vector<std::string>& arguments,
                 SourceLocation location) {
-  SpecTerm term;
-  term.kind = TermKind::signal;
-  term.name = name;
-  term.location = location;
-  for (const std::string& argument : arguments) term.operands.push_back(word(argument, location));
-  return term;
+  std::vector<SpecTerm> operands;
+  for (const std::string& argument : arguments) operands.push_back(word_term(argument, location));
+  return signal_term(name.c_str(), location, std::move(operands));
 }
 
 SpecTerm number(Value value, SourceLocation location) {
-  SpecTerm term;
-  term.kind = TermKind::number;
-  term.value = std::move(value);
-  term.location = location;
-  return term;
+  return value_term(std::move(value), location);
 }
 
 Formula compare(SpecTerm left, CompareOp op, SpecTerm right, SourceLocation location) {
-  Formula formula;
-  formula.kind = FormulaKind::comparison;
-  formula.compare = op;
-  formula.terms = {std::move(left), std::move(right)};
-  formula.location = location;
-  return formula;
+  return comparison(op, std::move(left), std::move(right), location);
 }
 
 // The formulas joined by `&`, left to right; a single formula stands alone.
 Formula all_of(std::vector<Formula> formulas, SourceLocation location) {
   Formula result = std::move(formulas.front());
   for (std::size_t i = 1; i < formulas.size(); ++i) {
-    Formula joined;
-    joined.kind = FormulaKind::conjunction;
-    joined.operands = {std::move(result), std::move(formulas[i])};
-    joined.location = location;
-    result = std::move(joined);
+    result =
+        combined(FormulaKind::conjunction, std::move(result), std::move(formulas[i]), location);
   }
   return result;
 }
