@@ -170,6 +170,10 @@ nlohmann::json summary_json(const ScenarioTemplate& accident, const Outcome& out
     collisions.push_back(item);
   }
   summary["collisions"] = collisions;
+  nlohmann::json undescribed = nlohmann::json::array();
+  for (const UndescribedCollision& extra : outcome.run.score->undescribed)
+    undescribed.push_back({{"actors", {extra.first, extra.second}}, {"time", extra.time}});
+  summary["undescribed_collisions"] = undescribed;
   summary["written"] = written;
   return summary;
 }

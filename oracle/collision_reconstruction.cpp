@@ -384,21 +384,55 @@ std::optional<BodySide> body_side_of(VehiclePart part) {
   return std::nullopt;
 }
 
+namespace {
+
+bool described(const std::vector<NamedPair>& pairs, const Collision& collision) {
+  for (const NamedPair& pair : pairs)
+    if ((collision.first == pair.striker && collision.second == pair.victim) ||
+        (collision.first == pair.victim && collision.second == pair.striker))
+      return true;
+  return false;
+}
+
+// The collisions the description does not list, up to `until` (s).
+std::vector<UndescribedCollision> undescribed_collisions(const Trace& trace,
+                                                         const std::vector<NamedPair>& pairs,
+                                                         double until) {
+  std::vector<UndescribedCollision> found;
+  for (const Collision& collision : trace.collisions) {
+    if (collision.time > until || described(pairs, collision)) continue;
+    found.push_back({trace.actors[collision.first].name, trace.actors[collision.second].name,
+                     collision.time,
+                     kReconstructionMargin + (until - collision.time) * kOrderSpeed});
+  }
+  return found;
+}
+
+}  // namespace
+
 ReconstructionScore score_reconstruction(const Trace& trace,
                                          const std::vector<ExpectedCollision>& expected,
                                          std::span<const double> parameter_values) {
-  ReconstructionScore score{-kInfinity, {}};
+  ReconstructionScore score{-kInfinity, {}, {}};
   std::optional<double> latest;  // the latest time of the earlier collisions that happened
+  std::vector<NamedPair> pairs;
+  bool all_happened = true;
   for (const ExpectedCollision& e : expected) {
     const NamedPair pair = named_pair(trace, e);
+    pairs.push_back(pair);
     const std::optional<MapPoint> place = described_place(trace, e, parameter_values);
     const Collision* contact = contact_between(trace, pair.striker, pair.victim);
     CollisionCheck check =
         contact ? touched(trace, pair, *contact, place, latest) : missed(trace, pair);
     if (check.happened) latest = std::max(latest.value_or(check.time), check.time);
+    all_happened = all_happened && check.happened;
     score.robustness = std::max(score.robustness, check.robustness);
     score.collisions.push_back(std::move(check));
   }
+  const double end = trace.time.empty() ? 0 : trace.time.back();
+  score.undescribed = undescribed_collisions(trace, pairs, all_happened && latest ? *latest : end);
+  for (const UndescribedCollision& extra : score.undescribed)
+    score.robustness = std::max(score.robustness, extra.robustness);
   return score;
 }
 

@@ -57,13 +57,26 @@ struct CollisionCheck {
   std::string problem;
 };
 
-struct ReconstructionScore {
-  // The max over the described collisions (all must hold); -inf when none is described.
-  double robustness = 0;
-  std::vector<CollisionCheck> collisions;  // one per described collision, in order
+// A collision the description does not list, before its last one: a run with it is not the
+// accident described (an overtaking car that first rear-ends the truck it overtakes).
+struct UndescribedCollision {
+  std::string first, second;  // the actors' names
+  double time = 0;
+  double robustness = 0;  // > 0: how far it weighs against the run
 };
 
-// Scores `trace` against `expected`, in the order described. Places are evaluated with
+struct ReconstructionScore {
+  // The max over the described collisions (all must hold) and the undescribed ones; -inf when
+  // none is described and nothing collided.
+  double robustness = 0;
+  std::vector<CollisionCheck> collisions;  // one per described collision, in order
+  std::vector<UndescribedCollision> undescribed;
+};
+
+// Scores `trace` against `expected`, in the order described. A collision between a pair the
+// description does not list, no later than the last described collision that happened (or at any
+// time while one has not), scores kReconstructionMargin + kOrderSpeed x how long before that it
+// came, so that a search pushes it out of the accident. Places are evaluated with
 // `parameter_values`; they must be coordinates in the ENU frame, or IMU (relative to the ego's
 // initial pose). Throws std::invalid_argument for a name that is no actor of the trace, a
 // collision of an actor with itself, or a place of another kind: the translation of a

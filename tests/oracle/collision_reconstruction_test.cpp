@@ -309,6 +309,21 @@ TEST(CollisionReconstructionTest, TwoCollisionsWhereOnlyTheFirstHappenedArePosit
   EXPECT_NEAR(s.robustness, 2 + kReconstructionMargin, 1e-9);
 }
 
+TEST(CollisionReconstructionTest, ACollisionNotDescribedBeforeTheLastDescribedOneIsPositive) {
+  // Only the t-bone is described; car1 also hits car2, before it or after it.
+  const ReconstructionScore before = score(chain(1.5, 1.0), {t_bone()});
+  ASSERT_EQ(before.undescribed.size(), 1u);
+  EXPECT_EQ(before.undescribed[0].first, "car1");
+  EXPECT_EQ(before.undescribed[0].second, "car2");
+  EXPECT_NEAR(before.robustness, 0.5 * kOrderSpeed + kReconstructionMargin, 1e-9);
+  // The later it comes, the nearer the run is to the accident described.
+  EXPECT_LT(score(chain(1.5, 1.4), {t_bone()}).robustness, before.robustness);
+  // After the accident described, what else happened is not the description's.
+  const ReconstructionScore after = score(chain(1.0, 1.5), {t_bone()});
+  EXPECT_TRUE(after.undescribed.empty());
+  EXPECT_LT(after.robustness, 0);
+}
+
 TEST(CollisionReconstructionTest, NoDescribedCollisionIsVacuouslyMet) {
   const ReconstructionScore s = score(crossing(3), {});
   EXPECT_TRUE(s.collisions.empty());
