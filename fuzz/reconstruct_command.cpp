@@ -9,6 +9,8 @@
 #include "fuzz/atomic_file.hpp"
 #include "fuzz/cli.hpp"
 #include "fuzz/commands.hpp"
+#include "fuzz/driver_test.hpp"
+#include "fuzz/driver_test_report.hpp"
 #include "fuzz/options.hpp"
 #include "fuzz/reconstruction_scenario.hpp"
 #include "fuzz/reconstruction_search.hpp"
@@ -17,7 +19,9 @@
 #include "fuzz/stop_signals.hpp"
 #include "lang/accident/accident.hpp"
 #include "lang/avunit/avunit.hpp"
+#include "lang/demand.hpp"
 #include "lang/number_format.hpp"
+#include "oracle/collision_reconstruction.hpp"
 #include "physics/trace/trace_export.hpp"
 #include "physics/trace/trace_svg.hpp"
 
@@ -29,27 +33,6 @@ namespace fs = std::filesystem;
 
 // What a report prints of a measured number: enough digits to tell runs apart.
 std::string shown(double value) { return format_number(round_to_significant(value, 3)); }
-
-std::string part_name(VehiclePart part) {
-  switch (part) {
-    case VehiclePart::front: return "front";
-    case VehiclePart::rear: return "rear";
-    case VehiclePart::left_side: return "left side";
-    case VehiclePart::right_side: return "right side";
-    case VehiclePart::unknown: return "unknown part";
-  }
-  return "unknown part";
-}
-
-std::string side_name(BodySide side) {
-  switch (side) {
-    case BodySide::front: return "front";
-    case BodySide::rear: return "rear";
-    case BodySide::left: return "left side";
-    case BodySide::right: return "right side";
-  }
-  return "front";
-}
 
 std::optional<accident::ScenarioParse> read_accident(const ReconstructCommandOptions& options,
                                                      std::optional<SourceFile>& file,
@@ -70,13 +53,13 @@ std::optional<accident::ScenarioParse> read_accident(const ReconstructCommandOpt
 // "truck1's front hit car1's left side at 4.35 s, 0.4 m from the described place".
 std::string collision_text(const ExpectedCollision& expected, const CollisionCheck& check,
                            std::span<const double> values) {
-  std::string text = expected.striker + "'s " + part_name(expected.striker_part) + " on " +
-                     expected.victim + "'s " + part_name(expected.victim_part) + ": ";
+  std::string text = expected.striker + "'s " + vehicle_part_words(expected.striker_part) + " on " +
+                     expected.victim + "'s " + vehicle_part_words(expected.victim_part) + ": ";
   if (!check.happened)
     return text + "no contact; closest approach " + shown(check.closest_approach) + " m";
   text += "hit at " + shown(check.time) + " s, " + expected.striker + "'s " +
-          side_name(check.striker_side) + " on " + expected.victim + "'s " +
-          side_name(check.victim_side);
+          body_side_words(check.striker_side) + " on " + expected.victim + "'s " +
+          body_side_words(check.victim_side);
   if (expected.position) {
     const double dx = check.contact.x - evaluate(expected.position->x, values);
     const double dy = check.contact.y - evaluate(expected.position->y, values);
@@ -90,7 +73,12 @@ struct Outcome {
   const ReconstructionSearch& search;
   const ReconstructionRun& run;
   std::uint64_t seed = 0;
+  std::string replay_text;           // reconstruction.avu
+  std::optional<DriverTest> driver;  // when reconstructed
+  DriverSeat seat;
 };
+
+using NamedText = std::pair<std::string, std::string>;  // a file's name in --out, its content
 
 std::string parameter_text(const ScenarioTemplate& scenario, std::span<const double> values,
                            std::size_t i) {
@@ -140,8 +128,9 @@ std::string scenario_text(const ScenarioTemplate& accident, const std::string& p
   return text + avunit::print(replay);
 }
 
-nlohmann::json summary_json(const ScenarioTemplate& accident, const Outcome& outcome,
-                            const std::vector<std::string>& written) {
+// The summary of a reconstruction: its numbers, each described collision as it happened, the
+// undescribed ones, and the driver test when there was one.
+nlohmann::json summary_json(const ScenarioTemplate& accident, const Outcome& outcome) {
   nlohmann::json summary;
   summary["reconstructed"] = outcome.search.reconstructed;
   summary["simulations"] = outcome.search.simulations;
@@ -163,8 +152,8 @@ nlohmann::json summary_json(const ScenarioTemplate& accident, const Outcome& out
     if (check.happened) {
       item["time"] = check.time;
       item["contact"] = {check.contact.x, check.contact.y};
-      item["actor_side"] = side_name(check.striker_side);
-      item["victim_side"] = side_name(check.victim_side);
+      item["actor_side"] = body_side_words(check.striker_side);
+      item["victim_side"] = body_side_words(check.victim_side);
     }
     if (!check.problem.empty()) item["problem"] = check.problem;
     collisions.push_back(item);
@@ -174,12 +163,43 @@ nlohmann::json summary_json(const ScenarioTemplate& accident, const Outcome& out
   for (const UndescribedCollision& extra : outcome.run.score->undescribed)
     undescribed.push_back({{"actors", {extra.first, extra.second}}, {"time", extra.time}});
   summary["undescribed_collisions"] = undescribed;
-  summary["written"] = written;
+  summary["driver_test"] = nullptr;
   return summary;
 }
 
-// The scenario, trace and picture of the outcome, then the summary naming them; false after an
-// error on `err`.
+std::vector<std::string> lane_ids_of(const RoadMap& map) {
+  std::vector<std::string> ids;
+  for (const Lane& lane : map.lanes()) ids.push_back(lane.id);
+  return ids;
+}
+
+// The files of the reconstruction itself: its scenario, trace and picture.
+std::vector<NamedText> reconstruction_files(const ReconstructCommandOptions& options,
+                                            const Outcome& outcome) {
+  const Trace& trace = *outcome.run.run.trace;
+  TraceSvgOptions picture;
+  picture.caption.headline =
+      (outcome.search.reconstructed ? "Reconstruction of " : "Closest run to ") +
+      fs::path(options.path).filename().string() + ": " +
+      (outcome.search.reconstructed ? "every collision as described"
+                                    : "misses by " + shown(outcome.run.score->robustness) + " m") +
+      " (" + std::to_string(outcome.search.simulations) + " simulations)";
+  return {{"reconstruction.avu", outcome.replay_text},
+          {"trace.csv", trace_csv(trace, lane_ids_of(*outcome.run.run.map))},
+          {"trace.svg", render_trace_svg(*outcome.run.run.map, trace, picture)}};
+}
+
+// The driver test's trace and picture, as `scenfuzz run reconstruction.avu` writes them.
+std::vector<NamedText> driver_files(const DriverTest& test, const DriverSeat& seat) {
+  const Trace& trace = *test.run.trace;
+  if (trace.sample_count() == 0) return {};
+  TraceSvgOptions picture;
+  picture.caption.headline = driver_test_headline(test, seat);
+  return {{"driver_trace.csv", trace_csv(trace, lane_ids_of(*test.run.map))},
+          {"driver_trace.svg", render_trace_svg(*test.run.map, trace, picture)}};
+}
+
+// Writes each file into --out, then the summary naming them; false after an error on `err`.
 bool write_outputs(const ReconstructCommandOptions& options, const ScenarioTemplate& accident,
                    const Outcome& outcome, std::ostream& err, std::vector<std::string>& written) {
   std::error_code error;
@@ -189,36 +209,92 @@ bool write_outputs(const ReconstructCommandOptions& options, const ScenarioTempl
         << "\n";
     return false;
   }
-  const Trace& trace = *outcome.run.run.trace;
-  std::vector<std::string> lane_ids;
-  for (const Lane& lane : outcome.run.run.map->lanes()) lane_ids.push_back(lane.id);
-  TraceSvgOptions picture;
-  picture.caption.headline =
-      (outcome.search.reconstructed ? "Reconstruction of " : "Closest run to ") +
-      fs::path(options.path).filename().string() + ": " +
-      (outcome.search.reconstructed ? "every collision as described"
-                                    : "misses by " + shown(outcome.run.score->robustness) + " m") +
-      " (" + std::to_string(outcome.search.simulations) + " simulations)";
   const fs::path dir = options.out_dir;
-  const std::vector<std::pair<std::string, std::string>> outputs = {
-      {"reconstruction.avu", scenario_text(accident, options.path, outcome)},
-      {"trace.csv", trace_csv(trace, lane_ids)},
-      {"trace.svg", render_trace_svg(*outcome.run.run.map, trace, picture)}};
-  for (const auto& [name, content] : outputs) {
+  const auto write = [&](const std::string& name, const std::string& content) {
     if (std::string failure = write_file_atomically(dir / name, content); !failure.empty()) {
       err << "scenfuzz: error: " << failure << "\n";
       return false;
     }
     written.push_back((dir / name).string());
+    return true;
+  };
+  for (const auto& [name, content] : reconstruction_files(options, outcome))
+    if (!write(name, content)) return false;
+  nlohmann::json summary = summary_json(accident, outcome);
+  if (outcome.driver) {
+    std::vector<std::string> driver_written;
+    for (const auto& [name, content] : driver_files(*outcome.driver, outcome.seat)) {
+      if (!write(name, content)) return false;
+      driver_written.push_back(written.back());
+    }
+    summary["driver_test"] = driver_test_json(*outcome.driver, outcome.seat, driver_written);
   }
-  written.push_back((dir / "summary.json").string());
-  const std::string summary = summary_json(accident, outcome, written).dump(2) + "\n";
-  if (std::string failure = write_file_atomically(dir / "summary.json", summary);
-      !failure.empty()) {
-    err << "scenfuzz: error: " << failure << "\n";
-    return false;
+  // The summary names itself among the files written.
+  summary["written"] = written;
+  summary["written"].push_back((dir / "summary.json").string());
+  return write("summary.json", summary.dump(2) + "\n");
+}
+
+// The driver under test in the ego's place on the written replay (driver_test.hpp); nullopt
+// after an error on `err`: the plugin could not be started, or the replay not be run.
+std::optional<DriverTest> test_on_replay(const ReconstructCommandOptions& options,
+                                         const std::string& replay_text, std::ostream& err) {
+  const SourceFile file((fs::path(options.out_dir) / "reconstruction.avu").string(), replay_text);
+  avunit::ParseResult parsed = avunit::parse(file);
+  SCENFUZZ_DEMAND(parsed.ok());  // printed by avunit::print, which round-trips
+  apply_scenario_overrides(options.simulation, parsed.scenario);
+  std::vector<fs::path> map_paths(options.simulation.map_paths.begin(),
+                                  options.simulation.map_paths.end());
+  DriverTest test =
+      test_driver(file, parsed.scenario, map_search_path(map_paths),
+                  simulation_options(options.simulation), judge_options(options.simulation));
+  if (!test.problem.empty()) {
+    err << "scenfuzz: error: the driver could not be tested on the reconstruction: " << test.problem
+        << "\n";
+    return std::nullopt;
   }
-  return true;
+  return test;
+}
+
+DriverSeat seat_of(const ReconstructCommandOptions& options, const ScenarioTemplate& accident) {
+  return {options.simulation.ego_plugin.empty() ? "the reference driver"
+                                                : options.simulation.ego_plugin,
+          accident.ego.name};
+}
+
+// The search for a reconstruction, with its best run simulated again in full; nullopt after an
+// error on `err` (the status in `status`).
+std::optional<std::pair<ReconstructionSearch, ReconstructionRun>> reconstruct(
+    const ReconstructCommandOptions& options, const ReconstructionEvaluator& evaluator,
+    std::ostream& err, int& status) {
+  StopSignalGuard stop_signals;
+  ReconstructionSearch search;
+  try {
+    search = search_reconstruction(evaluator, budget_search_options(options),
+                                   [] { return StopSignalGuard::stop_requested(); });
+  } catch (const std::invalid_argument& error) {
+    err << "scenfuzz: error: " << error.what() << "\n";
+    status = kExitUsage;
+    return std::nullopt;
+  }
+  if (!search.best) {
+    err << "scenfuzz: error: no run of '" << options.path
+        << "' could be simulated: every point was infeasible or failed\n";
+    status = kExitBadInput;
+    return std::nullopt;
+  }
+  ReconstructionRun run = evaluator.reconstruct(search.best->point, search.best->seed);
+  return std::make_pair(std::move(search), std::move(run));
+}
+
+int exit_status(const Outcome& outcome, const std::string& path, std::ostream& err) {
+  if (!outcome.search.reconstructed) {
+    err << "scenfuzz: error: '" << path
+        << "' was not reconstructed, so no driver was tested on it (a larger --budget or "
+           "another --seed may find a reconstruction)\n";
+    return kExitBadInput;
+  }
+  return is_driver_finding(outcome.driver->verdict) ? kExitViolated : kExitSuccess;
 }
 
 }  // namespace
@@ -239,28 +315,25 @@ int run_reconstruct(const ReconstructCommandOptions& options, std::ostream& out,
     err << "scenfuzz: error: " << error.what() << "\n";
     return kExitBadInput;
   }
-  StopSignalGuard stop_signals;
-  ReconstructionSearch search;
-  try {
-    search = search_reconstruction(*evaluator, budget_search_options(options),
-                                   [] { return StopSignalGuard::stop_requested(); });
-  } catch (const std::invalid_argument& error) {
-    err << "scenfuzz: error: " << error.what() << "\n";
-    return kExitUsage;
+  int status = kExitBadInput;
+  const auto found = reconstruct(options, *evaluator, err, status);
+  if (!found) return status;
+  const auto& [search, run] = *found;
+  Outcome outcome{search, run, options.seed, "", std::nullopt, seat_of(options, accident)};
+  outcome.replay_text = scenario_text(accident, options.path, outcome);
+  if (search.reconstructed) {
+    outcome.driver = test_on_replay(options, outcome.replay_text, err);
+    if (!outcome.driver) return kExitBadInput;
   }
-  if (!search.best) {
-    err << "scenfuzz: error: no run of '" << options.path
-        << "' could be simulated: every point was infeasible or failed\n";
-    return kExitBadInput;
-  }
-  const ReconstructionRun run = evaluator->reconstruct(search.best->point, search.best->seed);
-  const Outcome outcome{search, run, options.seed};
   std::vector<std::string> written;
   if (!write_outputs(options, accident, outcome, err, written)) return kExitBadInput;
   out << headline(options.path, outcome) << "\n";
   for (const std::string& line : report_lines(accident, outcome)) out << "  " << line << "\n";
+  if (outcome.driver)
+    for (const std::string& line : driver_test_lines(*outcome.driver, outcome.seat))
+      out << line << "\n";
   for (const std::string& path : written) out << "wrote " << path << "\n";
-  return search.reconstructed ? kExitSuccess : kExitViolated;
+  return exit_status(outcome, options.path, err);
 }
 
 }  // namespace scenfuzz

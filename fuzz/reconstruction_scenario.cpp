@@ -1,6 +1,7 @@
 // A reconstruction as a concrete AVUnit scenario (reconstruction_scenario.hpp).
 #include "fuzz/reconstruction_scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,6 +17,9 @@ namespace {
 constexpr double kWaypointInterval = 1.0;
 // A vehicle that has moved less than this since its last waypoint has stopped: no new one.
 constexpr double kStandingStill = 0.5;
+
+// How far a replayed vehicle carries on along its lanes after its impact: out of the scene.
+constexpr double kCarryOn = 60;
 
 // How far past the accident the ego is sent: beyond the junction or the scene, into its lane.
 constexpr double kTargetBeyond = 30;
@@ -52,10 +56,52 @@ std::size_t first_collision_sample(const Trace& trace, ActorId actor) {
   return trace.sample_count() - 1;
 }
 
-// Its run up to its first collision as waypoints every kWaypointInterval, that moment included:
-// what it did before the impact is the accident's; what an impact made of it afterwards is not
-// what a driver in the ego's place, who may avoid the impact, is to meet.
-Motion waypoints_of(const TraceActor& actor, ActorId id, const Trace& trace) {
+// The lane after `lane` a vehicle driving on takes: straight on where it can.
+LaneIndex next_lane(const RoadMap& map, LaneIndex lane) {
+  const std::vector<LaneIndex>& next = map.lane(lane).successors;
+  const auto straight = std::find_if(
+      next.begin(), next.end(), [&](LaneIndex k) { return map.lane(k).turn == LaneTurn::none; });
+  return straight != next.end() ? *straight : next.front();
+}
+
+// Waypoints on from sample `impact`, as the vehicle would have gone had nobody been there: along
+// its lane (straight on at a junction) at its speed then, kWaypointInterval apart, kCarryOn
+// metres. None when it was on no lane or had stopped.
+std::vector<State> carrying_on(const TraceActor& actor, std::size_t impact, const RoadMap& map) {
+  std::vector<State> states;
+  const double speed = actor.speed[impact];
+  if (actor.lane[impact] < 0 || speed < kStandingStill) return states;
+  LaneIndex lane = static_cast<LaneIndex>(actor.lane[impact]);
+  double s = actor.s[impact];
+  const double step = std::max(speed * kWaypointInterval, kStandingStill);
+  for (double travelled = step; travelled <= kCarryOn; travelled += step) {
+    s += step;
+    while (s > map.lane(lane).length() && !map.lane(lane).successors.empty()) {
+      s -= map.lane(lane).length();
+      lane = next_lane(map, lane);
+    }
+    if (s > map.lane(lane).length()) break;  // the road ends
+    const Polyline& line = map.lane(lane).centre_line;
+    State state;
+    state.position.kind = PositionKind::coordinate;
+    const MapPoint point = line.point_at(s);
+    state.position.x = constant_value(rounded(point.x, 100));
+    state.position.y = constant_value(rounded(point.y, 100));
+    Heading heading;
+    heading.angle = constant_value(rounded(line.heading_at(s) * 180 / std::numbers::pi, 10));
+    heading.unit = AngleUnit::degree;
+    state.heading = heading;
+    state.speed = constant_value(rounded(speed, 100));
+    states.push_back(state);
+  }
+  return states;
+}
+
+// Its run up to its first collision as waypoints every kWaypointInterval, that moment included,
+// then on as if nobody had been there: what it did before the impact is the accident's; what the
+// impact made of it afterwards is not what a driver in the ego's place, who may avoid the impact,
+// is to meet, and a vehicle stopped where the crash was would block that driver's way for ever.
+Motion waypoints_of(const TraceActor& actor, ActorId id, const Trace& trace, const RoadMap& map) {
   Motion motion;
   motion.kind = MotionKind::waypoints;
   const std::size_t step =
@@ -73,6 +119,8 @@ Motion waypoints_of(const TraceActor& actor, ActorId id, const Trace& trace) {
     if (i == last) break;
   }
   if (motion.states.empty()) motion.states.push_back(state_at(actor, last));
+  if (last + 1 < trace.sample_count())
+    for (State& state : carrying_on(actor, last, map)) motion.states.push_back(std::move(state));
   return motion;
 }
 
@@ -110,7 +158,7 @@ Actor replayed(const Actor& described, const Trace& trace, const RoadMap& map) {
     copy.target = ego_target(trace, map);
     copy.motion.kind = MotionKind::follow_route;
   } else {
-    copy.motion = waypoints_of(actor, id, trace);
+    copy.motion = waypoints_of(actor, id, trace, map);
   }
   return copy;
 }

@@ -221,25 +221,15 @@ std::string number(double value) {
   return result == "-0" ? "0" : result;
 }
 
-std::string side_words(BodySide side) {
-  switch (side) {
-    case BodySide::front: return "front";
-    case BodySide::rear: return "rear";
-    case BodySide::left: return "left side";
-    case BodySide::right: return "right side";
-  }
-  return "side";
-}
-
 std::string part_words(std::optional<BodySide> side) {
-  return side ? side_words(*side) : "any part";
+  return side ? body_side_words(*side) : "any part";
 }
 
 // "its front", "car1's rear, not its left side": the side touched, and the named one if other.
 std::string seen_side_words(const std::string& owner, BodySide seen,
                             std::optional<BodySide> named) {
-  std::string words = owner + " " + side_words(seen);
-  if (named && *named != seen) words += ", not its " + side_words(*named);
+  std::string words = owner + " " + body_side_words(seen);
+  if (named && *named != seen) words += ", not its " + body_side_words(*named);
   return words;
 }
 
@@ -383,6 +373,18 @@ std::optional<BodySide> body_side_of(VehiclePart part) {
   }
   return std::nullopt;
 }
+
+std::string body_side_words(BodySide side) {
+  switch (side) {
+    case BodySide::front: return "front";
+    case BodySide::rear: return "rear";
+    case BodySide::left: return "left side";
+    case BodySide::right: return "right side";
+  }
+  return "side";
+}
+
+std::string vehicle_part_words(VehiclePart part) { return part_words(body_side_of(part)); }
 
 namespace {
 

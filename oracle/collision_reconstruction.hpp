@@ -36,6 +36,12 @@ inline constexpr double kOrderSpeed = 10.0;
 // The body side a description's part names; nullopt for `unknown` (any side matches).
 std::optional<BodySide> body_side_of(VehiclePart part);
 
+// "front", "rear", "left side", "right side": a side in a description's words.
+std::string body_side_words(BodySide side);
+
+// A described part in words: its side's, "any part" for `unknown`.
+std::string vehicle_part_words(VehiclePart part);
+
 // One described collision checked against the trace.
 struct CollisionCheck {
   bool happened = false;   // the named pair touched at all
