@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "lang/chs/lane_places.hpp"
+#include "lang/chs/overtaking.hpp"
 #include "lang/chs/translation.hpp"
 #include "lang/chs/vocabulary.hpp"
 #include "lang/number_format.hpp"
@@ -29,6 +30,12 @@ constexpr double kObstacleSize[3] = {2, 2, 1};
 // How many entities have been placed by default on each side of the ego: the next one's gap.
 struct Placed {
   int ahead = 0, behind = 0, oncoming = 0, roadside = 0;
+};
+
+// A vehicle whose track overtakes: its index among the scenario's vehicles, and its track.
+struct Overtaker {
+  std::size_t vehicle = 0;
+  SourceLocation location;
 };
 
 bool names_the_ego(const std::string& name) {
@@ -97,6 +104,13 @@ const char* lane_change_of(const TrackReading& track) {
   return nullptr;
 }
 
+// The manoeuvre of a track's turn (`turn left`), else null.
+const char* turn_of(const TrackReading& track) {
+  if (track.manoeuvre == TrackManoeuvre::turn_left) return "TurnLeft";
+  if (track.manoeuvre == TrackManoeuvre::turn_right) return "TurnRight";
+  return nullptr;
+}
+
 Position coordinate_position(const Point& point) {
   Position position;
   position.kind = PositionKind::coordinate;
@@ -156,6 +170,8 @@ class EntityTranslator {
     for (const DynamicEntity& entity : file_.dynamic_entities)
       if (&entity != ego) dynamic_entity(entity);
     for (const StaticEntity& entity : file_.static_entities) static_entity(entity);
+    // Once every road user is known: whom an overtake may pass, meet or have beside it.
+    for (const Overtaker& overtaker : overtakers_) overtake(overtaker);
   }
 
  private:
@@ -205,7 +221,8 @@ class EntityTranslator {
                                                   entity.name.text + " drives on along its lanes");
   }
 
-  void warn_of_track(const DynamicEntity& entity, const TrackReading& track, bool ego) {
+  void warn_of_track(const DynamicEntity& entity, const TrackReading& track, bool ego,
+                     bool pedestrian = false) {
     if (!track.unread.empty()) {
       std::string words;
       for (const std::string& word : track.unread)
@@ -221,10 +238,19 @@ class EntityTranslator {
       diagnostics_.warning(entity.track.location,
                            "the ego is driven by the system under test, which decides itself when "
                            "to change lanes, overtake or turn");
-    else if (manoeuvre && !lane_change_of(track))
+    else if (pedestrian && manoeuvre)
       diagnostics_.warning(entity.track.location,
-                           "overtaking and turns in a track are not simulated yet: " +
-                               entity.name.text + " follows its lane");
+                           "changing lanes, overtaking and turning are a vehicle's manoeuvres: " +
+                               entity.name.text + ", a pedestrian, crosses the road");
+    else if (turn_of(track) && file_.map.kind != MapSource::Kind::named)
+      diagnostics_.warning(
+          entity.track.location,
+          std::string("'turn ") +
+              (track.manoeuvre == TrackManoeuvre::turn_left ? "left" : "right") +
+              "' needs a junction, and a road network has none: roads meeting end to start "
+              "continue into each other and roads that cross simply cross "
+              "(docs/ch-scenario.md, \"The map\"), so " +
+              entity.name.text + " follows its lane");
     if (ego && track.manoeuvre == TrackManoeuvre::stop)
       diagnostics_.warning(entity.track.location,
                            "the ego is driven by the system under test, which decides itself "
@@ -248,7 +274,7 @@ class EntityTranslator {
   void dynamic_entity(const DynamicEntity& entity) {
     const EntityWords words = classify_entity(entity.name.text, "");
     const TrackReading track = read_track(entity.track.text);
-    warn_of_track(entity, track, false);
+    warn_of_track(entity, track, false, words.kind == EntityClass::pedestrian);
     Actor actor;
     actor.name = entity.name.text;
     actor.location = entity.location;
@@ -271,15 +297,31 @@ class EntityTranslator {
       if (!position) return;
       actor.initial.position = std::move(*position);
     }
-    if (const char* change = lane_change_of(track)) {
-      // The track's lane change is what the vehicle does first, from the start.
+    // A lane change is what the vehicle does first, from the start; so is a turn, at the next
+    // junction on its way, which only a named map has (warn_of_track).
+    const char* manoeuvre = lane_change_of(track);
+    if (!manoeuvre && file_.map.kind == MapSource::Kind::named) manoeuvre = turn_of(track);
+    if (manoeuvre) {
       ManoeuvrePhase phase;
-      phase.manoeuvre = change;
+      phase.manoeuvre = manoeuvre;
       phase.location = entity.track.location;
       actor.motion.kind = MotionKind::manoeuvres;
       actor.motion.phases.push_back(std::move(phase));
     }
+    if (track.manoeuvre == TrackManoeuvre::overtake)
+      overtakers_.push_back({t_.scenario.vehicles.size(), entity.track.location});
     t_.scenario.vehicles.push_back(std::move(actor));
+  }
+
+  // An overtake's phases come first (events' follow), started by what is around the vehicle.
+  void overtake(const Overtaker& overtaker) {
+    Actor& actor = t_.scenario.vehicles[overtaker.vehicle];
+    std::vector<std::string> others{t_.scenario.ego.name};
+    for (const Actor& other : t_.scenario.vehicles)
+      if (&other != &actor) others.push_back(other.name);
+    actor.motion.kind = MotionKind::manoeuvres;
+    actor.motion.phases =
+        overtake_phases(actor.name, *actor.initial.speed, others, overtaker.location);
   }
 
   std::optional<Position> default_vehicle_position(const DynamicEntity& entity,
@@ -396,6 +438,7 @@ class EntityTranslator {
   const File& file_;
   Diagnostics& diagnostics_;
   Placed placed_;
+  std::vector<Overtaker> overtakers_;
   bool ego_forward_ = true;  // the direction of the ego's lane, where its aim is
 };
 

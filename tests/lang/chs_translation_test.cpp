@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "lang/chs/chs.hpp"
@@ -206,27 +207,104 @@ TEST(ChsTranslation, WordsNotReadAreWarnedOf) {
   EXPECT_EQ(parsed.scenario.ego.initial.position.lane, "east_road_f0");
 }
 
-// A track's lane change is the vehicle's first manoeuvre, from the start; overtaking and turns are
-// not simulated, and the ego's own manoeuvres are the system under test's to decide.
-TEST(ChsTranslation, ATracksLaneChangeIsTheVehiclesFirstManoeuvre) {
-  const ScenarioParse parsed = read(on_east_road(
+// The names a formula's terms give (road users, signals' operands), each once.
+void names_in(const SpecTerm& term, std::set<std::string>& names) {
+  if (term.kind == TermKind::word) names.insert(term.name);
+  for (const SpecTerm& operand : term.operands) names_in(operand, names);
+}
+
+std::set<std::string> names_in(const Formula& formula) {
+  std::set<std::string> names;
+  for (const SpecTerm& term : formula.terms) names_in(term, names);
+  for (const Formula& operand : formula.operands) names.merge(names_in(operand));
+  return names;
+}
+
+// A track's lane change is the vehicle's first manoeuvre, from the start; an overtake pulls out
+// when the vehicle is close behind a slower road user and comes back when the lane on its right is
+// clear, both judged among the other road users; the ego's own manoeuvres are the system under
+// test's to decide.
+TEST(ChsTranslation, ATracksManoeuvresAreTheVehiclesPhases) {
+  const std::string text = on_east_road(
       "Entity\n  DynamicEntity1\n    name: car\n    speed: 36\n    track: turn left\n"
       "  DynamicEntity2\n    name: bus\n    speed: 36\n    track: ahead, change lane left\n"
-      "  DynamicEntity3\n    name: van\n    speed: 36\n    track: overtake the bus\n"));
+      "  DynamicEntity3\n    name: van\n    speed: 54\n    track: overtake the bus\n"
+      "  StaticEntity1\n    name: parked truck\n    overview: a parked lorry\n");
+  const ScenarioParse parsed = read(text);
   ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
-  ASSERT_EQ(parsed.scenario.vehicles.size(), 2u);
+  ASSERT_EQ(parsed.scenario.vehicles.size(), 3u);
   const Motion& bus = parsed.scenario.vehicles[0].motion;
   ASSERT_EQ(bus.kind, MotionKind::manoeuvres);
   ASSERT_EQ(bus.phases.size(), 1u);
   EXPECT_EQ(bus.phases[0].manoeuvre, "LaneChangeLeft");
   EXPECT_FALSE(bus.phases[0].start_when);
-  EXPECT_EQ(parsed.scenario.vehicles[1].motion.kind, MotionKind::follow_route);
+
+  const Motion& van = parsed.scenario.vehicles[1].motion;
+  ASSERT_EQ(van.kind, MotionKind::manoeuvres);
+  ASSERT_EQ(van.phases.size(), 2u);
+  const ManoeuvrePhase& out = van.phases[0];
+  EXPECT_EQ(out.manoeuvre, "Overtake");
+  EXPECT_EQ(text_at(text, out.location), "overtake the bus");
+  ASSERT_EQ(out.parameters.size(), 1u);
+  EXPECT_EQ(out.parameters[0].name, "speed");
+  EXPECT_DOUBLE_EQ(out.parameters[0].value.constant, 15) << "out at its own speed";
+  const ManoeuvrePhase& back = van.phases[1];
+  EXPECT_EQ(back.manoeuvre, "LaneChangeRight");
+  EXPECT_EQ(back.location, out.location);
+  // Both are judged from the van among every other road user, the parked truck included.
+  ASSERT_TRUE(out.start_when);
+  ASSERT_TRUE(back.start_when);
+  const std::set<std::string> everyone{"car", "bus", "van", "parked truck"};
+  EXPECT_EQ(names_in(*out.start_when), everyone);
+  EXPECT_EQ(names_in(*back.start_when), everyone);
+  EXPECT_EQ(back.start_when->kind, FormulaKind::negation) << "when nothing blocks the right";
+
   const std::string said = messages(parsed.diagnostics);
   EXPECT_THAT(said, HasSubstr("test.chs:13:12: warning: the ego is driven by the system under "
                               "test, which decides itself when to change lanes"));
-  EXPECT_THAT(said, HasSubstr("test.chs:21:12: warning: overtaking and turns in a track are not "
-                              "simulated yet: van follows its lane"));
+  EXPECT_THAT(said, ::testing::Not(HasSubstr("not simulated")));
+  // Whom it overtakes is not read: the van judges every road user.
+  EXPECT_THAT(said, HasSubstr("test.chs:21:12: warning: scenfuzz does not read 'bus' in a track"));
   EXPECT_THAT(said, ::testing::Not(HasSubstr("bus follows its lane")));
+}
+
+// A road network has no junctions (outline_map.hpp): a turn there is warned of at the track, naming
+// the word, and the vehicle follows its lane; on a named map the turn is the vehicle's first phase,
+// at the next junction on its way. A pedestrian's manoeuvre words are warned of too.
+TEST(ChsTranslation, ATurnIsAPhaseOnANamedMapAndAWarningOnARoadNetwork) {
+  const std::string entities =
+      "Entity\n  DynamicEntity1\n    name: ego\n    speed: 36\n    position: (-80, -1.75)\n"
+      "  DynamicEntity2\n    name: taxi\n    speed: 30\n    position: (-60, -1.75)\n"
+      "    track: turning right\n"
+      "  DynamicEntity3\n    name: boy\n    speed: 4\n    track: turn left\n";
+  const ScenarioParse network =
+      read(on_east_road("Entity\n  DynamicEntity1\n    name: ego\n    speed: 36\n"
+                        "  DynamicEntity2\n    name: taxi\n    speed: 30\n    track: turn right\n"
+                        "  DynamicEntity3\n    name: boy\n    speed: 4\n    track: turn left\n"));
+  ASSERT_TRUE(network.ok()) << messages(network.diagnostics);
+  ASSERT_EQ(network.scenario.vehicles.size(), 1u);
+  EXPECT_EQ(network.scenario.vehicles[0].motion.kind, MotionKind::follow_route);
+  EXPECT_THAT(messages(network.diagnostics),
+              HasSubstr("test.chs:16:12: warning: 'turn right' needs a junction, and a road "
+                        "network has none"));
+  EXPECT_THAT(messages(network.diagnostics), HasSubstr("so taxi follows its lane"));
+  EXPECT_THAT(messages(network.diagnostics), ::testing::Not(HasSubstr("so boy follows")));
+  EXPECT_THAT(messages(network.diagnostics), HasSubstr("boy, a pedestrian, crosses the road"));
+
+  const std::string text = "map: t_junction\n" + entities;
+  const ScenarioParse named = read(text);
+  ASSERT_TRUE(named.ok()) << messages(named.diagnostics);
+  ASSERT_EQ(named.scenario.vehicles.size(), 1u);
+  const Motion& taxi = named.scenario.vehicles[0].motion;
+  ASSERT_EQ(taxi.kind, MotionKind::manoeuvres);
+  ASSERT_EQ(taxi.phases.size(), 1u);
+  EXPECT_EQ(taxi.phases[0].manoeuvre, "TurnRight");
+  EXPECT_FALSE(taxi.phases[0].start_when);
+  EXPECT_EQ(text_at(text, taxi.phases[0].location), "turning right");
+  const std::string said = messages(named.diagnostics);
+  EXPECT_THAT(said, ::testing::Not(HasSubstr("needs a junction")));
+  EXPECT_THAT(said, HasSubstr("test.chs:15:12: warning: changing lanes, overtaking and turning are "
+                              "a vehicle's manoeuvres: boy, a pedestrian, crosses the road"));
 }
 
 // east_road's halves are 7 m wide: two lanes of 3.5 m each way.
