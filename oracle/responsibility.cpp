@@ -398,11 +398,18 @@ std::string entry_text(const Trace& trace, const std::string& who, const std::st
          tenths(safe_distance) + " m";
 }
 
-double safe_distance_at_entry(const Trace& trace, const PathEntry& entry,
-                              const RssParameters& rss) {
+// The RSS safe distance when the other entered: behind it on the same way, or, when it came
+// against the ego's direction (an overtaker pulling out into the ego's lane), both stopping
+// distances with the ego on its own lane.
+double safe_distance_at_entry(const Trace& trace, const PathEntry& entry, const RssParameters& rss,
+                              bool opposite = false) {
   const double ego_speed = trace.actors[kEgo].speed[entry.sample];
-  return rss_safe_longitudinal_same(ego_speed, ego_speed - entry.closing_speed,
-                                    rss.response_time_ego, rss);
+  const double other_along = ego_speed - entry.closing_speed;
+  if (opposite)
+    return rss_safe_longitudinal_opposite(ego_speed, rss.response_time_ego,
+                                          std::max(0.0, -other_along), rss.response_time_other,
+                                          rss);
+  return rss_safe_longitudinal_same(ego_speed, other_along, rss.response_time_ego, rss);
 }
 
 // The other came into the ego's path (or the ego into the other's): the entrant is at fault when
@@ -526,7 +533,7 @@ std::string other_fault_text(const Trace& trace, const ResponseViolation& v,
     case ResponseFault::moved_sideways:
       if (lasting_entry(trace, t.entry, k) && !t.entry->from_start && t.entry->gap > 0)
         return entry_text(trace, the, "lane", *t.entry, k,
-                          safe_distance_at_entry(trace, *t.entry, rss), rss);
+                          safe_distance_at_entry(trace, *t.entry, rss, opposite), rss);
       return the + " moved sideways into the ego";
   }
   return "";
