@@ -159,11 +159,9 @@ TEST_F(ReconstructCommandTest, ADriverThatDoesNotBrakeForAnAvoidableCrashIsAFind
   const Outcome run =
       scenfuzz({"reconstruct", "--ego-plugin", plugin("steady"), "--out", out.string(), path});
   ASSERT_EQ(run.exit_code, 1) << run.out << run.err;
-  EXPECT_NE(run.out.find("driver test: finding: " + plugin("steady") +
-                         " in car2's place: hit by "
-                         "car1"),
-            std::string::npos)
-      << run.out;
+  const std::string verdict =
+      "driver test: finding: " + plugin("steady") + " in car2's place: hit by car1";
+  EXPECT_NE(run.out.find(verdict), std::string::npos) << run.out;
   const nlohmann::json driver = summary(out)["driver_test"];
   EXPECT_EQ(driver["verdict"], "avoidable");
   EXPECT_TRUE(driver["finding"].get<bool>());

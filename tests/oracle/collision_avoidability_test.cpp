@@ -35,6 +35,8 @@ TraceActor car(const Trace& trace, const std::string& name, TraceActorKind kind,
   return actor;
 }
 
+using Path = std::function<MapPoint(double)>;
+
 // Records the ego's first contact with actor 1, as the simulation would, and returns its index.
 std::size_t record_first_contact(Trace& trace) {
   for (std::size_t i = 0; i < trace.sample_count(); ++i)
@@ -46,30 +48,34 @@ std::size_t record_first_contact(Trace& trace) {
   return 0;
 }
 
-// The ego east along y = 0 at 15 m/s from x = 0; car1 north along x = 60 at 12.5 m/s, level with
-// the ego's lane at 4 s, and on beyond it (as a replay that ignores the impact goes on).
-Trace crossing() {
-  Trace trace = empty_trace(81, 0.1);
-  trace.actors.push_back(car(
-      trace, "ego", TraceActorKind::ego,
-      [](double t) {
-        return MapPoint{15 * t, 0};
-      },
-      0));
-  trace.actors.push_back(car(
-      trace, "car1", TraceActorKind::vehicle,
-      [](double t) {
-        return MapPoint{60, -50 + 12.5 * t};
-      },
-      kNorth));
+// The ego and car1 driving `ego` and `other` for `seconds`, sampled every 0.1 s, with their first
+// contact recorded as collision 0.
+Trace meeting(double seconds, const Path& ego, double ego_heading, const Path& other,
+              double other_heading) {
+  Trace trace = empty_trace(static_cast<std::size_t>(std::lround(seconds * 10)) + 1, 0.1);
+  trace.actors.push_back(car(trace, "ego", TraceActorKind::ego, ego, ego_heading));
+  trace.actors.push_back(car(trace, "car1", TraceActorKind::vehicle, other, other_heading));
+  record_first_contact(trace);
   return trace;
 }
 
+MapPoint east_at_15(double t) { return {15 * t, 0}; }
+
+// The ego east along y = 0 at 15 m/s from x = 0; car1 north along x = 60 at 12.5 m/s, level with
+// the ego's lane at 4 s, and on beyond it (as a replay that ignores the impact goes on).
+Trace crossing() {
+  return meeting(
+      8, east_at_15, 0,
+      [](double t) {
+        return MapPoint{60, -50 + 12.5 * t};
+      },
+      kNorth);
+}
+
 TEST(CollisionAvoidability, ACrossingSeenThreeSecondsAheadIsAvoidableByBraking) {
-  Trace trace = crossing();
-  const std::size_t collision = record_first_contact(trace);
-  const double impact = trace.collisions[collision].time;
-  const Avoidability a = collision_avoidability(trace, collision, RssParameters{});
+  const Trace trace = crossing();
+  const double impact = trace.collisions[0].time;
+  const Avoidability a = collision_avoidability(trace, 0, RssParameters{});
   EXPECT_TRUE(a.avoidable) << a.reason;
   // Both carry on at constant speed: the conflict shows kConflictHorizon before the impact.
   EXPECT_NEAR(a.conflict_time, impact - kConflictHorizon, 0.11);
@@ -80,75 +86,57 @@ TEST(CollisionAvoidability, ACrossingSeenThreeSecondsAheadIsAvoidableByBraking) 
 }
 
 TEST(CollisionAvoidability, ASlowerResponseThanTheWarningMakesTheSameCrossingUnavoidable) {
-  Trace trace = crossing();
-  const std::size_t collision = record_first_contact(trace);
   RssParameters slow;
   slow.response_time_ego = 3.5;
-  const Avoidability a = collision_avoidability(trace, collision, slow);
+  const Avoidability a = collision_avoidability(crossing(), 0, slow);
   EXPECT_FALSE(a.avoidable);
   EXPECT_EQ(a.clearance, 0);
   EXPECT_NE(a.reason.find("response time"), std::string::npos) << a.reason;
 }
 
 TEST(CollisionAvoidability, ACarDartingOutHalfASecondAheadIsUnavoidable) {
-  Trace trace = empty_trace(81, 0.1);
-  trace.actors.push_back(car(
-      trace, "ego", TraceActorKind::ego,
-      [](double t) {
-        return MapPoint{15 * t, 0};
-      },
-      0));
   // Standing at the kerb until 3.5 s, then across the ego's lane at 12 m/s.
-  trace.actors.push_back(car(
-      trace, "car1", TraceActorKind::vehicle,
+  const Trace trace = meeting(
+      8, east_at_15, 0,
       [](double t) {
         return MapPoint{60, -6 + (t < 3.5 ? 0.0 : 12 * (t - 3.5))};
       },
-      kNorth));
-  const std::size_t collision = record_first_contact(trace);
-  const Avoidability a = collision_avoidability(trace, collision, RssParameters{});
+      kNorth);
+  const Avoidability a = collision_avoidability(trace, 0, RssParameters{});
   EXPECT_FALSE(a.avoidable);
   EXPECT_GE(a.conflict_time, 3.35);
   EXPECT_NE(a.reason.find("response time"), std::string::npos) << a.reason;
 }
 
 TEST(CollisionAvoidability, BrakingCannotSaveAStandingEgoFromACarBehind) {
-  Trace trace = empty_trace(61, 0.1);
-  trace.actors.push_back(car(
-      trace, "ego", TraceActorKind::ego,
+  const Trace trace = meeting(
+      6,
       [](double) {
         return MapPoint{0, 0};
       },
-      0));
-  trace.actors.push_back(car(
-      trace, "car1", TraceActorKind::vehicle,
+      0,
       [](double t) {
         return MapPoint{-60 + 15 * t, 0};
       },
-      0));
-  const std::size_t collision = record_first_contact(trace);
-  const Avoidability a = collision_avoidability(trace, collision, RssParameters{});
+      0);
+  const Avoidability a = collision_avoidability(trace, 0, RssParameters{});
   EXPECT_FALSE(a.avoidable);
   EXPECT_NE(a.reason.find("still meets"), std::string::npos) << a.reason;
   EXPECT_EQ(a.stop_short, 0);
 }
 
 TEST(CollisionAvoidability, BrakingCannotSaveTheEgoFromACarThatKeepsComingHeadOn) {
-  Trace trace = empty_trace(81, 0.1);
-  trace.actors.push_back(car(
-      trace, "ego", TraceActorKind::ego,
+  const Trace trace = meeting(
+      8,
       [](double t) {
         return MapPoint{10 * t, 0};
       },
-      0));
-  trace.actors.push_back(car(
-      trace, "car1", TraceActorKind::vehicle,
+      0,
       [](double t) {
         return MapPoint{120 - 15 * t, 0};
       },
-      std::numbers::pi));
-  const std::size_t collision = record_first_contact(trace);
-  const Avoidability a = collision_avoidability(trace, collision, RssParameters{});
+      std::numbers::pi);
+  const Avoidability a = collision_avoidability(trace, 0, RssParameters{});
   EXPECT_FALSE(a.avoidable);
   EXPECT_NE(a.reason.find("still meets"), std::string::npos) << a.reason;
   // It did brake to a stop short of the impact: the other came on regardless.
