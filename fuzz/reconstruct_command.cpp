@@ -121,10 +121,6 @@ std::string scenario_text(const ScenarioTemplate& accident, const std::string& p
   text += "// The ego, " + accident.ego.name +
           ", starts as it did and is driven where it was going by the system under test; the "
           "other vehicles replay their reconstructed runs.\n";
-  if (!accident.traffic.lights.empty())
-    text +=
-        "// The description's light colours are not written: AVUnit cannot set a light; "
-        "the crossroads' signals run their plan from the start.\n";
   return text + avunit::print(replay);
 }
 

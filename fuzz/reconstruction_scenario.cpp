@@ -188,6 +188,8 @@ ScenarioTemplate replay_scenario(const ScenarioTemplate& accident, const Trace& 
   for (const Actor& vehicle : accident.vehicles)
     replay.vehicles.push_back(replayed(vehicle, trace, map));
   replay.obstacles = accident.obstacles;
+  // The lights show the described colours at the start, as in the reconstruction.
+  replay.traffic.lights = accident.traffic.lights;
   // The others replay the accident whatever the ego does, as the reconstruction's vehicles did.
   replay.npc_behaviour = NpcBehaviour::scripted;
   return replay;

@@ -119,9 +119,10 @@ double weather_level_intensity(std::string_view level) {
 
 std::vector<std::string_view> builtin_names() {
   std::vector<std::string_view> names = {
-      "AV",       "Vehicle", "Pedestrian",   "Obstacle",   "Environment", "load",        "range",
-      "EXE",      "IMU",     "ENU",          "WGS84",      "EGO",         "pi",          "uniform",
-      "Waypoint", "Random",  "Intersection", "SpeedLimit", "Flow",        "NPCBehaviour"};
+      "AV",    "Vehicle",      "Pedestrian",  "Obstacle", "Environment",  "load",
+      "range", "EXE",          "IMU",         "ENU",      "WGS84",        "EGO",
+      "pi",    "uniform",      "Waypoint",    "Random",   "Intersection", "SpeedLimit",
+      "Flow",  "NPCBehaviour", "TrafficLight"};
   names.insert(names.end(), kFunctions.begin(), kFunctions.end());
   names.insert(names.end(), kFlags.begin(), kFlags.end());
   names.insert(names.end(), kDistancePredicates.begin(), kDistancePredicates.end());

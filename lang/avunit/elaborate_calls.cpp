@@ -8,6 +8,7 @@ namespace scenfuzz::avunit {
 Item Elaborator::call(const Syntax& syntax) {
   const std::string& name = syntax.text;
   if (name == "NPCBehaviour") return npc_behaviour(syntax);  // its argument is a bare word
+  if (name == "TrafficLight") return traffic_light(syntax);  // so is its colour
   std::vector<Item> arguments;
   for (const Syntax& child : syntax.children) arguments.push_back(evaluate(child));
   for (const Item& argument : arguments)
@@ -334,6 +335,12 @@ Item Elaborator::npc_behaviour(const Syntax& syntax) {
   Item item = make_item(ItemKind::npc_behaviour, syntax.location);
   item.word = npc_behaviour_word(*behaviour);
   return item;
+}
+
+Item Elaborator::traffic_light(const Syntax& syntax) {
+  std::optional<TrafficLightSetting> light = elaborate_traffic_light(syntax, diagnostics_);
+  if (!light) return make_item(ItemKind::error, syntax.location);
+  return make_item(ItemKind::traffic_light, syntax.location, std::move(*light));
 }
 
 Item Elaborator::flow(const Syntax& syntax, const std::vector<Item>& arguments) {

@@ -126,6 +126,16 @@ bool Elaborator::traffic(const Item& slot, ScenarioParts& parts, std::set<std::s
       else if (!claim_name(flow.name, element->location, names))
         return false;
       parts.traffic.flows.push_back(std::move(flow));
+    } else if (element->kind == ItemKind::traffic_light) {
+      const TrafficLightSetting& light = payload_of<TrafficLightSetting>(*element);
+      for (const TrafficLightSetting& earlier : parts.traffic.lights)
+        if (earlier.id == light.id) {
+          diagnostics_.error(
+              element->location,
+              "traffic light '" + light.id + "' is given twice in the traffic slot; keep one");
+          return false;
+        }
+      parts.traffic.lights.push_back(light);
     } else if (element->kind == ItemKind::npc_behaviour) {
       if (parts.npc_behaviour) {
         diagnostics_.error(element->location,
@@ -136,8 +146,8 @@ bool Elaborator::traffic(const Item& slot, ScenarioParts& parts, std::set<std::s
           element->word == "scripted" ? NpcBehaviour::scripted : NpcBehaviour::reactive;
     } else {
       mismatch(*element,
-               "an Intersection(...), SpeedLimit(...), Flow(...) or NPCBehaviour(...) in the "
-               "traffic slot");
+               "an Intersection(...), SpeedLimit(...), Flow(...), NPCBehaviour(...) or "
+               "TrafficLight(...) in the traffic slot");
       return false;
     }
   }

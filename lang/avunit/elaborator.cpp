@@ -48,6 +48,8 @@ std::string describe(const Item& item) {
       return flow.name.empty() ? "a traffic flow" : "traffic flow '" + flow.name + "'";
     }
     case ItemKind::npc_behaviour: return "NPCBehaviour(" + item.word + ")";
+    case ItemKind::traffic_light:
+      return "TrafficLight(\"" + payload_of<TrafficLightSetting>(item).id + "\", ...)";
   }
   return "a value";
 }

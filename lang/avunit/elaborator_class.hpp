@@ -187,6 +187,7 @@ class Elaborator {
   Item speed_limit(const Syntax& syntax, const std::vector<Item>& arguments);
   Item npc_behaviour(const Syntax& syntax);
   Item flow(const Syntax& syntax, const std::vector<Item>& arguments);
+  Item traffic_light(const Syntax& syntax);
   // dis(a, b), vel(a, b), spd(a, b), acc(a, b), diff(perceived, truth)
   Item signal_function(const Syntax& syntax, const std::vector<Item>& arguments);
   std::optional<SpecTerm> function_argument(const std::string& function, const Item& argument);

@@ -43,6 +43,7 @@ enum class ItemKind {
   speed_limit,
   flow,           // Flow(...): background traffic (docs/avunit.md, "Extensions")
   npc_behaviour,  // NPCBehaviour(...): `word` is "reactive" or "scripted"
+  traffic_light,  // TrafficLight(...): a light's colour at the start
 };
 
 // The parts of one CreateScenario{...}, shared by every variable that holds it.
@@ -73,7 +74,7 @@ using ItemPayload =
                  Boxed<ActorType>, Boxed<Shape>, Boxed<Actor>, Boxed<Obstacle>, Boxed<Environment>,
                  Boxed<MapReference>, Boxed<std::shared_ptr<const ScenarioParts>>,
                  Boxed<Projection>, Boxed<SpecTerm>, Boxed<Formula>, Boxed<IntersectionControl>,
-                 Boxed<SpeedLimit>, Boxed<TrafficFlow>>;
+                 Boxed<SpeedLimit>, Boxed<TrafficFlow>, Boxed<TrafficLightSetting>>;
 
 struct Item {
   ItemKind kind = ItemKind::error;

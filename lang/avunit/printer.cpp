@@ -62,7 +62,8 @@ class Printer {
     out_ += "    " + set_text(obstacle_names) + ";\n";
     bool has_traffic = !scenario_.traffic.intersections.empty() ||
                        !scenario_.traffic.speed_limits.empty() ||
-                       !scenario_.traffic.flows.empty() || scenario_.npc_behaviour;
+                       !scenario_.traffic.flows.empty() || !scenario_.traffic.lights.empty() ||
+                       scenario_.npc_behaviour;
     if (scenario_.environment || has_traffic)
       out_ += "    " + (scenario_.environment ? environment_text(*scenario_.environment) : "{}") +
               ";\n";
@@ -332,6 +333,8 @@ class Printer {
       items.push_back("SpeedLimit(" + quoted(limit.lane) + ", (" + value_text(limit.lower) + ", " +
                       value_text(limit.upper) + "))");
     for (const TrafficFlow& flow : traffic.flows) items.push_back(flow.name);
+    for (const TrafficLightSetting& light : traffic.lights)
+      items.push_back("TrafficLight(" + quoted(light.id) + ", " + light.color + ")");
     if (scenario_.npc_behaviour)
       items.push_back("NPCBehaviour(" + npc_behaviour_word(*scenario_.npc_behaviour) + ")");
     return set_text(items);

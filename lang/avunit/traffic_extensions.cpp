@@ -100,6 +100,38 @@ std::optional<NpcBehaviour> elaborate_npc_behaviour(const Syntax& call, Diagnost
   return std::nullopt;
 }
 
+std::optional<TrafficLightSetting> elaborate_traffic_light(const Syntax& call,
+                                                           Diagnostics& diagnostics) {
+  const std::string form = "TrafficLight(\"light_id\", red), with red, yellow or green";
+  if (call.children.size() != 2 || call.children[0].kind == SyntaxKind::empty ||
+      call.children[1].kind == SyntaxKind::empty) {
+    diagnostics.error(call.location, "TrafficLight(...) takes a light's id and a colour: " + form +
+                                         ", found " + counted_arguments(call.children.size()));
+    return std::nullopt;
+  }
+  const Syntax& id = call.children[0];
+  if (id.kind != SyntaxKind::string || id.text.empty()) {
+    diagnostics.error(id.location,
+                      "expected the map's traffic-light id in quotes in "
+                      "TrafficLight(...), found " +
+                          describe_syntax(id));
+    return std::nullopt;
+  }
+  const Syntax& colour = call.children[1];
+  const bool word = colour.kind == SyntaxKind::identifier || colour.kind == SyntaxKind::string;
+  if (!word || (colour.text != "red" && colour.text != "yellow" && colour.text != "green")) {
+    diagnostics.error(
+        colour.location,
+        "expected red, yellow or green in TrafficLight(...), found " + describe_syntax(colour));
+    return std::nullopt;
+  }
+  TrafficLightSetting light;
+  light.id = id.text;
+  light.color = colour.text;
+  light.location = call.location;
+  return light;
+}
+
 std::optional<TrafficFlow> elaborate_flow(const Syntax& call, const std::vector<Item>& arguments,
                                           std::span<const Parameter> parameters,
                                           Diagnostics& diagnostics) {

@@ -1,6 +1,7 @@
-// scenfuzz's two extensions of the traffic slot of CreateScenario (docs/avunit.md, "Extensions"):
-// `NPCBehaviour(scripted | reactive)`, how the scenario's NPCs drive, and
-// `Flow("source_lane", rate, speed[, "destination_lane"])`, background traffic. The elaborator
+// scenfuzz's extensions of the traffic slot of CreateScenario (docs/avunit.md, "Extensions"):
+// `NPCBehaviour(scripted | reactive)`, how the scenario's NPCs drive,
+// `Flow("source_lane", rate, speed[, "destination_lane"])`, background traffic, and
+// `TrafficLight("light_id", colour)`, a map light's colour at the start. The elaborator
 // evaluates the file; these functions check the calls and build the IR pieces.
 #pragma once
 
@@ -22,6 +23,12 @@ inline constexpr double kMostVehiclesPerHour = 3600.0;
 // The behaviour `NPCBehaviour(...)` names, from its unevaluated call (its argument is a word, not
 // a variable), or nullopt after reporting an error.
 std::optional<NpcBehaviour> elaborate_npc_behaviour(const Syntax& call, Diagnostics& diagnostics);
+
+// The setting `TrafficLight("light_id", red | yellow | green)` makes, from its unevaluated call
+// (the colour is a word, quoted or not, not a variable), or nullopt after reporting an error.
+// Whether the map has the light is checked when the scenario is set up for simulation.
+std::optional<TrafficLightSetting> elaborate_traffic_light(const Syntax& call,
+                                                           Diagnostics& diagnostics);
 
 // The flow `Flow(...)` describes, from its evaluated arguments; `parameters` are the search
 // parameters so far (the bounds a rate or speed drawn from a range can reach). Unnamed: the

@@ -224,8 +224,18 @@ std::vector<MalformedCase> malformed_cases() {
        "expected a Vehicle(...) in the vehicle slot of CreateScenario, found "
        "NPCBehaviour(scripted)"},
       {"number_in_the_traffic_slot", with_traffic("1"), 2, 53,
-       "expected an Intersection(...), SpeedLimit(...), Flow(...) or NPCBehaviour(...) in the "
-       "traffic slot, found a number"},
+       "expected an Intersection(...), SpeedLimit(...), Flow(...), NPCBehaviour(...) or "
+       "TrafficLight(...) in the traffic slot, found a number"},
+      {"traffic_light_unknown_colour", with_traffic("TrafficLight(\"light_west\", blue)"), 2, 80,
+       "expected red, yellow or green in TrafficLight(...), found 'blue'"},
+      {"traffic_light_id_not_quoted", with_traffic("TrafficLight(light_west, red)"), 2, 66,
+       "expected the map's traffic-light id in quotes in TrafficLight(...), found 'light_west'"},
+      {"traffic_light_without_colour", with_traffic("TrafficLight(\"light_west\")"), 2, 53,
+       "TrafficLight(...) takes a light's id and a colour: TrafficLight(\"light_id\", red), with "
+       "red, yellow or green, found 1 argument"},
+      {"traffic_light_given_twice",
+       with_traffic("TrafficLight(\"light_west\", red), TrafficLight(\"light_west\", green)"), 2,
+       86, "traffic light 'light_west' is given twice in the traffic slot; keep one"},
       {"flow_negative_rate", with_traffic("Flow(\"east_0\", -100, 10)"), 2, 68,
        "a flow's rate cannot be negative, found -100"},
       {"flow_negative_speed", with_traffic("Flow(\"east_0\", 100, -3)"), 2, 73,

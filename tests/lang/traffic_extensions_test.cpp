@@ -1,7 +1,7 @@
 // scenfuzz's extensions of the AVUnit / scenest traffic slot (docs/avunit.md, "Extensions"):
-// NPCBehaviour(...) and Flow(...) as the IR holds them, flows' names and their ranges as search
-// parameters, print -> parse round trips, and files without them unchanged. Their errors are
-// cases of malformed_test.cpp.
+// NPCBehaviour(...), Flow(...) and TrafficLight(...) as the IR holds them, flows' names and their
+// ranges as search parameters, print -> parse round trips, and files without them unchanged. Their
+// errors are cases of malformed_test.cpp.
 #include <gtest/gtest.h>
 
 #include "lang/avunit/avunit.hpp"
@@ -169,6 +169,22 @@ TEST(TrafficExtensions, AFileWithoutThemParsesAsBefore) {
   std::string printed = avunit::print(result.scenario);
   EXPECT_EQ(printed.find("NPCBehaviour"), std::string::npos) << printed;
   EXPECT_EQ(printed.find("Flow"), std::string::npos) << printed;
+}
+
+TEST(TrafficLight, SetsALightsColourAtTheStartAndSurvivesPrintAndParse) {
+  avunit::ParseResult result =
+      parse_ok(with_traffic("TrafficLight(\"light_west\", red), TrafficLight('light_north', "
+                            "\"green\"), NPCBehaviour(scripted)"));
+  const std::vector<TrafficLightSetting>& lights = result.scenario.traffic.lights;
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(lights[0].id, "light_west");
+  EXPECT_EQ(lights[0].color, "red");
+  EXPECT_EQ(lights[0].location.line, 2u);
+  EXPECT_EQ(lights[1].id, "light_north");
+  EXPECT_EQ(lights[1].color, "green");
+  expect_round_trip(with_traffic("TrafficLight(\"light_west\", yellow)"));
+  const std::string printed = avunit::print(result.scenario);
+  EXPECT_NE(printed.find("TrafficLight(\"light_west\", red)"), std::string::npos) << printed;
 }
 
 }  // namespace
