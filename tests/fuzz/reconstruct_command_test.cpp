@@ -101,6 +101,10 @@ TEST_F(ReconstructCommandTest, TheEgoIsTheNamedVehicleInTheWrittenScenario) {
                                 source_file("corpora/accident/carsim_crossroad_tree.acc")});
   ASSERT_NE(run.exit_code, 2) << run.err;
   EXPECT_NE(slurp(out / "reconstruction.avu").find("truck1 = AV("), std::string::npos);
+  // The driver under test was put in the truck's place too.
+  EXPECT_EQ(summary(out)["driver_test"]["ego"], "truck1");
+  EXPECT_NE(run.out.find("driver test: the reference driver in truck1's place"), std::string::npos)
+      << run.out;
 }
 
 TEST_F(ReconstructCommandTest, BadInputIsAnErrorNamingTheFileOrTheOption) {
