@@ -57,13 +57,21 @@ double fourth_power(double x) {
   return squared * squared;
 }
 
-// The nearest actor ahead of `self` on `lanes` (bumper to bumper along them) and its speed along
-// self's heading, for which `counts` holds; gap +infinity when there is none.
+// The nearest actor ahead (bumper to bumper along the lanes) and its speed along the follower's
+// heading; gap +infinity when there is none.
 struct Leader {
   double gap = kInfinity;
   double speed = 0;
 };
 
+// The actor's speed along `me`'s heading, 0 when it comes the other way (as a standing obstacle).
+double speed_along(const KinematicState& me, const KinematicState& other) {
+  const double relative = angle_difference(other.heading, me.heading);
+  return std::max(0.0, longitudinal_velocity(other) * std::cos(relative));
+}
+
+// The nearest actor ahead of `self` on `lanes` (by the lane tracker's lane) for which `counts`
+// holds.
 template <typename Counts>
 Leader nearest_ahead(const WorldSnapshot& world, std::uint32_t self,
                      const std::vector<LaneAhead>& lanes, double half_length,
@@ -76,11 +84,44 @@ Leader nearest_ahead(const WorldSnapshot& world, std::uint32_t self,
       if (static_cast<LaneIndex>(world.lanes[k].lane) != lane.lane) continue;
       double along = lane.offset + world.lanes[k].s;
       double gap = along - half_length - world.lengths[k] / 2;
-      if (along > 0 && gap < leader.gap) {
-        leader.gap = gap;
-        double relative = angle_difference(world.states[k].heading, me.heading);
-        leader.speed = std::max(0.0, longitudinal_velocity(world.states[k]) * std::cos(relative));
-      }
+      if (along > 0 && gap < leader.gap) leader = {gap, speed_along(me, world.states[k])};
+    }
+  }
+  return leader;
+}
+
+// The nearest actor ahead of `self` whose body overlaps the band of road self's covers, `lateral`
+// m left of the centre lines of `lanes`, `width` wide and kPhaseSideMargin either side, for which
+// `counts` holds: by where its centre projects onto those lanes, whichever lane it is in (the
+// oncoming lane's traffic is in no lane of self's route).
+template <typename Counts>
+Leader nearest_in_corridor(const WorldSnapshot& world, std::uint32_t self,
+                           const std::vector<LaneAhead>& lanes, double lateral, double width,
+                           double half_length, const Counts& counts) {
+  // m: a foot of a perpendicular within this of a lane's end is on the lane (rounding).
+  constexpr double kEndTolerance = 1e-6;
+  const RoadMap& map = *world.map;
+  const KinematicState& me = world.states[self];
+  // Nothing farther than the lanes walked, plus the band's reach sideways, is on them.
+  const Lane& last = map.lane(lanes.back().lane);
+  const double reach = lanes.back().offset + last.length() + std::abs(lateral) + width;
+  Leader leader;
+  for (std::uint32_t k = 0; k < world.states.size(); ++k) {
+    if (k == self || world.lanes[k].lane < 0 || !present_in(world, k) || !counts(k)) continue;
+    const KinematicState& other = world.states[k];
+    const double dx = other.x - me.x, dy = other.y - me.y;
+    if (dx * dx + dy * dy > (reach + world.lengths[k]) * (reach + world.lengths[k])) continue;
+    const double beside = (width + world.widths[k]) / 2 + kPhaseSideMargin;
+    for (const LaneAhead& lane : lanes) {
+      const Lane& on = map.lane(lane.lane);
+      const PolylineProjection there = on.centre_line.project({other.x, other.y});
+      // Before the lane's start or past its end: on another lane of the route, or on none.
+      const bool at_end = there.s <= kEndTolerance || there.s >= on.length() - kEndTolerance;
+      if (at_end && there.distance > std::abs(there.lateral) + kEndTolerance) continue;
+      if (std::abs(there.lateral - lateral) >= beside) continue;
+      const double along = lane.offset + there.s;
+      const double gap = along - half_length - world.lengths[k] / 2;
+      if (along > 0 && gap < leader.gap) leader = {gap, speed_along(me, other)};
     }
   }
   return leader;
@@ -88,10 +129,21 @@ Leader nearest_ahead(const WorldSnapshot& world, std::uint32_t self,
 
 double lookahead(double speed) { return std::max(kMinimumLookahead, speed * kLookaheadTime); }
 
+// The nearest actor ahead that `scope` names, for which `counts` holds.
+template <typename Counts>
+Leader scoped_leader(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                     const std::vector<LaneAhead>& lanes, const ActorClass& body, LeaderScope scope,
+                     const Counts& counts) {
+  if (scope == LeaderScope::corridor)
+    return nearest_in_corridor(world, self, lanes, at.lateral, body.width, body.length / 2, counts);
+  return nearest_ahead(world, self, lanes, body.length / 2, counts);
+}
+
 }  // namespace
 
 double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
-                           const NextLane& next_lane, const ActorClass& body, double cruise_speed) {
+                           const NextLane& next_lane, const ActorClass& body, double cruise_speed,
+                           LeaderScope scope) {
   const RoadMap& map = *world.map;
   const KinematicState& me = world.states[self];
   const double v = me.speed;
@@ -110,8 +162,9 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
     best = std::min(best, a * (1 - fourth_power(v / desired) - ratio * ratio));
   };
   const double half = body.length / 2;
-  // The nearest actor ahead on these lanes.
-  const Leader leader = nearest_ahead(world, self, lanes, half, [](std::uint32_t) { return true; });
+  // The nearest actor ahead on these lanes, or in its band of road along them.
+  const Leader leader =
+      scoped_leader(world, self, at, lanes, body, scope, [](std::uint32_t) { return true; });
   const double nearest = leader.gap, lead_speed = leader.speed;
   if (std::isfinite(nearest)) follow(nearest, lead_speed, kStandstillGap);
   // Red lights (and yellow ones it can stop for) on these lanes.
@@ -128,8 +181,11 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
   return std::clamp(best, -body.max_deceleration, body.max_acceleration);
 }
 
-double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
-                          const NextLane& next_lane, const ActorClass& body) {
+namespace {
+
+// The leader a manoeuvre phase keeps from running into (phase_leader_limit).
+Leader phase_leader(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                    const NextLane& next_lane, const ActorClass& body, LeaderScope scope) {
   const RoadMap& map = *world.map;
   const KinematicState& me = world.states[self];
   const double v = me.speed;
@@ -137,7 +193,9 @@ double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePo
   bool dead_end = false;
   const std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, lookahead(v), dead_end);
   auto not_ego = [](std::uint32_t k) { return k != kEgo; };
-  Leader leader = nearest_ahead(world, self, lanes, half, not_ego);
+  Leader leader = scoped_leader(world, self, at, lanes, body, scope, not_ego);
+  // Its band of road already covers every lane its body is in.
+  if (scope == LeaderScope::corridor) return leader;
   // Changing lanes, the actor is still partly in the lane it leaves (the lane tracker's, while its
   // centre is there): what is ahead there counts while the bodies overlap sideways.
   const LaneFix& own = world.lanes[self];
@@ -154,7 +212,16 @@ double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePo
     const Leader there = nearest_ahead(world, self, leaving, half, beside);
     if (there.gap < leader.gap) leader = there;
   }
+  return leader;
+}
+
+}  // namespace
+
+double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                          const NextLane& next_lane, const ActorClass& body, LeaderScope scope) {
+  const Leader leader = phase_leader(world, self, at, next_lane, body, scope);
   if (!std::isfinite(leader.gap)) return kInfinity;
+  const double v = world.states[self].speed;
   // Close behind its leader, it drops back as IDM would, to a brisk driver's gap.
   const double safe = kStandstillGap + v * kPhaseTimeGap;
   double limit = kInfinity;

@@ -98,7 +98,7 @@ void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, doubl
     // A phase drives as scripted, but not into the traffic ahead (the ego aside), unless its
     // script drives without looking.
     NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
-    const double limit = phase_leader_limit(world, self, *on_lane_, next, body_);
+    const double limit = phase_leader_limit(world, self, *on_lane_, next, body_, leader_scope());
     if (limit < acceleration) {
       acceleration = limit;
       held_back_ = true;
@@ -320,6 +320,11 @@ bool ManoeuvreDriver::out_on_oncoming_lane() const {
   return lane.left_forward_neighbours.empty() && on_lane_->lateral > lane.narrowest_left_width;
 }
 
+LeaderScope ManoeuvreDriver::leader_scope() const {
+  // Its own lane's frame keeps its route out there, but the lane is no longer the one it is in.
+  return out_on_oncoming_lane() ? LeaderScope::corridor : LeaderScope::lanes;
+}
+
 void ManoeuvreDriver::move_into(LaneIndex lane) {
   PolylineProjection there = map_->lane(lane).centre_line.project({state_.x, state_.y});
   on_lane_ = LanePosition{lane, there.s, there.lateral};
@@ -437,7 +442,7 @@ double ManoeuvreDriver::between_phases(const WorldSnapshot& world, std::uint32_t
                       std::min(kHeedlessAcceleration, body_.max_acceleration));
   }
   NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
-  return cruise_acceleration(world, self, *on_lane_, next, body_, cruise_speed_);
+  return cruise_acceleration(world, self, *on_lane_, next, body_, cruise_speed_, leader_scope());
 }
 
 LaneIndex ManoeuvreDriver::previous_lane(LaneIndex to) const {

@@ -2,7 +2,8 @@
 // conditions over the current world (the ego's speed, offsets, lights, timers), so its motion
 // cannot be planned before the run as scripted NPCs' is. Outside its phases a vehicle on a lane
 // drives on reactively (lane_cruise.hpp), or keeps its speed when its script is heedless, and it
-// stops before the end of a lane leading nowhere.
+// stops before the end of a lane leading nowhere. Out on the oncoming lane after pulling out to
+// overtake, it follows what is ahead in that lane, not what it passes in its own.
 // Vehicles move along the lane graph (arc length, lateral offset and velocity along the heading,
 // negative when reversing, integrated each step; lane changes are smooth sideways curves in the
 // target lane's frame); pedestrians and vehicles off every lane move freely with the point-mass and
@@ -16,6 +17,7 @@
 
 #include "physics/actors/actor_class.hpp"
 #include "physics/map/lane_queries.hpp"
+#include "physics/simulation/lane_cruise.hpp"
 #include "physics/simulation/manoeuvre_script.hpp"
 #include "physics/simulation/world_snapshot.hpp"
 
@@ -53,6 +55,9 @@ class ManoeuvreDriver {
   void overtake(double duration);
   // Whether its centre is beyond its lane's left edge: out on the oncoming lane after an overtake.
   bool out_on_oncoming_lane() const;
+  // Whom it follows on its lane: out on the oncoming lane, what is in its band of road there (the
+  // oncoming traffic), not what is in its own lane beside it (what it is passing).
+  LeaderScope leader_scope() const;
   // Continues in `lane`'s frame, starting as far to its side as the actor now is.
   void move_into(LaneIndex lane);
   // Starts a sideways move from the present lateral offset to `to` in on_lane_'s frame.

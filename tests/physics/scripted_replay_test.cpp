@@ -1,12 +1,14 @@
 // Replaying scripts as an accident reconstruction needs them: an ego that drives its manoeuvre
 // phases instead of being driven (SimulationSetup::ego_script), scripts that run without looking
 // under scripted NPC behaviour (ManoeuvreScript::heedless), and Overtake, out onto the oncoming
-// lane of a road with one lane each way and back.
+// lane of a road with one lane each way and back, where reactive, it follows what is in that lane
+// (oncoming traffic) and not what it passes in its own.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "manoeuvre_fixtures.hpp"
 #include "physics/actors/vehicle_signals.hpp"
@@ -217,6 +219,79 @@ TEST(ScriptedReplay, BackFromTheOncomingLaneIsIntoItsOwnLane) {
   EXPECT_NEAR(car.y.back(), -1.75, 0.01);
   EXPECT_NEAR(car.heading.back(), 0, 0.01);
 }
+
+// On `straight` with a lane each way, reactive: "Overtaker" at 15 m/s pulls out (to 18 m/s over
+// 3 s) past "Slow", 50 m ahead of it at 5 m/s in its lane (beside it from t = 4), and from
+// t = 8 comes back.
+ScenarioTemplate overtake_past_slow_car() {
+  ScenarioTemplate scenario = reconstruction(1, true, "east_0", 5, 0, 13);
+  scenario.ego.motion.phases = {phase("Stopped", {}, {})};
+  ManoeuvrePhase back = phase("LaneChangeRight", {}, 3);
+  back.start_when = clock_reaches(8);
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Overtaker",
+                                          lane_state("east_0", 45, 15),
+                                          {phase("Overtake", 18, 3), std::move(back)}));
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Slow", lane_state("east_0", 95, 5),
+                                          {phase("Drive", 5, 13)}));
+  scenario.npc_behaviour = NpcBehaviour::reactive;
+  return scenario;
+}
+
+TEST(ScriptedReplay, OutOnTheOncomingLaneWhatItPassesDoesNotHoldItBack) {
+  ManoeuvreRun run = run_manoeuvres(overtake_past_slow_car());
+  ASSERT_TRUE(run.trace) << run.messages;
+  const Trace& trace = *run.trace;
+  const TraceActor& car = trace.actors[*trace.find_actor("Overtaker")];
+  const TraceActor& slow = trace.actors[*trace.find_actor("Slow")];
+  EXPECT_FALSE(run.setup->actors[0].manoeuvres->heedless);
+  for (double t = 4; t < 8; t += 0.25) {
+    const std::size_t i = sample_at(trace, t);
+    EXPECT_NEAR(car.y[i], 1.75, 0.05) << "on the oncoming lane at t = " << t;
+    EXPECT_GT(car.speed[i], 17.5) << "not held back by Slow at t = " << t;
+  }
+  EXPECT_NEAR(car.y.back(), -1.75, 0.01) << "back in its own lane";
+  EXPECT_GT(car.x.back() - slow.x.back(), 20) << "ahead of Slow";
+  EXPECT_TRUE(trace.collisions.empty());
+}
+
+// As overtake_on(1), `behaviour` NPCs, but nothing brings it back: out on the oncoming lane,
+// "Oncoming" stands in it at x = 150 (west_0 runs from x = 500 to 0). With `then_drive`, a Drive
+// phase at 18 m/s follows the Overtake for 10 s; without, it drives on outside its phases.
+ScenarioTemplate oncoming_car_in_the_way(NpcBehaviour behaviour, bool then_drive) {
+  ScenarioTemplate scenario = reconstruction(1, true, "east_0", 5, 0, 13);
+  scenario.ego.motion.phases = {phase("Stopped", {}, {})};
+  std::vector<ManoeuvrePhase> phases = {phase("Overtake", 18, 3)};
+  if (then_drive) phases.push_back(phase("Drive", 18, 10));
+  scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Overtaker",
+                                          lane_state("east_0", 45, 15), std::move(phases)));
+  scenario.vehicles.push_back(manoeuvring(
+      ActorKind::vehicle, "Oncoming", lane_state("west_0", 350, 0), {phase("Stopped", {}, {})}));
+  scenario.npc_behaviour = behaviour;
+  return scenario;
+}
+
+class OncomingOnThePassingLane : public testing::TestWithParam<bool> {};
+
+TEST_P(OncomingOnThePassingLane, ReactiveStopsForItScriptedRunsIntoIt) {
+  ManoeuvreRun reactive =
+      run_manoeuvres(oncoming_car_in_the_way(NpcBehaviour::reactive, GetParam()));
+  ASSERT_TRUE(reactive.trace) << reactive.messages;
+  const TraceActor& car = reactive.trace->actors[*reactive.trace->find_actor("Overtaker")];
+  EXPECT_NEAR(car.y.back(), 1.75, 0.05) << "still out on the oncoming lane";
+  EXPECT_LT(car.speed.back(), 0.1) << "stopped in front of Oncoming";
+  EXPECT_TRUE(reactive.trace->collisions.empty());
+
+  ManoeuvreRun scripted =
+      run_manoeuvres(oncoming_car_in_the_way(NpcBehaviour::scripted, GetParam()));
+  ASSERT_TRUE(scripted.trace) << scripted.messages;
+  const Trace& trace = *scripted.trace;
+  ASSERT_FALSE(trace.collisions.empty()) << "heedless, it sees nothing";
+  EXPECT_EQ(trace.collisions.front().first, *trace.find_actor("Overtaker"));
+  EXPECT_EQ(trace.collisions.front().second, *trace.find_actor("Oncoming"));
+}
+
+// In a phase (phase_leader_limit) and after it (cruising).
+INSTANTIATE_TEST_SUITE_P(InAndAfterThePhase, OncomingOnThePassingLane, testing::Bool());
 
 }  // namespace
 }  // namespace scenfuzz
