@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "oracle/pair_geometry.hpp"
 #include "oracle/right_of_way.hpp"
@@ -54,6 +55,25 @@ bool in_path(const Trace& trace, const RoadMap& map, ActorId vehicle, ActorId in
   return in_lane_ahead(trace, map, vehicle, intruder, i, g).value_or(g.gap_lat < 0 && g.dx > 0);
 }
 
+// Whether `intruder` kept to its own lane, along it, while `vehicle` drove in that lane against
+// its direction (out on the oncoming lane to overtake, or the wrong way): then the vehicle brought
+// its path to the intruder, which was where it belonged. Not in a junction, where lanes overlap.
+bool kept_to_lane_met_against(const Trace& trace, const RoadMap& map, ActorId vehicle,
+                              ActorId intruder, std::size_t i) {
+  const TraceActor& in = trace.actors[intruder];
+  if (in.lane[i] < 0) return false;
+  const auto lane = static_cast<LaneIndex>(in.lane[i]);
+  if (map.lane(lane).junction) return false;
+  const std::optional<MapPose> centre =
+      lane_pose_at(map, lane, std::clamp(in.s[i], 0.0, map.lane(lane).length()));
+  if (!centre || std::abs(wrap_angle(in.heading[i] - centre->heading)) > kFollowsLane) return false;
+  const TraceActor& v = trace.actors[vehicle];
+  const std::optional<LaneProjection> on =
+      project_onto_lanes(map, {v.x[i], v.y[i]}, std::span<const LaneIndex>(&lane, 1));
+  return on && on->inside &&
+         std::abs(wrap_angle(v.heading[i] - centre->heading + std::numbers::pi)) < kFollowsLane;
+}
+
 // The first sample of the standstill that lasts up to `last`; nullopt when moving at `last`.
 std::optional<std::size_t> rest_since(const TraceActor& actor, std::size_t last) {
   if (actor.speed[last] > kStandstillSpeed) return std::nullopt;
@@ -89,6 +109,7 @@ std::optional<PathIntrusion> path_intrusion(const Trace& trace, const RoadMap& m
   const std::optional<std::size_t> entry =
       entered(trace, map, vehicle, intruder, collision_sample, first);
   if (!entry || *entry == first) return std::nullopt;
+  if (kept_to_lane_met_against(trace, map, vehicle, intruder, *entry)) return std::nullopt;
   const std::optional<std::size_t> rest = rest_since(trace.actors[intruder], collision_sample);
   if (rest && *rest < *entry) return std::nullopt;  // it stood; the path came to it
   PathIntrusion found;

@@ -26,7 +26,8 @@ struct PathIntrusion {
 
 // How `intruder` came into `vehicle`'s path before the collision at `collision_sample`; nullopt
 // when it was not in the path then, was in it from the start, or stood still already when the
-// path came to it (the vehicle moved, not the intruder).
+// path came to it (the vehicle moved, not the intruder), or kept to its own lane along it while the
+// vehicle came against that lane's direction.
 std::optional<PathIntrusion> path_intrusion(const Trace& trace, const RoadMap& map, ActorId vehicle,
                                             ActorId intruder, std::size_t collision_sample,
                                             const RssParameters& rss);

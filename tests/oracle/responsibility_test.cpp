@@ -177,6 +177,41 @@ TEST(ResponsibilityTest, ACutterEnteringTheEgosLaneJustBeforeImpactIsAtFault) {
   EXPECT_NEAR(r.triage.entry->required_deceleration, 4 / (2 * r.triage.entry->gap), 0.2);
 }
 
+// West-bound along y = 1.75 (west_1) from x0 at v0; from `from` braking at `decel` to a stop.
+Motion braking_west(double x0, double v0, double from, double decel) {
+  return [=](double t) {
+    const State east = braking_east(-x0, 1.75, v0, from, decel)(t);
+    return State{-east.x, east.y, -east.vx, 0};
+  };
+}
+
+// East-bound at `speed` from x0 on east_1, pulling out into west_1 from `from` over `over` seconds
+// (a half-cosine, as a driver steers).
+Motion pulling_out_east(double x0, double speed, double from, double over) {
+  return [=](double t) {
+    const double u = std::clamp((t - from) / over, 0.0, 1.0);
+    const double rate =
+        u > 0 && u < 1 ? 1.75 * std::numbers::pi / over * std::sin(std::numbers::pi * u) : 0;
+    return State{x0 + speed * t, kEast1 + 1.75 * (1 - std::cos(std::numbers::pi * u)), speed, rate};
+  };
+}
+
+// An overtaker pulls out of east_1 into the ego's west_1 and comes at it head-on; the ego, in its
+// own lane, brakes to a stop 1 s before the impact. The overtaker brought its path to the ego: the
+// ego did not stop in its way.
+TEST(ResponsibilityTest, EgoStoppedInItsOwnLaneAndHitByAnOvertakerIsNotAtFault) {
+  const RoadMap map = builtin("straight");
+  Trace trace = two_actor_trace(10);
+  move(trace, map, trace.actors[0], braking_west(200, 8, 2, 3), std::numbers::pi);
+  move(trace, map, trace.actors[1], pulling_out_east(100, 12, 1, 3));
+  end_at_contact(trace);
+  ASSERT_LT(trace.actors[0].speed.back(), 0.01) << "the ego stands at the impact";
+  ASSERT_GT(trace.time.back(), 5.5) << "the ego stood for a while";
+  const CollisionResponsibility r = judge(trace, map);
+  EXPECT_EQ(r.responsibility, Responsibility::other) << r.reason;
+  EXPECT_EQ(r.reason.find("no room to stop"), std::string::npos) << r.reason;
+}
+
 TEST(ResponsibilityTest, EgoChangingLaneIntoACarAlongsideIsAtFault) {
   const RoadMap map = builtin("straight");
   Trace trace = two_actor_trace(10);
