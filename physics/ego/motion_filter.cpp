@@ -15,10 +15,10 @@ void MotionFilter::update(std::span<const WorldObject> objects, double dt) {
   next.reserve(objects.size());
   auto old = tracks_.begin();
   for (const WorldObject& object : objects) {
-    if (object.kind != TraceActorKind::pedestrian) continue;
+    if (object.kind == TraceActorKind::obstacle) continue;
     double velocity = object.reversing ? -object.speed : object.speed;
     // Standing (perception clamps noisy speeds at 0): no sine and cosine for a zero vector. Only
-    // the sign of a zero could differ, and speed() reads magnitudes only.
+    // the sign of a zero could differ, which no reader of speed() or velocity() tells apart.
     const bool still = velocity == 0 && std::isfinite(object.heading);
     double vx = still ? 0.0 : velocity * std::cos(object.heading);
     double vy = still ? 0.0 : velocity * std::sin(object.heading);
@@ -32,11 +32,27 @@ void MotionFilter::update(std::span<const WorldObject> objects, double dt) {
   std::swap(tracks_, next);
 }
 
-double MotionFilter::speed(ActorId id) const {
+const MotionFilter::Track* MotionFilter::find(ActorId id) const {
   auto found = std::lower_bound(tracks_.begin(), tracks_.end(), id,
                                 [](const Track& t, ActorId wanted) { return t.id < wanted; });
-  if (found == tracks_.end() || found->id != id) return 0;
-  return std::hypot(found->vx, found->vy);
+  return found == tracks_.end() || found->id != id ? nullptr : &*found;
+}
+
+double MotionFilter::speed(ActorId id) const {
+  const Track* found = find(id);
+  return found ? std::hypot(found->vx, found->vy) : 0;
+}
+
+std::optional<MotionFilter::Velocity> MotionFilter::velocity(ActorId id) const {
+  const Track* found = find(id);
+  if (!found) return std::nullopt;
+  return Velocity{found->vx, found->vy};
+}
+
+// Exponential smoothing with weight w leaves w / (2 - w) of white noise's variance.
+double MotionFilter::noise_reduction(double dt) const {
+  const double weight = std::clamp(dt / time_constant_, 0.0, 1.0);
+  return weight > 0 ? std::sqrt(weight / (2 - weight)) : 1.0;
 }
 
 }  // namespace scenfuzz

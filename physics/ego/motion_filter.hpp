@@ -1,9 +1,12 @@
 // Smoothed velocities of perceived objects, by id: perception's speed and heading carry noise, so
 // that a pedestrian standing still seems to drift a few centimetres a second in any direction.
-// The reference driver tells standing from walking pedestrians by the smoothed speed, and asks
-// it of nothing else: only pedestrians are tracked (a sine and cosine per vehicle a step spared).
+// The reference driver tells standing from walking pedestrians by the smoothed speed, and whether
+// a vehicle beside its path is moving into it by the smoothed velocity: a heading error of a few
+// degrees on a fast oncoming car is a lateral speed enough to seem to swerve. Obstacles are not
+// tracked (they stand).
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -13,22 +16,34 @@ namespace scenfuzz {
 
 class MotionFilter {
  public:
+  struct Velocity {
+    double x = 0, y = 0;  // m/s along the map's axes
+  };
+
   explicit MotionFilter(double time_constant = 0.5) : time_constant_(time_constant) {}
 
-  // Folds in one step's pedestrians (objects sorted by id, as perception gives them; the others
-  // are passed over) `dt` seconds after the previous call; pedestrians no longer seen are
+  // Folds in one step's pedestrians and vehicles (objects sorted by id, as perception gives them;
+  // obstacles are passed over) `dt` seconds after the previous call; those no longer seen are
   // forgotten.
   void update(std::span<const WorldObject> objects, double dt);
 
-  // The smoothed speed of a pedestrian seen at the last update (0 for an unknown id, and for any
-  // other object).
+  // The smoothed speed of a pedestrian or vehicle seen at the last update (0 for an unknown id,
+  // and for an obstacle).
   double speed(ActorId id) const;
+  // Its smoothed velocity (none for an unknown id or an obstacle).
+  std::optional<Velocity> velocity(ActorId id) const;
+
+  // The standard deviation of a smoothed velocity component over that of one step's, for
+  // independent noise from step to step and steps of `dt` s (1 without smoothing).
+  double noise_reduction(double dt) const;
 
  private:
   struct Track {
     ActorId id = 0;
     double vx = 0, vy = 0;
   };
+  const Track* find(ActorId id) const;
+
   double time_constant_;
   std::vector<Track> tracks_;  // sorted by id
   std::vector<Track> spare_;   // the previous tracks' storage, refilled by the next update

@@ -83,6 +83,7 @@ ReferenceDriver::ReferenceDriver(const RoadMap& map, const RouteTracker& route,
           vehicle.max_deceleration > 0
               ? sight_speed(sensing, vehicle.length / 2, vehicle.max_deceleration, settings.sight)
               : std::numeric_limits<double>::infinity()),
+      heading_noise_(sensing.heading_noise),
       stop_sign_served_(route.features().size(), false),
       left_turn_(map, route, vehicle, settings.left_turn) {
   // The speed the driver may have at each path vertex: the limit, the bend, and what braking
@@ -305,7 +306,9 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     // A reversing object moves against its heading: one backing towards the ego closes in.
     double velocity = object.reversing ? -object.speed : object.speed;
     double lead_speed = velocity * std::cos(relative);
-    double lateral_speed = velocity * std::sin(relative);
+    double lateral_speed = pedestrian
+                               ? velocity * std::sin(relative)
+                               : vehicle_lateral_speed(object, velocity, relative, path_heading);
     double clearance = std::abs(lateral) - across - half_width;
 
     bool in_path = clearance <= 0;
@@ -339,6 +342,27 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
                      std::max(settings_.standstill_gap, settings_.overtaking.waiting_gap));
     constraints_.push_back({gap, clearance_kept, std::max(lead_speed, 0.0), true, reason});
   }
+}
+
+// A vehicle's speed towards the path's left (heading `path_heading` there). Perception's heading
+// noise alone makes a fast car beside the path (an oncoming one passing close by) seem to swerve
+// into it now and then, and one such step made the ego brake in full. So a speed across counts
+// when this step's measurement is beyond 4 standard deviations of that noise (a sharp cut-in,
+// seen at once), or the smoothed velocity's beyond 3 of its own (a gentle lane change, seen
+// within a few steps); else the vehicle keeps its line.
+double ReferenceDriver::vehicle_lateral_speed(const WorldObject& object, double velocity,
+                                              double relative, double path_heading) const {
+  constexpr double kRawSigmas = 4;
+  constexpr double kSmoothedSigmas = 3;
+  const double sigma = heading_noise_ * std::abs(velocity);
+  const double raw = velocity * std::sin(relative);
+  if (std::abs(raw) > kRawSigmas * sigma) return raw;
+  const auto smoothed = motion_.velocity(object.id);
+  if (!smoothed) return 0;  // an obstacle: it stands
+  const double lateral =
+      smoothed->y * std::cos(path_heading) - smoothed->x * std::sin(path_heading);
+  return std::abs(lateral) > kSmoothedSigmas * sigma * motion_.noise_reduction(last_dt_) ? lateral
+                                                                                         : 0.0;
 }
 
 // A pedestrian on the carriageway walking towards the ego's path, not (yet) counted as in it:
@@ -619,6 +643,7 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   const KinematicState& ego = input.ego;
   double dt = last_time_ >= 0 ? input.time - last_time_ : 0.1;
   last_time_ = input.time;
+  last_dt_ = dt;
   motion_.update(input.objects, dt);
   start_locating(input);
   // The free road's speed here, for the plan and the acceleration alike.

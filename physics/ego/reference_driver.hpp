@@ -132,13 +132,16 @@ class ReferenceDriver {
   void add_crossing_pedestrian(const WorldObject& object, double ego_speed, double gap,
                                double clearance, double lateral_speed, double along_speed);
   double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
+  double vehicle_lateral_speed(const WorldObject& object, double velocity, double relative,
+                               double path_heading) const;
 
   const RoadMap& map_;
   const RouteTracker& route_;
   ActorClass vehicle_;
   bool route_ends_at_target_;
   DriverSettings settings_;
-  double sight_speed_;  // m/s: it can stop within its sight distance from this speed
+  double sight_speed_;    // m/s: it can stop within its sight distance from this speed
+  double heading_noise_;  // rad, perception's standard deviation in this weather and light
   std::vector<double> speed_envelope_;  // per path vertex: the speed limit and bends, braked back
   std::vector<Constraint> constraints_;
   std::vector<Blocker> in_lane_;  // objects_in_lane's answer (kept, so as not to allocate a step)
@@ -155,6 +158,7 @@ class ReferenceDriver {
   OvertakePlan overtake_;
   std::optional<ActorId> waiting_to_pass_;  // the blocker stood behind with room to pull out
   double last_time_ = -1;
+  double last_dt_ = 0.1;           // s since the step before
   bool held_by_standing_ = false;  // a standing pedestrian would stop the ego (this step)
   double held_since_ = -1;         // since when, without a break
   bool patience_over_ = false;

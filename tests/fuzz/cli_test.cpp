@@ -693,16 +693,18 @@ Trace trace = EXE(scenario);
 
 // A concrete point of corpora/wmg/oblique_crossroads.sdl that a search reported as the ego's
 // fault ("left the car no room to stop"): an oncoming car turning left on the same green drove
-// into the rear corner of the ego going straight, after the ego had crossed its path. The turner
-// gives way, also when it is the one that runs into the other.
+// into the ego going straight. The turner gives way, also when it is the one that runs into the
+// other. An ego that holds its speed (the reference driver brakes and misses the turner).
 TEST_F(CliRunTest, AnOncomingLeftTurnerDrivingIntoTheEgoGoingStraightIsAtFault) {
   const fs::path file = fs::path(SCENFUZZ_TEST_DATA_DIR) / "left_turner_into_ego.sdl";
-  const Outcome run =
-      scenfuzz({"run", file.string(), "--seed", "1", "--out", (dir_ / "o").string()});
+  const std::string steady = std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/libsteady.so";
+  const Outcome run = scenfuzz({"run", file.string(), "--seed", "1", "--ego-plugin", steady,
+                                "--out", (dir_ / "o").string()});
   ASSERT_NE(run.exit_code, 2) << run.err;
-  EXPECT_NE(run.out.find("collision at "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("collision at 11.25 s: Ego left / Car front"), std::string::npos)
+      << run.out;
   EXPECT_NE(run.out.find("responsibility: other: the other turned left without giving way to the "
-                         "oncoming ego going straight: drove into the ego, in its path from "),
+                         "oncoming ego going straight: "),
             std::string::npos)
       << run.out;
 }
