@@ -1,5 +1,5 @@
 // Exponential smoothing of each perceived object's velocity vector (not of its speed: the noise
-// of the heading then averages out too).
+// of the heading then averages out too), and of a vehicle's heading as a unit vector.
 #include "physics/ego/motion_filter.hpp"
 
 #include <algorithm>
@@ -22,12 +22,19 @@ void MotionFilter::update(std::span<const WorldObject> objects, double dt) {
     const bool still = velocity == 0 && std::isfinite(object.heading);
     double vx = still ? 0.0 : velocity * std::cos(object.heading);
     double vy = still ? 0.0 : velocity * std::sin(object.heading);
+    // A vehicle's heading as a unit vector (averaging angles would break at +-pi); a pedestrian,
+    // round, has none worth a sine and cosine.
+    const bool oriented = object.kind == TraceActorKind::vehicle && std::isfinite(object.heading);
+    double hx = oriented ? std::cos(object.heading) : 0.0;
+    double hy = oriented ? std::sin(object.heading) : 0.0;
     while (old != tracks_.end() && old->id < object.id) ++old;
     if (old != tracks_.end() && old->id == object.id) {
       vx = old->vx + weight * (vx - old->vx);
       vy = old->vy + weight * (vy - old->vy);
+      hx = oriented ? old->hx + weight * (hx - old->hx) : old->hx;
+      hy = oriented ? old->hy + weight * (hy - old->hy) : old->hy;
     }
-    next.push_back({object.id, vx, vy});
+    next.push_back({object.id, vx, vy, hx, hy});
   }
   std::swap(tracks_, next);
 }
@@ -47,6 +54,12 @@ std::optional<MotionFilter::Velocity> MotionFilter::velocity(ActorId id) const {
   const Track* found = find(id);
   if (!found) return std::nullopt;
   return Velocity{found->vx, found->vy};
+}
+
+std::optional<double> MotionFilter::heading(ActorId id) const {
+  const Track* found = find(id);
+  if (!found || (found->hx == 0 && found->hy == 0)) return std::nullopt;
+  return std::atan2(found->hy, found->hx);
 }
 
 // Exponential smoothing with weight w leaves w / (2 - w) of white noise's variance.

@@ -32,6 +32,9 @@ class MotionFilter {
   double speed(ActorId id) const;
   // Its smoothed velocity (none for an unknown id or an obstacle).
   std::optional<Velocity> velocity(ActorId id) const;
+  // A vehicle's smoothed heading (none for an unknown id, a pedestrian or an obstacle): heading
+  // noise of 3 degrees swings a 12 m bus's corner 0.3 m sideways.
+  std::optional<double> heading(ActorId id) const;
 
   // The standard deviation of a smoothed velocity component over that of one step's, for
   // independent noise from step to step and steps of `dt` s (1 without smoothing).
@@ -41,6 +44,7 @@ class MotionFilter {
   struct Track {
     ActorId id = 0;
     double vx = 0, vy = 0;
+    double hx = 0, hy = 0;  // the smoothed heading's unit vector (0, 0: none)
   };
   const Track* find(ActorId id) const;
 

@@ -300,8 +300,9 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     double lateral = at->lateral - planned_lateral(overtake_, at->s);
     bool pedestrian = object.kind == TraceActorKind::pedestrian;
     bool standing = pedestrian && motion_.speed(object.id) < settings_.standing_speed;
-    double across = extent_across(object, relative);
-    double along = extent_along(object, relative);
+    double body_relative = vehicle_body_heading(object) - path_heading;
+    double across = extent_across(object, body_relative);
+    double along = extent_along(object, body_relative);
     double gap = at->s - along - front_s;
     // A reversing object moves against its heading: one backing towards the ego closes in.
     double velocity = object.reversing ? -object.speed : object.speed;
@@ -363,6 +364,23 @@ double ReferenceDriver::vehicle_lateral_speed(const WorldObject& object, double 
       smoothed->y * std::cos(path_heading) - smoothed->x * std::sin(path_heading);
   return std::abs(lateral) > kSmoothedSigmas * sigma * motion_.noise_reduction(last_dt_) ? lateral
                                                                                          : 0.0;
+}
+
+// The heading a perceived body lies along. A slow vehicle's (a parked or crawling one) is its
+// smoothed heading: the noise of one step's would swing a long one's corners in and out of the
+// corridor (a 12 m bus's by 0.3 m at 3 degrees). Unless this step's differs from it by more than
+// 3 standard deviations of that noise: a real turn, seen at once. A faster one's is this step's:
+// it may be cutting in.
+double ReferenceDriver::vehicle_body_heading(const WorldObject& object) const {
+  constexpr double kRawSigmas = 3;
+  constexpr double kSlow = 3;  // m/s
+  if (object.kind != TraceActorKind::vehicle || motion_.speed(object.id) >= kSlow)
+    return object.heading;
+  const std::optional<double> smoothed = motion_.heading(object.id);
+  if (!smoothed ||
+      std::abs(angle_difference(object.heading, *smoothed)) > kRawSigmas * heading_noise_)
+    return object.heading;
+  return *smoothed;
 }
 
 // A pedestrian on the carriageway walking towards the ego's path, not (yet) counted as in it:
@@ -669,7 +687,10 @@ VehicleControl ReferenceDriver::step(const DriverInput& input) {
   double desired = free_speed;
   if (creeping_) desired = std::min(desired, settings_.creeping_speed);
   double a = settings_.comfortable_acceleration;
-  double acceleration = a * (1 - fourth_power(ego.speed / desired));
+  // Found above the desired speed (a scenario starting over an icy road's limit), it slows at
+  // its comfortable deceleration, not at IDM's full braking for v >> v0.
+  double acceleration =
+      std::max(a * (1 - fourth_power(ego.speed / desired)), -settings_.comfortable_deceleration);
   reason_ = creeping_ ? DriverReason::creeping : DriverReason::cruise;
   if (sight_speed_ < desired) {
     // What it can see caps the speed as a lower desired speed would; found above it (a scenario

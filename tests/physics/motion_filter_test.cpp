@@ -8,8 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <random>
 #include <vector>
+
+#include "physics/map/map_point.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -123,6 +126,25 @@ TEST(MotionFilter, NoiseReductionIsTheSmoothedWhiteNoisesStandardDeviationRatio)
   const double raw = 10 * std::sqrt((1 - std::exp(-2 * 0.01)) / 2);  // sd of 10 sin(N(0, 0.1))
   EXPECT_NEAR(deviation / raw, filter.noise_reduction(dt), 0.01);
   EXPECT_EQ(filter.noise_reduction(0), 1.0);
+}
+
+TEST(MotionFilter, AVehiclesHeadingIsAveragedAcrossPiAndAPedestrianHasNone) {
+  MotionFilter filter(0.5);
+  WorldObject car;
+  car.id = 1;
+  car.kind = TraceActorKind::vehicle;
+  car.speed = 10;
+  WorldObject walker;
+  walker.id = 2;
+  walker.kind = TraceActorKind::pedestrian;
+  for (int step = 0; step < 100; ++step) {
+    // About pi, off by 0.06 rad either way in turn: the angle jumps between +pi and -pi.
+    car.heading = angle_difference(std::numbers::pi + (step % 2 == 0 ? 0.06 : -0.06), 0);
+    filter.update(std::vector<WorldObject>{car, walker}, 0.05);
+  }
+  EXPECT_NEAR(std::abs(*filter.heading(1)), std::numbers::pi, 0.01);
+  EXPECT_FALSE(filter.heading(2)) << "a pedestrian has no heading worth smoothing";
+  EXPECT_FALSE(filter.heading(3)) << "unknown";
 }
 
 }  // namespace
