@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "physics/ego/constant_acceleration_heuristic.hpp"
 #include "physics/ego/priority_traffic.hpp"
@@ -300,7 +301,7 @@ void ReferenceDriver::collect_object_constraints(const DriverInput& input, doubl
     double lateral = at->lateral - planned_lateral(overtake_, at->s);
     bool pedestrian = object.kind == TraceActorKind::pedestrian;
     bool standing = pedestrian && motion_.speed(object.id) < settings_.standing_speed;
-    double body_relative = vehicle_body_heading(object) - path_heading;
+    double body_relative = vehicle_body_heading(object, path_heading) - path_heading;
     double across = extent_across(object, body_relative);
     double along = extent_along(object, body_relative);
     double gap = at->s - along - front_s;
@@ -366,16 +367,19 @@ double ReferenceDriver::vehicle_lateral_speed(const WorldObject& object, double 
                                                                                          : 0.0;
 }
 
-// The heading a perceived body lies along. A slow vehicle's (a parked or crawling one) is its
-// smoothed heading: the noise of one step's would swing a long one's corners in and out of the
-// corridor (a 12 m bus's by 0.3 m at 3 degrees). Unless this step's differs from it by more than
-// 3 standard deviations of that noise: a real turn, seen at once. A faster one's is this step's:
-// it may be cutting in.
-double ReferenceDriver::vehicle_body_heading(const WorldObject& object) const {
+// The heading a perceived body lies along, the path heading `path_heading` there. A slow
+// vehicle's (a parked or crawling one) or an oncoming one's is its smoothed heading: the noise of
+// one step's would swing a long one's corners in and out of the corridor (a 12 m bus's by 0.3 m
+// at 3 degrees, parked beside the path or passing on a narrow road). Unless this step's differs
+// from it by more than 3 standard deviations of that noise: a real turn, seen at once. A faster
+// one going the ego's way takes this step's: it may be cutting in.
+double ReferenceDriver::vehicle_body_heading(const WorldObject& object, double path_heading) const {
   constexpr double kRawSigmas = 3;
-  constexpr double kSlow = 3;  // m/s
-  if (object.kind != TraceActorKind::vehicle || motion_.speed(object.id) >= kSlow)
-    return object.heading;
+  constexpr double kSlow = 3;                             // m/s
+  constexpr double kOncoming = 3 * std::numbers::pi / 4;  // rad from the path's heading
+  if (object.kind != TraceActorKind::vehicle) return object.heading;
+  const bool oncoming = std::abs(angle_difference(object.heading, path_heading)) > kOncoming;
+  if (motion_.speed(object.id) >= kSlow && !oncoming) return object.heading;
   const std::optional<double> smoothed = motion_.heading(object.id);
   if (!smoothed ||
       std::abs(angle_difference(object.heading, *smoothed)) > kRawSigmas * heading_noise_)

@@ -132,7 +132,7 @@ class ReferenceDriver {
   void add_crossing_pedestrian(const WorldObject& object, double ego_speed, double gap,
                                double clearance, double lateral_speed, double along_speed);
   double idm_acceleration(double speed, double desired, const Constraint& constraint) const;
-  double vehicle_body_heading(const WorldObject& object) const;
+  double vehicle_body_heading(const WorldObject& object, double path_heading) const;
   double vehicle_lateral_speed(const WorldObject& object, double velocity, double relative,
                                double path_heading) const;
 

@@ -1,8 +1,9 @@
 // The reference driver and an oncoming truck passing close by in the other lane of the built-in
 // two-way straight (east_0 at y = -1.75, west_0 at y = 1.75): perception's heading noise, a few
 // degrees on a truck at 13 m/s, is a lateral speed that seemed to carry it into the ego's path
-// for a step, and the ego braked in full for that step (phantom braking, in rain or fog). A truck
-// that really swerves into the ego's lane must still make it brake before it gets there.
+// for a step, and the ego braked in full for that step (phantom braking, in rain or fog); the same
+// noise swings a long truck's corners sideways. A truck that really swerves into the ego's lane
+// must still make it brake before it gets there.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -79,6 +80,23 @@ TEST(ReferenceDriverOncoming, ATruckPassingCloseInItsLaneWithHeadingNoiseIsNoRea
     ASSERT_NE(driver.last_reason(), DriverReason::emergency)
         << "full braking at " << k * kStep << " s, the truck " << f.truck.x - f.ego.x << " m ahead";
     ASSERT_GT(control.acceleration, -1.0) << "at " << k * kStep << " s";
+    f.advance(control.acceleration);
+  }
+}
+
+TEST(ReferenceDriverOncoming, HeadingNoiseSwingingAPassingTrucksCornersIsNoReasonToBrake) {
+  // 0.15 m outside the ego's corridor (a narrow road): 3.4 degrees of heading either way swings
+  // the 8 m truck's front corner 0.24 m towards the ego, into the corridor, on every step.
+  const ActorClass& car = actor_class(ActorCategory::car);
+  const double corridor_edge = -1.75 + car.width / 2 + 0.4;
+  OncomingFixture f(8, 60, corridor_edge + 0.15 + kTruckHalfWidth);
+  ReferenceDriver driver(f.map, f.tracker, f.car, true, DriverSettings{}, noisy_sensing());
+  for (int k = 0; f.truck.x > f.ego.x - 20; ++k) {
+    f.tracker.update({f.ego.x, f.ego.y});
+    std::vector<WorldObject> objects{f.perceived(k)};
+    const VehicleControl control = driver.step({k * kStep, f.ego, objects, {}});
+    ASSERT_GT(control.acceleration, -1.0)
+        << "braked at " << k * kStep << " s, the truck " << f.truck.x - f.ego.x << " m ahead";
     f.advance(control.acceleration);
   }
 }
