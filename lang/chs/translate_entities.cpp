@@ -242,15 +242,6 @@ class EntityTranslator {
       diagnostics_.warning(entity.track.location,
                            "changing lanes, overtaking and turning are a vehicle's manoeuvres: " +
                                entity.name.text + ", a pedestrian, crosses the road");
-    else if (turn_of(track) && file_.map.kind != MapSource::Kind::named)
-      diagnostics_.warning(
-          entity.track.location,
-          std::string("'turn ") +
-              (track.manoeuvre == TrackManoeuvre::turn_left ? "left" : "right") +
-              "' needs a junction, and a road network has none: roads meeting end to start "
-              "continue into each other and roads that cross simply cross "
-              "(docs/ch-scenario.md, \"The map\"), so " +
-              entity.name.text + " follows its lane");
     if (ego && track.manoeuvre == TrackManoeuvre::stop)
       diagnostics_.warning(entity.track.location,
                            "the ego is driven by the system under test, which decides itself "
@@ -298,9 +289,9 @@ class EntityTranslator {
       actor.initial.position = std::move(*position);
     }
     // A lane change is what the vehicle does first, from the start; so is a turn, at the next
-    // junction on its way, which only a named map has (warn_of_track).
+    // junction on its way (a map without one is warned of when the scenario is run).
     const char* manoeuvre = lane_change_of(track);
-    if (!manoeuvre && file_.map.kind == MapSource::Kind::named) manoeuvre = turn_of(track);
+    if (!manoeuvre) manoeuvre = turn_of(track);
     if (manoeuvre) {
       ManoeuvrePhase phase;
       phase.manoeuvre = manoeuvre;

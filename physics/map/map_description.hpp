@@ -112,6 +112,20 @@ struct CrosswalkDescription {
   std::optional<SignalPlan> walk_plan;         // pedestrian signal: green = walk
 };
 
+// A lane that junctions cut into pieces, kept under its own id so that a position written on it
+// (CH-Scenario's `<road>_f0`, physics/map/outline_map.hpp) finds its place: its pieces in driving
+// order, each with the arc length along the whole lane at which it begins (a stretch dropped
+// where the road ends inside a junction lies between none).
+struct LaneChainPiece {
+  std::string lane;
+  double start = 0;
+};
+
+struct LaneChainDescription {
+  std::string id;
+  std::vector<LaneChainPiece> pieces;
+};
+
 // The map header's geo-reference: a PROJ string such as
 // "+proj=utm +zone=10 +ellps=WGS84 +datum=WGS84 +units=m +no_defs". Empty for built-in maps.
 struct MapDescription {
@@ -124,6 +138,7 @@ struct MapDescription {
   std::vector<TrafficLightDescription> traffic_lights;
   std::vector<SignDescription> signs;
   std::vector<CrosswalkDescription> crosswalks;
+  std::vector<LaneChainDescription> lane_chains;
 };
 
 }  // namespace scenfuzz

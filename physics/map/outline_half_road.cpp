@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 
 #include "lang/demand.hpp"
+#include "lang/number_format.hpp"
 
 namespace scenfuzz::outline {
 
@@ -19,6 +21,9 @@ MapPoint scaled(double factor, MapPoint a) { return {factor * a.x, factor * a.y}
 double dot(MapPoint a, MapPoint b) { return a.x * b.x + a.y * b.y; }
 double norm(MapPoint a) { return std::sqrt(dot(a, a)); }
 MapPoint left_normal_of(MapPoint direction) { return {-direction.y, direction.x}; }
+
+// Stations closer than this are one (a millimetre: map coordinates are given to the centimetre).
+constexpr double kSameStation = 1e-3;
 
 // The unit direction of segment i (Polyline drops repeated points, so it has a length).
 MapPoint segment_direction(const std::vector<MapPoint>& points, std::size_t i) {
@@ -72,6 +77,8 @@ std::vector<WidthSample> lane_widths(const std::vector<MapPoint>& centre,
 
 }  // namespace
 
+std::string metres(double value) { return format_number(std::round(value * 100) / 100); }
+
 std::vector<CentreSample> sample_centre_line(const Polyline& centre_line) {
   const std::vector<MapPoint>& points = centre_line.points();
   const std::vector<double>& arc = centre_line.arc_lengths();
@@ -89,6 +96,28 @@ std::vector<CentreSample> sample_centre_line(const Polyline& centre_line) {
   }
   samples.push_back({points.back(), vertex_normal(points, points.size() - 1), arc.back()});
   return samples;
+}
+
+std::vector<CentreSample> with_stations(std::vector<CentreSample> samples,
+                                        const Polyline& centre_line,
+                                        std::span<const double> stations) {
+  for (double s : stations) {
+    const auto after = std::lower_bound(
+        samples.begin(), samples.end(), s,
+        [](const CentreSample& sample, double station) { return sample.s < station; });
+    if (after != samples.end() && after->s - s < kSameStation) continue;
+    if (after != samples.begin() && s - std::prev(after)->s < kSameStation) continue;
+    const std::size_t segment = centre_line.segment_at(s);
+    const MapPoint normal = left_normal_of(segment_direction(centre_line.points(), segment));
+    samples.insert(after, {centre_line.point_at(s), normal, s});
+  }
+  return samples;
+}
+
+std::size_t sample_at(std::span<const CentreSample> samples, double s) {
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (std::abs(samples[i].s - s) < kSameStation) return i;
+  demand_failed("a sample at the station", __FILE__, __LINE__);
 }
 
 double side_of_centre_line(const Polyline& centre_line, MapPoint point) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <vector>
 
 #include "physics/map/map_description.hpp"
@@ -12,6 +13,9 @@
 #include "physics/map/polyline.hpp"
 
 namespace scenfuzz::outline {
+
+// A length rounded to the centimetre, for error messages: they name places, not bits.
+std::string metres(double value);
 
 // Samples are at most this far apart along the centre line (and at every vertex).
 constexpr double kSampleSpacing = 5.0;
@@ -30,6 +34,16 @@ struct CentreSample {
 
 // The vertices of `centre_line` and points between them at most kSampleSpacing apart.
 std::vector<CentreSample> sample_centre_line(const Polyline& centre_line);
+
+// `samples` (of `centre_line`) with one more at each of `stations` (arc lengths inside the line)
+// that no sample lies within a millimetre of, between vertices with its segment's normal. Junction
+// cuts fall on samples this way, so the pieces of a cut lane meet exactly.
+std::vector<CentreSample> with_stations(std::vector<CentreSample> samples,
+                                        const Polyline& centre_line,
+                                        std::span<const double> stations);
+
+// The index of the sample within a millimetre of arc length `s`; one must be.
+std::size_t sample_at(std::span<const CentreSample> samples, double s);
 
 // Which way a point lies from the centre line, judged at the nearest centre-line point: the
 // component of (point - nearest) along the normal there (positive: left). At a vertex the normal

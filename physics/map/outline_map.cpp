@@ -2,16 +2,21 @@
 // halves with their ids, neighbours and boundary types, then connects lanes whose ends meet.
 #include "physics/map/outline_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
 #include <optional>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
+#include "lang/demand.hpp"
 #include "lang/number_format.hpp"
+#include "physics/map/outline_connectors.hpp"
 #include "physics/map/outline_half_road.hpp"
+#include "physics/map/outline_junction_sites.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/road_map.hpp"
 
@@ -21,6 +26,11 @@ namespace {
 
 using outline::CentreSample;
 using outline::HalfSide;
+using outline::JunctionSite;
+using outline::metres;
+
+// Stations closer than this are one cut (outline_half_road.cpp's sample tolerance).
+constexpr double kSameStation = 1e-3;
 
 constexpr const char* kSource = "CH-Scenario road network";
 // A boundary point this close to the wrong side of the centre line is drawing noise, not a
@@ -32,9 +42,6 @@ constexpr double kConnectionAngle = 60 * std::numbers::pi / 180;
 [[noreturn]] void fail(const std::string& road, const std::string& message) {
   throw MapError("road '" + road + "': " + message);
 }
-
-// Rounded to the centimetre: error messages name places, not bits.
-std::string metres(double value) { return format_number(std::round(value * 100) / 100); }
 
 std::string point_text(std::size_t index, MapPoint point) {
   return "point " + std::to_string(index + 1) + " (" + metres(point.x) + ", " + metres(point.y) +
@@ -73,50 +80,189 @@ void check_side(const std::string& road, const Polyline& centre, const char* lin
   }
 }
 
-std::string lane_id(const std::string& road, HalfSide side, int k) {
-  return road + (side == HalfSide::right ? "_f" : "_b") + std::to_string(k);
-}
-
 HalfSide other(HalfSide side) { return side == HalfSide::right ? HalfSide::left : HalfSide::right; }
 
-// The lanes of one half with their ids, neighbours and boundary types. `opposite_lanes` says
-// whether the other half has lanes, across the centre line.
-void add_half(std::vector<LaneDescription>& lanes, const std::string& road,
-              const std::vector<CentreSample>& samples, const std::vector<double>& widths,
-              HalfSide side, int lane_count, bool opposite_lanes) {
-  for (int k = 0; k < lane_count; ++k) {
-    LaneDescription lane = outline::half_lane(samples, widths, side, lane_count, k);
-    lane.id = lane_id(road, side, k);
-    if (k > 0) lane.left_forward_neighbours = {lane_id(road, side, k - 1)};
-    if (k + 1 < lane_count) lane.right_forward_neighbours = {lane_id(road, side, k + 1)};
-    if (k == 0 && opposite_lanes) lane.left_reverse_neighbours = {lane_id(road, other(side), 0)};
-    const BoundaryType centre = opposite_lanes ? BoundaryType::dotted_yellow : BoundaryType::curb;
-    lane.left_boundary_type = k == 0 ? centre : BoundaryType::dotted_white;
-    lane.right_boundary_type =
-        k + 1 == lane_count ? BoundaryType::curb : BoundaryType::dotted_white;
-    lanes.push_back(std::move(lane));
-  }
-}
+// A road checked and measured: its shape, with the junction cuts among its samples once they are
+// known, and the lanes of its halves.
+struct MeasuredRoad {
+  const RoadOutlineGeometry* given = nullptr;
+  outline::RoadShape shape;
+  int forward = 0, backward = 0;
 
-void add_road(std::vector<LaneDescription>& lanes, const RoadOutlineGeometry& road) {
+  int lanes(HalfSide side) const { return side == HalfSide::right ? forward : backward; }
+  const std::vector<double>& widths(HalfSide side) const {
+    return side == HalfSide::right ? shape.right_widths : shape.left_widths;
+  }
+};
+
+MeasuredRoad measure(const RoadOutlineGeometry& road) {
   check_points(road.name, "left boundary", road.left_boundary);
   check_points(road.name, "centre line", road.centre_line);
   check_points(road.name, "right boundary", road.right_boundary);
-  const Polyline centre = centre_polyline(road);
+  MeasuredRoad measured{&road, {road.name, centre_polyline(road), {}, {}, {}}};
+  const Polyline& centre = measured.shape.centre;
   check_side(road.name, centre, "left boundary", road.left_boundary, +1);
   check_side(road.name, centre, "right boundary", road.right_boundary, -1);
-
-  const std::vector<CentreSample> samples = outline::sample_centre_line(centre);
-  const std::vector<double> right = outline::half_widths(samples, road.right_boundary);
-  const std::vector<double> left = outline::half_widths(samples, road.left_boundary);
-  const int forward = outline::half_lane_count(samples, right);
-  const int backward = outline::half_lane_count(samples, left);
-  if (forward == 0 && backward == 0)
+  measured.shape.samples = outline::sample_centre_line(centre);
+  measured.shape.right_widths = outline::half_widths(measured.shape.samples, road.right_boundary);
+  measured.shape.left_widths = outline::half_widths(measured.shape.samples, road.left_boundary);
+  measured.forward = outline::half_lane_count(measured.shape.samples, measured.shape.right_widths);
+  measured.backward = outline::half_lane_count(measured.shape.samples, measured.shape.left_widths);
+  if (measured.forward == 0 && measured.backward == 0)
     fail(road.name, "the road has no lanes: both halves are narrower than " +
                         metres(outline::kMinimumHalfWidth) +
                         " m everywhere (the boundaries lie on the centre line?)");
-  add_half(lanes, road.name, samples, right, HalfSide::right, forward, backward > 0);
-  add_half(lanes, road.name, samples, left, HalfSide::left, backward, forward > 0);
+  return measured;
+}
+
+// A stretch of a road between junction cuts (the whole road when it has none).
+struct RoadPiece {
+  double begin = 0, end = 0;  // stations along the centre line
+  std::string junction;       // the junction it crosses; empty outside junctions
+};
+
+// The legs of `sites` on road `road`.
+std::vector<outline::JunctionLeg> legs_of(std::size_t road, const std::vector<JunctionSite>& sites,
+                                          std::vector<std::string>* junctions = nullptr) {
+  std::vector<outline::JunctionLeg> legs;
+  for (const JunctionSite& site : sites)
+    for (const outline::JunctionLeg& leg : site.legs)
+      if (leg.road == road) {
+        legs.push_back(leg);
+        if (junctions) junctions->push_back(site.id);
+      }
+  return legs;
+}
+
+// The road's samples with its junctions' cuts among them, and its kept pieces in point order: a
+// junction's stretch of a road crossing it is a piece of that junction, one of a road ending (or
+// starting) in it is dropped.
+std::vector<RoadPiece> cut_road(MeasuredRoad& road, std::size_t index,
+                                const std::vector<JunctionSite>& sites) {
+  std::vector<std::string> junctions;
+  const std::vector<outline::JunctionLeg> legs = legs_of(index, sites, &junctions);
+  const double length = road.shape.centre.length();
+  std::vector<double> cuts{0, length};
+  for (const outline::JunctionLeg& leg : legs)
+    for (double station : {leg.begin, leg.end})
+      if (station > kSameStation && station < length - kSameStation) cuts.push_back(station);
+  std::sort(cuts.begin(), cuts.end());
+  road.shape.samples = outline::with_stations(road.shape.samples, road.shape.centre, cuts);
+  road.shape.right_widths = outline::half_widths(road.shape.samples, road.given->right_boundary);
+  road.shape.left_widths = outline::half_widths(road.shape.samples, road.given->left_boundary);
+  std::vector<RoadPiece> pieces;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    if (cuts[i + 1] - cuts[i] < kSameStation) continue;
+    const double middle = (cuts[i] + cuts[i + 1]) / 2;
+    RoadPiece piece{cuts[i], cuts[i + 1], ""};
+    bool dropped = false;
+    for (std::size_t l = 0; l < legs.size(); ++l)
+      if (legs[l].begin <= middle && middle <= legs[l].end) {
+        dropped = legs[l].kind != outline::LegKind::through;
+        piece.junction = junctions[l];
+      }
+    if (!dropped) pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+// Lane ids: <road>_f<k> on a road without junctions; with them each kept piece's lanes get
+// _<number>, numbered 1, 2, ... in the lane's driving direction, and <road>_f<k> names the chain.
+struct LaneNames {
+  std::string road;
+  std::size_t pieces = 1;
+  bool cut = false;
+
+  std::string chain(HalfSide side, int k) const {
+    return road + (side == HalfSide::right ? "_f" : "_b") + std::to_string(k);
+  }
+  std::string operator()(HalfSide side, int k, std::size_t piece) const {
+    if (!cut) return chain(side, k);
+    const std::size_t number = side == HalfSide::right ? piece + 1 : pieces - piece;
+    return chain(side, k) + "_" + std::to_string(number);
+  }
+};
+
+// The lanes of one half of one piece with their ids, neighbours (none inside a junction) and
+// boundary types.
+void add_half(MapDescription& map, const MeasuredRoad& road, const RoadPiece& piece,
+              std::size_t piece_index, const LaneNames& names, HalfSide side) {
+  const std::vector<CentreSample>& samples = road.shape.samples;
+  const std::size_t first = outline::sample_at(samples, piece.begin);
+  const std::size_t count = outline::sample_at(samples, piece.end) - first + 1;
+  const int n = road.lanes(side);
+  const bool opposite_lanes = road.lanes(other(side)) > 0;
+  const bool free = piece.junction.empty();
+  for (int k = 0; k < n; ++k) {
+    LaneDescription lane =
+        outline::half_lane(std::span(samples).subspan(first, count),
+                           std::span(road.widths(side)).subspan(first, count), side, n, k);
+    lane.id = names(side, k, piece_index);
+    if (k > 0 && free) lane.left_forward_neighbours = {names(side, k - 1, piece_index)};
+    if (k + 1 < n && free) lane.right_forward_neighbours = {names(side, k + 1, piece_index)};
+    if (k == 0 && opposite_lanes && free)
+      lane.left_reverse_neighbours = {names(other(side), 0, piece_index)};
+    const BoundaryType centre = opposite_lanes ? BoundaryType::dotted_yellow : BoundaryType::curb;
+    lane.left_boundary_type = k == 0 ? centre : BoundaryType::dotted_white;
+    lane.right_boundary_type = k + 1 == n ? BoundaryType::curb : BoundaryType::dotted_white;
+    lane.speed_limit = road.given->speed_limit;
+    lane.junction = piece.junction;
+    map.lanes.push_back(std::move(lane));
+  }
+}
+
+// The arc length along the whole uncut lane at each sample of the road, in point order.
+std::vector<double> whole_lane_stations(const MeasuredRoad& road, HalfSide side, int k) {
+  const LaneDescription whole =
+      outline::half_lane(road.shape.samples, road.widths(side), side, road.lanes(side), k);
+  std::vector<double> arc{0};
+  for (std::size_t i = 1; i < whole.centre_line.size(); ++i)
+    arc.push_back(arc.back() + distance(whole.centre_line[i - 1], whole.centre_line[i]));
+  if (side == HalfSide::left) std::reverse(arc.begin(), arc.end());  // in point order
+  return arc;
+}
+
+// Each cut lane's chain: its pieces in driving order, each where it begins along the whole lane.
+void add_chains(MapDescription& map, const MeasuredRoad& road, const std::vector<RoadPiece>& pieces,
+                const LaneNames& names) {
+  for (HalfSide side : {HalfSide::right, HalfSide::left})
+    for (int k = 0; k < road.lanes(side); ++k) {
+      const std::vector<double> arc = whole_lane_stations(road, side, k);
+      LaneChainDescription chain{names.chain(side, k), {}};
+      for (std::size_t j = 0; j < pieces.size(); ++j) {
+        const double begins = side == HalfSide::right ? pieces[j].begin : pieces[j].end;
+        chain.pieces.push_back(
+            {names(side, k, j), arc[outline::sample_at(road.shape.samples, begins)]});
+      }
+      if (side == HalfSide::left) std::reverse(chain.pieces.begin(), chain.pieces.end());
+      map.lane_chains.push_back(std::move(chain));
+    }
+}
+
+// Where the road leaves a junction at `station`: after it in the point order, or before it.
+outline::JunctionArm arm(const MeasuredRoad& road, const std::vector<RoadPiece>& pieces,
+                         const LaneNames& names, double station, bool after) {
+  const Polyline& centre = road.shape.centre;
+  const double heading = centre.heading_at(station);
+  outline::JunctionArm arm;
+  arm.outward = after ? MapPoint{std::cos(heading), std::sin(heading)}
+                      : MapPoint{-std::cos(heading), -std::sin(heading)};
+  std::size_t piece = 0;
+  while (piece < pieces.size() &&
+         std::abs((after ? pieces[piece].begin : pieces[piece].end) - station) > kSameStation)
+    ++piece;
+  SCENFUZZ_DEMAND(piece < pieces.size());
+  const HalfSide in = after ? HalfSide::left : HalfSide::right;
+  for (int k = 0; k < road.lanes(in); ++k) arm.in_lanes.push_back(names(in, k, piece));
+  for (int k = 0; k < road.lanes(other(in)); ++k)
+    arm.out_lanes.push_back(names(other(in), k, piece));
+  const std::size_t sample = outline::sample_at(road.shape.samples, station);
+  const CentreSample& at = road.shape.samples[sample];
+  const double left = road.shape.left_widths[sample], right = road.shape.right_widths[sample];
+  arm.edges = {
+      MapPoint{at.point.x + left * at.left_normal.x, at.point.y + left * at.left_normal.y},
+      MapPoint{at.point.x - right * at.left_normal.x, at.point.y - right * at.left_normal.y}};
+  return arm;
 }
 
 // The heading of a line's first (or last) segment of positive length; none when it has none.
@@ -157,6 +303,23 @@ void check_names(const std::string& map, const std::vector<RoadOutlineGeometry>&
   }
 }
 
+// A junction's arms: each road's before the junction unless it starts there, after it unless
+// it ends there.
+std::vector<outline::JunctionArm> arms_of(const JunctionSite& site,
+                                          const std::vector<MeasuredRoad>& roads,
+                                          const std::vector<std::vector<RoadPiece>>& pieces,
+                                          const std::vector<LaneNames>& names) {
+  std::vector<outline::JunctionArm> arms;
+  for (const outline::JunctionLeg& leg : site.legs) {
+    const std::size_t r = leg.road;
+    if (leg.kind != outline::LegKind::starts)
+      arms.push_back(arm(roads[r], pieces[r], names[r], leg.begin, false));
+    if (leg.kind != outline::LegKind::ends)
+      arms.push_back(arm(roads[r], pieces[r], names[r], leg.end, true));
+  }
+  return arms;
+}
+
 }  // namespace
 
 MapDescription describe_outline_map(std::string name,
@@ -166,12 +329,25 @@ MapDescription describe_outline_map(std::string name,
   map.name = std::move(name);
   map.source = kSource;
   map.default_lane_width = outline::kNominalLaneWidth;
+  std::vector<MeasuredRoad> measured;
+  std::vector<outline::RoadShape> shapes;
   for (const RoadOutlineGeometry& road : roads) {
-    const std::size_t first = map.lanes.size();
-    add_road(map.lanes, road);
-    for (std::size_t i = first; i < map.lanes.size(); ++i)
-      map.lanes[i].speed_limit = road.speed_limit;
+    measured.push_back(measure(road));
+    shapes.push_back(measured.back().shape);
   }
+  const std::vector<JunctionSite> sites = outline::find_junction_sites(shapes);
+  std::vector<std::vector<RoadPiece>> pieces;
+  std::vector<LaneNames> names;
+  for (std::size_t r = 0; r < measured.size(); ++r) {
+    pieces.push_back(cut_road(measured[r], r, sites));
+    names.push_back({roads[r].name, pieces.back().size(), !legs_of(r, sites).empty()});
+    for (std::size_t j = 0; j < pieces[r].size(); ++j)
+      for (HalfSide side : {HalfSide::right, HalfSide::left})
+        add_half(map, measured[r], pieces[r][j], j, names[r], side);
+    if (names[r].cut) add_chains(map, measured[r], pieces[r], names[r]);
+  }
+  for (const JunctionSite& site : sites)
+    outline::add_junction(map, site.id, arms_of(site, measured, pieces, names));
   connect_lanes(map.lanes);
   return map;
 }

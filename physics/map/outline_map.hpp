@@ -20,7 +20,10 @@
 //     Each lane's centre line runs in its driving direction (the left half's are reversed).
 //  4. Lane ids: <road>_f<k> for lanes in the point order (forward), <road>_b<k> for lanes
 //     against it, k counted from the centre line: narrow_road_f0 is the forward lane next to the
-//     centre line and narrow_road_f<n-1> the kerb lane.
+//     centre line and narrow_road_f<n-1> the kerb lane. A road that meets a junction (rule 9) is
+//     cut there: each lane's pieces are <road>_f<k>_<i>, i = 1, 2, ... in its driving direction,
+//     and <road>_f<k> names the chain of its pieces (MapDescription::lane_chains), so a position
+//     written on it finds its piece by the arc length along the whole lane.
 //  5. Neighbours: f<k>'s left forward neighbour is f<k-1>, its right forward neighbour f<k+1>;
 //     f0's left reverse neighbour is b0 and b0's is f0; the same for the b lanes. Boundaries
 //     between lanes of one direction are dotted white, the centre line between f0 and b0 is dotted
@@ -29,8 +32,7 @@
 //  6. Connections: a lane whose last point lies within 1.5 m of another lane's first point (of
 //     any road, the same one included) and whose end heading differs from that lane's start
 //     heading by less than 60 degrees gets it as successor, and the other gets it as predecessor.
-//     No junctions are generated: roads that cross without meeting end to start simply cross,
-//     with no connection and no right of way between them.
+//     The pieces of a cut lane and the turns of a junction connect so too.
 //  7. Errors (MapError, the message starting with "road 'NAME': "): fewer than two points in any
 //     polyline; a centre line of zero length; a coordinate that is not finite; a boundary that
 //     crosses to the other side of the centre line (a right-boundary point lying more than
@@ -40,6 +42,25 @@
 //  8. Every lane of a road has the road's speed limit. The description is named as given, its
 //     source is "CH-Scenario road network", its default lane width 3.5 m, and it has no
 //     projection.
+//  9. Junctions (outline_junction_sites.hpp has the geometry): two roads whose centre lines
+//     cross, or where one's, carried straight on past its end (or back before its start) for
+//     the other's widest half and 1.5 m more, reaches the other's, meet in a junction named
+//     junction_<road>_<road> (in road order). Roads meeting end to start within 60 degrees are
+//     not one: one continues into the other (rule 6). Along each road the junction reaches
+//     W_other / sin(theta) + W_own * |cot(theta)| + 3 m either side of the meeting point (W
+//     the wider half there, theta the angle between the roads): the other road's width across
+//     it, its own width's slant and room to turn round the corners. A road crossing the junction
+//     keeps its stretch inside as pieces of the junction, straight on; a road ending (starting)
+//     inside loses it. Where each road leaves the junction it is an arm; from every arm's lane
+//     next to the centre line a connector turns left into every arm lying to the left (more than
+//     30 degrees from straight on and from straight back), into that arm's lane next to the
+//     centre line, and from the kerb lane a connector turns right into the kerb lane of every
+//     arm to the right (outline_connectors.hpp: <in lane>_to_<out lane>, a Bezier curve tangent
+//     to both). The junction's outline is the convex hull of the road edges where the arms
+//     begin. Roads meeting at less than 30 degrees, a road too short to leave a junction (it
+//     lies within the junction's reach both ways) and junctions overlapping along a road are
+//     errors naming the roads. No signs or signals: who goes first is the simulation's rule for
+//     junctions without them (docs/simulation.md, "Junctions: who goes first").
 #pragma once
 
 #include <string>

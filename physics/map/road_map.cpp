@@ -31,6 +31,16 @@ std::optional<LaneIndex> RoadMap::find_lane(std::string_view id) const {
   return found->second;
 }
 
+std::optional<LaneStation> RoadMap::find_lane_station(std::string_view id, double s) const {
+  if (const std::optional<LaneIndex> lane = find_lane(id)) return LaneStation{*lane, s};
+  const auto chain = chains_.find(std::string(id));
+  if (chain == chains_.end() || chain->second.empty()) return std::nullopt;
+  const std::vector<ChainPiece>& pieces = chain->second;
+  std::size_t piece = 0;
+  while (piece + 1 < pieces.size() && pieces[piece + 1].start <= s) ++piece;
+  return LaneStation{pieces[piece].lane, s - pieces[piece].start};
+}
+
 std::size_t RoadMap::stop_sign_count() const {
   return static_cast<std::size_t>(std::count_if(
       signs_.begin(), signs_.end(), [](const Sign& sign) { return sign.kind == SignKind::stop; }));
@@ -243,6 +253,16 @@ RoadMap build_road_map(MapDescription description) {
       if (!contains(map.lanes_[to].predecessors, from)) map.lanes_[to].predecessors.push_back(from);
     for (LaneIndex to : map.lanes_[from].predecessors)
       if (!contains(map.lanes_[to].successors, from)) map.lanes_[to].successors.push_back(from);
+  }
+
+  for (const LaneChainDescription& given : description.lane_chains) {
+    std::vector<RoadMap::ChainPiece> pieces;
+    for (const LaneChainPiece& piece : given.pieces)
+      if (const std::optional<LaneIndex> lane = map.find_lane(piece.lane))
+        pieces.push_back({*lane, piece.start});
+      else
+        builder.warn("lane chain '" + given.id + "': lane '" + piece.lane + "' is not in the map");
+    map.chains_.emplace(given.id, std::move(pieces));
   }
 
   for (TrafficLightDescription& given : description.traffic_lights) {

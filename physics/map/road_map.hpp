@@ -100,6 +100,12 @@ struct Crosswalk {
   std::optional<SignalPlan> walk_plan;
 };
 
+// A place along a lane, as find_lane_station gives it.
+struct LaneStation {
+  LaneIndex lane = 0;
+  double s = 0;
+};
+
 struct MapBounds {
   MapPoint min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   MapPoint max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
@@ -132,6 +138,11 @@ class RoadMap {
   const std::vector<std::string>& warnings() const { return warnings_; }
 
   std::optional<LaneIndex> find_lane(std::string_view id) const;
+  // Where arc length `s` along lane or lane chain `id` lies (MapDescription::lane_chains): a
+  // lane's own s, or the chain's piece holding s and the s on it (the first piece for s before
+  // it, the piece beginning last at or before s otherwise; the caller clamps). None for an id
+  // that names neither.
+  std::optional<LaneStation> find_lane_station(std::string_view id, double s) const;
   std::size_t stop_sign_count() const;
   std::size_t yield_sign_count() const;
 
@@ -162,6 +173,11 @@ class RoadMap {
   MapBounds bounds_;
   std::vector<std::string> warnings_;
   std::unordered_map<std::string, LaneIndex> lane_by_id_;
+  struct ChainPiece {
+    LaneIndex lane = 0;
+    double start = 0;
+  };
+  std::unordered_map<std::string, std::vector<ChainPiece>> chains_;
   std::unique_ptr<LaneSegmentIndex> segment_index_;
   double widest_half_lane_ = 0;
   std::unique_ptr<JunctionConflicts> conflicts_;

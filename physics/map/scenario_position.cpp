@@ -37,22 +37,23 @@ std::string lane_range(const RoadMap& map) {
 std::optional<PlacedPosition> place_on_lane(const RoadMap& map, const Position& position,
                                             std::span<const double> values,
                                             Diagnostics& diagnostics) {
-  auto lane = map.find_lane(position.lane);
-  if (!lane) {
+  const double written_s = evaluate(position.s, values);
+  const std::optional<LaneStation> station = map.find_lane_station(position.lane, written_s);
+  if (!station) {
     diagnostics.error(position.location, "lane '" + position.lane + "' is not in map '" +
                                              map.name() + "' (" + lane_range(map) + ")");
     return std::nullopt;
   }
-  double s = evaluate(position.s, values);
+  const double s = station->s;
   double lateral = position.lateral ? evaluate(*position.lateral, values) : 0.0;
-  auto pose = clamped_lane_pose(map, *lane, s, lateral);
+  auto pose = clamped_lane_pose(map, station->lane, s, lateral);
   if (!pose) {
     diagnostics.error(position.location, "the position on lane '" + position.lane +
                                              "' is not a finite number (s = " + format_number(s) +
                                              ", lateral = " + format_number(lateral) + ")");
     return std::nullopt;
   }
-  return PlacedPosition{pose->pose, *lane, pose->overshoot};
+  return PlacedPosition{pose->pose, station->lane, pose->overshoot};
 }
 
 std::optional<PlacedPosition> place_coordinate(const RoadMap& map, const Position& position,

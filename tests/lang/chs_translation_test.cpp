@@ -268,10 +268,10 @@ TEST(ChsTranslation, ATracksManoeuvresAreTheVehiclesPhases) {
   EXPECT_THAT(said, ::testing::Not(HasSubstr("bus follows its lane")));
 }
 
-// A road network has no junctions (outline_map.hpp): a turn there is warned of at the track, naming
-// the word, and the vehicle follows its lane; on a named map the turn is the vehicle's first phase,
-// at the next junction on its way. A pedestrian's manoeuvre words are warned of too.
-TEST(ChsTranslation, ATurnIsAPhaseOnANamedMapAndAWarningOnARoadNetwork) {
+// A turn is the vehicle's first phase, at the next junction on its way, on a road network (whose
+// crossing roads make junctions, outline_map.hpp) as on a named map; a map without a junction is
+// the simulation's to warn of. A pedestrian's manoeuvre words are warned of.
+TEST(ChsTranslation, ATurnIsTheVehiclesFirstPhaseOnAnyMap) {
   const std::string entities =
       "Entity\n  DynamicEntity1\n    name: ego\n    speed: 36\n    position: (-80, -1.75)\n"
       "  DynamicEntity2\n    name: taxi\n    speed: 30\n    position: (-60, -1.75)\n"
@@ -283,12 +283,9 @@ TEST(ChsTranslation, ATurnIsAPhaseOnANamedMapAndAWarningOnARoadNetwork) {
                         "  DynamicEntity3\n    name: boy\n    speed: 4\n    track: turn left\n"));
   ASSERT_TRUE(network.ok()) << messages(network.diagnostics);
   ASSERT_EQ(network.scenario.vehicles.size(), 1u);
-  EXPECT_EQ(network.scenario.vehicles[0].motion.kind, MotionKind::follow_route);
-  EXPECT_THAT(messages(network.diagnostics),
-              HasSubstr("test.chs:16:12: warning: 'turn right' needs a junction, and a road "
-                        "network has none"));
-  EXPECT_THAT(messages(network.diagnostics), HasSubstr("so taxi follows its lane"));
-  EXPECT_THAT(messages(network.diagnostics), ::testing::Not(HasSubstr("so boy follows")));
+  ASSERT_EQ(network.scenario.vehicles[0].motion.kind, MotionKind::manoeuvres);
+  EXPECT_EQ(network.scenario.vehicles[0].motion.phases.at(0).manoeuvre, "TurnRight");
+  EXPECT_THAT(messages(network.diagnostics), ::testing::Not(HasSubstr("junction")));
   EXPECT_THAT(messages(network.diagnostics), HasSubstr("boy, a pedestrian, crosses the road"));
 
   const std::string text = "map: t_junction\n" + entities;

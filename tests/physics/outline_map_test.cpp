@@ -1,8 +1,8 @@
 // Lane maps from road outlines (physics/map/outline_map.hpp) against the rules of its header:
 // lane counts and widths from the halves' widths, ids and driving directions, lane positions,
-// neighbours and boundary types, a bend, connections of roads laid end to end (and not of roads
-// that only cross or turn too sharply), every error with its message, and the result built into
-// a RoadMap, directly and through load_scenario_map.
+// neighbours and boundary types, a bend, connections of roads laid end to end (crossings and
+// sharper turns are junctions: outline_junctions_test.cpp), every error with its message, and the
+// result built into a RoadMap, directly and through load_scenario_map.
 #include "physics/map/outline_map.hpp"
 
 #include <gmock/gmock.h>
@@ -292,28 +292,16 @@ RoadOutlineGeometry one_lane_road(std::string name, MapPoint start, double degre
   return {std::move(name), {c0, c1}, {c0, c1}, {r0, r1}};
 }
 
+// Each pair alone: roads that start together would meet one another in junctions too.
 TEST(OutlineMap, LanesConnectWithinOnePointFiveMetresAndSixtyDegrees) {
   // Lane "in_f0" ends at (50, -1.75) heading east.
   const RoadOutlineGeometry in = one_lane_road("in", {0, -1.75}, 0);
-  const MapDescription map = describe_outline_map(
-      "blank",
-      {in, one_lane_road("bend_50", {50, -1.75}, 50), one_lane_road("bend_70", {50, -1.75}, -70),
-       one_lane_road("near", {51.4, -1.75}, 0), one_lane_road("far", {51.6, -1.75}, 0)});
-  EXPECT_THAT(lane_of(map, "in_f0").successors, UnorderedElementsAre("bend_50_f0", "near_f0"));
-  EXPECT_THAT(lane_of(map, "bend_70_f0").predecessors, IsEmpty());
-  EXPECT_THAT(lane_of(map, "far_f0").predecessors, IsEmpty());
-}
-
-TEST(OutlineMap, RoadsThatOnlyCrossAreNotConnected) {
-  const MapDescription map = describe_outline_map(
-      "blank",
-      {straight_road("east", 0, 100, 3.5, 3.5),
-       {"north", {{46.5, -50}, {46.5, 50}}, {{50, -50}, {50, 50}}, {{53.5, -50}, {53.5, 50}}}});
-  for (const LaneDescription& lane : map.lanes) {
-    EXPECT_THAT(lane.successors, IsEmpty()) << lane.id;
-    EXPECT_THAT(lane.predecessors, IsEmpty()) << lane.id;
-  }
-  EXPECT_THAT(build_road_map(map).junctions(), IsEmpty());
+  const auto successors = [&](const RoadOutlineGeometry& next) {
+    return lane_of(describe_outline_map("blank", {in, next}), "in_f0").successors;
+  };
+  EXPECT_THAT(successors(one_lane_road("bend_50", {50, -1.75}, 50)), ElementsAre("bend_50_f0"));
+  EXPECT_THAT(successors(one_lane_road("near", {51.4, -1.75}, 0)), ElementsAre("near_f0"));
+  EXPECT_THAT(successors(one_lane_road("far", {51.6, -1.75}, 0)), IsEmpty());
 }
 
 TEST(OutlineMap, PolylinesNeedTwoFinitePointsAndTheCentreLineALength) {
