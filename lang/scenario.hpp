@@ -60,6 +60,20 @@ struct LaneLink {
   bool operator==(const LaneLink&) const = default;
 };
 
+// A traffic light on a drawn road network's junction (CH-Scenario's light entities): the
+// junction nearest (x, y) gets fixed-time lights, road `road` showing `colour` (red, yellow,
+// green) at the start of that phase and the crossing road the opposite (physics/map/
+// outline_signals.hpp).
+struct JunctionSignal {
+  std::string name;
+  double x = 0, y = 0;
+  std::string road;
+  std::string colour;
+  SourceLocation location;
+
+  bool operator==(const JunctionSignal&) const = default;
+};
+
 // The map: a name (built-in parametric map, Apollo map, or path) and, for languages that describe
 // roads by ranges, parameters that make the map itself part of the search space.
 struct MapReference {
@@ -68,6 +82,7 @@ struct MapReference {
   std::vector<Attribute> attributes;
   std::vector<RoadOutline> roads;
   std::vector<LaneLink> links;
+  std::vector<JunctionSignal> signals;  // only with roads
   SourceLocation location;
 
   bool operator==(const MapReference&) const = default;

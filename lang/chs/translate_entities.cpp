@@ -185,6 +185,10 @@ class EntityTranslator {
     warn_of_track(entity, track, true);
     if (entity.position) {
       ego.initial.position = vehicle_position(*entity.position, &ego_forward_);
+      ego_point_ = {entity.position->x, entity.position->y};
+      const std::optional<LanePlace> place =
+          lane_place_at(file_.roads, entity.position->x, entity.position->y);
+      if (place) ego_road_ = place->road->name.text;
     } else if (file_.map.kind == MapSource::Kind::named) {
       diagnostics_.error(entity.location, "on the named map '" + file_.map.name.text + "', " +
                                               entity.name.text +
@@ -196,6 +200,8 @@ class EntityTranslator {
       ego.initial.position = lane_position(lane_id(*t_.ego_place->road, t_.ego_place->forward, 0),
                                            t_.ego_place->s, entity.location);
       ego_forward_ = t_.ego_place->forward;
+      ego_point_ = point_of({t_.ego_place->road, t_.ego_place->forward, 0, t_.ego_place->s, 0});
+      ego_road_ = t_.ego_place->road->name.text;
     }
     ego.initial.speed = located(entity.speed, kKilometresPerHour);
     ego.initial.location = entity.location;
@@ -366,12 +372,7 @@ class EntityTranslator {
       case EntityClass::cyclist: return standing_walker(entity);
       case EntityClass::vehicle: return parked_vehicle(entity, words);
       case EntityClass::obstacle: return obstacle(entity);
-      case EntityClass::traffic_light:
-        diagnostics_.warning(entity.location,
-                             "traffic lights are not simulated on CH-Scenario "
-                             "maps yet: '" +
-                                 entity.name.text + "' is left out");
-        return;
+      case EntityClass::traffic_light: return traffic_light(entity, words);
       case EntityClass::unknown:
         diagnostics_.warning(entity.location,
                              "scenfuzz cannot tell what '" + entity.name.text +
@@ -379,6 +380,29 @@ class EntityTranslator {
                                  "words it reads): it is left out");
         return;
     }
+  }
+
+  // On a road network, fixed-time lights at the junction nearest the light's point (else the
+  // ego's), its colour what the ego's road shows at the start (physics/map/outline_map.hpp,
+  // rule 10). A named map's lights are its own.
+  void traffic_light(const StaticEntity& entity, const EntityWords& words) {
+    if (file_.map.kind == MapSource::Kind::named) {
+      diagnostics_.warning(entity.location, "the named map '" + file_.map.name.text +
+                                                "' has its own traffic lights: '" +
+                                                entity.name.text + "' is left out");
+      return;
+    }
+    if (file_.roads.size() < 2) {
+      diagnostics_.warning(entity.location,
+                           "a road network of one road has no junction for a "
+                           "traffic light to control: '" +
+                               entity.name.text + "' is left out");
+      return;
+    }
+    const PlanePoint at =
+        entity.position ? PlanePoint{entity.position->x, entity.position->y} : ego_point_;
+    t_.scenario.map.signals.push_back(
+        {entity.name.text, at.x, at.y, ego_road_, words.colour, entity.location});
   }
 
   Position static_position(const StaticEntity& entity, bool roadside) {
@@ -431,6 +455,10 @@ class EntityTranslator {
   Placed placed_;
   std::vector<Overtaker> overtakers_;
   bool ego_forward_ = true;  // the direction of the ego's lane, where its aim is
+  // Where the ego starts and on which road (empty off the roads): a light without a position
+  // controls the junction nearest the ego, and shows its colour to the ego's road.
+  PlanePoint ego_point_;
+  std::string ego_road_;
 };
 
 }  // namespace

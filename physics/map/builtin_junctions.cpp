@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "physics/map/builtin_geometry.hpp"
+#include "physics/map/signal_plans.hpp"
 
 namespace scenfuzz::builtin {
 
@@ -341,18 +342,6 @@ std::vector<MapPoint> outline_round(const JunctionLayout& layout,
   return outline_without_repeats(outline);
 }
 
-// A fixed-time plan in which the two crossing directions take turns: green, yellow, then red
-// while the other direction has its green and yellow plus an all-red gap after each.
-SignalPlan traffic_plan(double green, double yellow, double all_red, bool second_direction) {
-  double half_cycle = green + yellow + all_red;
-  SignalPlan plan;
-  plan.phases = {{SignalColour::green, green},
-                 {SignalColour::yellow, yellow},
-                 {SignalColour::red, half_cycle + all_red}};
-  plan.offset = second_direction ? half_cycle : 0;
-  return plan;
-}
-
 // Pedestrians walk while the traffic alongside them has green.
 SignalPlan walk_plan(double green, double yellow, double all_red, bool second_direction) {
   double half_cycle = green + yellow + all_red;
@@ -388,7 +377,7 @@ MapDescription generate_crossroads(const MapParameters& parameters) {
                    (layout.road_half_width() + kPavementWidth / 2) * inbound_right(arm)};
     light.stop_lines = {stop_line(layout, arm)};
     light.lanes = in_lanes_at_stop_line(layout, arm);
-    light.plan = traffic_plan(green, yellow, all_red, east_west != east_west_first);
+    light.plan = two_direction_plan(green, yellow, all_red, east_west != east_west_first);
     map.traffic_lights.push_back(std::move(light));
   }
   if (with_crosswalks) {

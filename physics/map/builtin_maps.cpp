@@ -11,6 +11,7 @@
 
 #include "physics/map/builtin_geometry.hpp"
 #include "physics/map/road_map.hpp"
+#include "physics/map/signal_plans.hpp"
 
 namespace scenfuzz {
 
@@ -86,9 +87,9 @@ std::vector<RegisteredMap> make_registry() {
                     {"arm_length", 150, 20, 2000, "m", "length of every arm lane"},
                     junction_angle_parameter("crossing road"),
                     speed_limit_parameter("speed_limit", 13.9, "speed limit of every lane"),
-                    {"green", 25, 5, 120, "s", "green time of each direction"},
-                    {"yellow", 3, 1, 10, "s", "yellow time of each direction"},
-                    {"all_red", 2, 0, 10, "s",
+                    {"green", kDefaultGreen, 5, 120, "s", "green time of each direction"},
+                    {"yellow", kDefaultYellow, 1, 10, "s", "yellow time of each direction"},
+                    {"all_red", kDefaultAllRed, 0, 10, "s",
                      "all signals red between one direction's yellow and the "
                      "other's green"},
                     {"east_west_first", 0, 0, 1, "",

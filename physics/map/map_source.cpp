@@ -60,6 +60,21 @@ std::vector<RoadOutlineGeometry> evaluated_roads(const std::vector<RoadOutline>&
   return result;
 }
 
+// A signal's colour word (lang/scenario.hpp: red, yellow or green; none said: green).
+SignalColour signal_colour(const std::string& word) {
+  if (word == "red") return SignalColour::red;
+  if (word == "yellow") return SignalColour::yellow;
+  return SignalColour::green;
+}
+
+std::vector<OutlineSignal> outline_signals(const std::vector<JunctionSignal>& signals) {
+  std::vector<OutlineSignal> result;
+  for (const JunctionSignal& signal : signals)
+    result.push_back(
+        {signal.name, {signal.x, signal.y}, signal.road, signal_colour(signal.colour)});
+  return result;
+}
+
 }  // namespace
 
 MapSearchPath map_search_path(std::vector<fs::path> command_line) {
@@ -182,8 +197,9 @@ RoadMap load_scenario_map(const MapReference& reference, const MapSearchPath& se
                           std::span<const double> parameter_values) {
   // A scenario that draws its roads (CH-Scenario) names a blank map: the roads are the map.
   if (!reference.roads.empty())
-    return build_road_map(
-        describe_outline_map(reference.name, evaluated_roads(reference.roads, parameter_values)));
+    return build_road_map(describe_outline_map(reference.name,
+                                               evaluated_roads(reference.roads, parameter_values),
+                                               outline_signals(reference.signals)));
   std::vector<MapParameterValue> parameters;
   for (const NamedValue& parameter : reference.parameters)
     parameters.push_back({parameter.name, evaluate(parameter.value, parameter_values)});

@@ -15,6 +15,7 @@ namespace scenfuzz::outline {
 // Where a road leaves a junction: its lanes coming in and going out there, each counted from the
 // centre line (k = 0 first), and the road's two edges there.
 struct JunctionArm {
+  std::string road;
   MapPoint outward;  // unit, from the junction along the road
   std::vector<std::string> in_lanes, out_lanes;
   std::array<MapPoint, 2> edges;

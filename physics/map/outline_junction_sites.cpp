@@ -14,7 +14,9 @@ namespace scenfuzz::outline {
 namespace {
 
 constexpr double kEndReach = 1.5;
-constexpr double kTurningMargin = 3.0;
+// Room for a bus or a truck to turn right round the corner at its full lock: a kerb-to-kerb
+// turn's radius is this plus half a lane, 7.75 m for 3.5 m lanes (a truck's full lock: 6 m).
+constexpr double kTurningMargin = 6.0;
 constexpr double kSmallestAngle = 30 * std::numbers::pi / 180;
 constexpr double kContinuationAngle = 60 * std::numbers::pi / 180;
 // Crossings this close are one: a centre line crossing another at a vertex crosses two segments.

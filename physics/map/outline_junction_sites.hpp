@@ -4,7 +4,7 @@
 // road's widest half width and 1.5 m more, reaches the other's: a road that ends at (or starts
 // from) another's edge. Each road's stretch inside the junction reaches the other road's width
 // across it, its own width's slant and a margin for turning round the corners:
-//   d = W_other / sin(theta) + W_own * |cot(theta)| + 3 m
+//   d = W_other / sin(theta) + W_own * |cot(theta)| + 6 m
 // either side of the meeting point, W the wider half at that point, theta the angle between
 // the roads. Roads meeting end to start within 60 degrees are not a junction: one continues into
 // the other (rule 6).

@@ -17,6 +17,7 @@
 #include "physics/map/outline_connectors.hpp"
 #include "physics/map/outline_half_road.hpp"
 #include "physics/map/outline_junction_sites.hpp"
+#include "physics/map/outline_signals.hpp"
 #include "physics/map/polyline.hpp"
 #include "physics/map/road_map.hpp"
 
@@ -245,6 +246,7 @@ outline::JunctionArm arm(const MeasuredRoad& road, const std::vector<RoadPiece>&
   const Polyline& centre = road.shape.centre;
   const double heading = centre.heading_at(station);
   outline::JunctionArm arm;
+  arm.road = road.given->name;
   arm.outward = after ? MapPoint{std::cos(heading), std::sin(heading)}
                       : MapPoint{-std::cos(heading), -std::sin(heading)};
   std::size_t piece = 0;
@@ -320,10 +322,42 @@ std::vector<outline::JunctionArm> arms_of(const JunctionSite& site,
   return arms;
 }
 
+// The site each signal controls, by the signals' order: the one whose meeting point is nearest.
+std::vector<std::size_t> signalled_sites(const std::vector<OutlineSignal>& signals,
+                                         const std::vector<JunctionSite>& sites) {
+  std::vector<std::size_t> chosen;
+  for (const OutlineSignal& signal : signals) {
+    if (sites.empty())
+      throw MapError("traffic light '" + signal.name +
+                     "': the road network has no junction for it to control (roads that cross "
+                     "or meet make one)");
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < sites.size(); ++i)
+      if (distance(sites[i].centre, signal.at) < distance(sites[nearest].centre, signal.at))
+        nearest = i;
+    for (std::size_t k = 0; k < chosen.size(); ++k)
+      if (chosen[k] == nearest)
+        throw MapError("traffic lights '" + signals[k].name + "' and '" + signal.name +
+                       "' are both nearest " + sites[nearest].id +
+                       ": one light controls a junction");
+    chosen.push_back(nearest);
+  }
+  return chosen;
+}
+
+// The road of `arms` whose lights show the signal's colour at the start: the signal's own road
+// when the junction is on it, else the junction's first.
+const std::string& signal_road(const OutlineSignal& signal,
+                               const std::vector<outline::JunctionArm>& arms) {
+  for (const outline::JunctionArm& arm : arms)
+    if (arm.road == signal.road) return arm.road;
+  return arms.front().road;
+}
+
 }  // namespace
 
-MapDescription describe_outline_map(std::string name,
-                                    const std::vector<RoadOutlineGeometry>& roads) {
+MapDescription describe_outline_map(std::string name, const std::vector<RoadOutlineGeometry>& roads,
+                                    const std::vector<OutlineSignal>& signals) {
   check_names(name, roads);
   MapDescription map;
   map.name = std::move(name);
@@ -346,8 +380,15 @@ MapDescription describe_outline_map(std::string name,
         add_half(map, measured[r], pieces[r][j], j, names[r], side);
     if (names[r].cut) add_chains(map, measured[r], pieces[r], names[r]);
   }
-  for (const JunctionSite& site : sites)
-    outline::add_junction(map, site.id, arms_of(site, measured, pieces, names));
+  const std::vector<std::size_t> signalled = signalled_sites(signals, sites);
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const std::vector<outline::JunctionArm> arms = arms_of(sites[i], measured, pieces, names);
+    outline::add_junction(map, sites[i].id, arms);
+    for (std::size_t k = 0; k < signals.size(); ++k)
+      if (signalled[k] == i)
+        outline::add_signals(map, signals[k].name, signal_road(signals[k], arms), signals[k].colour,
+                             arms);
+  }
   connect_lanes(map.lanes);
   return map;
 }

@@ -47,7 +47,7 @@
 //     the other's widest half and 1.5 m more, reaches the other's, meet in a junction named
 //     junction_<road>_<road> (in road order). Roads meeting end to start within 60 degrees are
 //     not one: one continues into the other (rule 6). Along each road the junction reaches
-//     W_other / sin(theta) + W_own * |cot(theta)| + 3 m either side of the meeting point (W
+//     W_other / sin(theta) + W_own * |cot(theta)| + 6 m either side of the meeting point (W
 //     the wider half there, theta the angle between the roads): the other road's width across
 //     it, its own width's slant and room to turn round the corners. A road crossing the junction
 //     keeps its stretch inside as pieces of the junction, straight on; a road ending (starting)
@@ -59,8 +59,16 @@
 //     to both). The junction's outline is the convex hull of the road edges where the arms
 //     begin. Roads meeting at less than 30 degrees, a road too short to leave a junction (it
 //     lies within the junction's reach both ways) and junctions overlapping along a road are
-//     errors naming the roads. No signs or signals: who goes first is the simulation's rule for
-//     junctions without them (docs/simulation.md, "Junctions: who goes first").
+//     errors naming the roads. Without a traffic light (rule 10) a junction has no signs or
+//     signals: who goes first is the simulation's rule for junctions without them
+//     (docs/simulation.md, "Junctions: who goes first").
+// 10. Traffic lights (outline_signals.hpp): each OutlineSignal controls the junction whose
+//     meeting point is nearest its point. Each of the junction's two roads gets a light,
+//     <signal>_<road>, over its lanes coming in, its stop lines across their ends; the roads take
+//     turns, 25 s green, 3 s yellow and 2 s all red each (the built-in crossroads' default plan),
+//     the signal's road (or, when the junction is not on it, the junction's first road) showing
+//     the signal's colour at the start of that phase and the other road the rest of the cycle.
+//     A signal on a network without junctions, or two on one junction, is an error naming it.
 #pragma once
 
 #include <string>
@@ -78,9 +86,17 @@ struct RoadOutlineGeometry {
   double speed_limit = 0;  // m/s on every lane of the road; 0: none
 };
 
-// The lanes of `roads` by the rules above; build_road_map makes it a RoadMap. Throws MapError
-// naming the road (and the point) for bad geometry.
-MapDescription describe_outline_map(std::string name,
-                                    const std::vector<RoadOutlineGeometry>& roads);
+// A traffic light on the network (rule 10).
+struct OutlineSignal {
+  std::string name;
+  MapPoint at;
+  std::string road;  // whose lights show `colour` at the start
+  SignalColour colour = SignalColour::green;
+};
+
+// The lanes of `roads` by the rules above, with `signals`; build_road_map makes it a RoadMap.
+// Throws MapError naming the road (and the point) for bad geometry, or the signal.
+MapDescription describe_outline_map(std::string name, const std::vector<RoadOutlineGeometry>& roads,
+                                    const std::vector<OutlineSignal>& signals = {});
 
 }  // namespace scenfuzz

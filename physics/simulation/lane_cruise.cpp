@@ -139,6 +139,26 @@ Leader scoped_leader(const WorldSnapshot& world, std::uint32_t self, LanePositio
   return nearest_ahead(world, self, lanes, body.length / 2, counts);
 }
 
+// Calls `stop_at(gap)` for each red light on `lanes` (and each yellow one the actor can stop for
+// at comfortable braking) that it can still stop for at full braking, `gap` from its front to the
+// stop line.
+template <typename StopAt>
+void for_each_light_to_stop_at(const WorldSnapshot& world, const std::vector<LaneAhead>& lanes,
+                               double v, const ActorClass& body, StopAt stop_at) {
+  const double half = body.length / 2;
+  const double b = body.comfortable_deceleration;
+  for (const LaneAhead& lane : lanes)
+    for (const LaneFeature& feature : world.map->lane(lane.lane).features) {
+      if (feature.kind != FeatureKind::traffic_light) continue;
+      const double gap = lane.offset + feature.s_begin - half;
+      if (gap < 0 || feature.index >= world.lights.size()) continue;
+      const SignalColour colour = world.lights[feature.index];
+      const bool stop =
+          colour == SignalColour::red || (colour == SignalColour::yellow && gap >= v * v / (2 * b));
+      if (stop && gap >= v * v / (2 * body.max_deceleration)) stop_at(gap);
+    }
+}
+
 }  // namespace
 
 double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
@@ -161,24 +181,33 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
     double ratio = std::max(wanted, 0.0) / std::max(gap, 0.1);
     best = std::min(best, a * (1 - fourth_power(v / desired) - ratio * ratio));
   };
-  const double half = body.length / 2;
   // The nearest actor ahead on these lanes, or in its band of road along them.
   const Leader leader =
       scoped_leader(world, self, at, lanes, body, scope, [](std::uint32_t) { return true; });
   const double nearest = leader.gap, lead_speed = leader.speed;
   if (std::isfinite(nearest)) follow(nearest, lead_speed, kStandstillGap);
-  // Red lights (and yellow ones it can stop for) on these lanes.
-  for (const LaneAhead& lane : lanes)
-    for (const LaneFeature& feature : map.lane(lane.lane).features) {
-      if (feature.kind != FeatureKind::traffic_light) continue;
-      double gap = lane.offset + feature.s_begin - half;
-      if (gap < 0 || feature.index >= world.lights.size()) continue;
-      SignalColour colour = world.lights[feature.index];
-      bool stop =
-          colour == SignalColour::red || (colour == SignalColour::yellow && gap >= v * v / (2 * b));
-      if (stop && gap >= v * v / (2 * body.max_deceleration)) follow(gap, 0, kStopLineGap);
-    }
+  for_each_light_to_stop_at(world, lanes, v, body,
+                            [&](double gap) { follow(gap, 0, kStopLineGap); });
   return std::clamp(best, -body.max_deceleration, body.max_acceleration);
+}
+
+double red_light_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                       const NextLane& next_lane, const ActorClass& body) {
+  const double v = world.states[self].speed;
+  const double a = std::min(kComfortAcceleration, body.max_acceleration);
+  const double b = body.comfortable_deceleration;
+  bool dead_end = false;
+  const std::vector<LaneAhead> lanes =
+      lanes_ahead(*world.map, at, next_lane, lookahead(v), dead_end);
+  double limit = kInfinity;
+  // IDM's interaction term alone, as cruise_acceleration's for a stop line: the phase keeps its
+  // own speed until the light needs braking.
+  for_each_light_to_stop_at(world, lanes, v, body, [&](double gap) {
+    const double wanted = kStopLineGap + v * kTimeGap + v * v / (2 * std::sqrt(a * b));
+    const double ratio = wanted / std::max(gap, 0.1);
+    limit = std::min(limit, -a * ratio * ratio);
+  });
+  return limit;
 }
 
 namespace {

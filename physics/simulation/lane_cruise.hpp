@@ -43,6 +43,13 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
 double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
                           const NextLane& next_lane, const ActorClass& body, LeaderScope scope);
 
+// For a vehicle in a manoeuvre phase: the most acceleration that stops it at a red light (or a
+// yellow one it can stop for) on the lanes it takes from `at`, IDM's braking for a stop line
+// (as cruise_acceleration's, without its free-road term: the phase keeps its speed until the
+// light needs braking); +infinity when no light stops it.
+double red_light_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
+                       const NextLane& next_lane, const ActorClass& body);
+
 // The deceleration (negative, m/s^2) that stops an actor at `at` moving at `speed` before the
 // end of the lanes ahead, or +infinity when there is room for comfortable braking later.
 double dead_end_braking(const RoadMap& map, LanePosition at, const NextLane& next_lane,

@@ -29,6 +29,9 @@ constexpr double kSpeedTolerance = 0.1;  // m/s
 // standing (as lane_cruise's), and it gets back to its speed at most this briskly (IDM's a there).
 constexpr double kStandingCruise = 0.5;        // m/s
 constexpr double kHeedlessAcceleration = 1.5;  // m/s^2
+// A phase without a speed held below its speed (by a leader, a red light or a bend) gets back to
+// it this briskly.
+constexpr double kResumeAcceleration = 1.5;  // m/s^2
 
 // Minimum-jerk progress of a lateral move over normalised time x in [0, 1]: 0 to 1 with zero
 // velocity and acceleration at both ends, the shape of a human lane change.
@@ -95,10 +98,12 @@ void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, doubl
   double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self, dt);
   held_back_ = false;
   if (running_ && on_lane_ && !state_.reversing && !script_->heedless) {
-    // A phase drives as scripted, but not into the traffic ahead (the ego aside), unless its
-    // script drives without looking.
+    // A phase drives as scripted, but not into the traffic ahead (the ego aside) nor through a
+    // red light, unless its script drives without looking.
     NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
-    const double limit = phase_leader_limit(world, self, *on_lane_, next, body_, leader_scope());
+    const double limit =
+        std::min(phase_leader_limit(world, self, *on_lane_, next, body_, leader_scope()),
+                 red_light_limit(world, self, *on_lane_, next, body_));
     if (limit < acceleration) {
       acceleration = limit;
       held_back_ = true;
@@ -158,6 +163,7 @@ void ManoeuvreDriver::update_phases(const WorldSnapshot& world, std::uint32_t se
 void ManoeuvreDriver::start_phase(const WorldSnapshot& world, std::uint32_t self) {
   const PhaseMotion& phase = script_->phases[next_];
   const double speed = state_.speed;
+  phase_speed_ = state_.reversing ? 0 : speed;
   turn_wanted_ = LaneTurn::none;
   turn_entered_ = turn_done_ = turn_available_ = false;
   crossed_onto_lane_ = false;
@@ -421,7 +427,10 @@ double ManoeuvreDriver::longitudinal_acceleration(double dt) const {
       }
       break;
     default:
-      if (auto target = target_velocity(*phase)) acceleration = towards(*target);
+      if (auto target = target_velocity(*phase))
+        acceleration = towards(*target);
+      else if (velocity >= 0 && velocity < phase_speed_)
+        acceleration = std::min((phase_speed_ - velocity) / dt, kResumeAcceleration);
       break;
   }
   // The class's limits bound the change of speed: braking a reversing actor pushes it forwards,

@@ -87,6 +87,7 @@ class ManoeuvreDriver {
   bool pedestrian_;
   KinematicState state_;
   double cruise_speed_ = 0;  // m/s outside its phases: its initial speed, then where one ended
+  double phase_speed_ = 0;   // m/s a phase without a speed keeps: its speed when the phase began
 
   std::size_t next_ = 0;  // the phase running, or the next to start
   bool running_ = false;

@@ -128,7 +128,8 @@ TEST(ChsTranslation, TheWorkedExample) {
   // road user but the ego for them to move).
   const std::string said = format_diagnostics(file, parsed.diagnostics);
   EXPECT_THAT(said, HasSubstr("the aim 'The First People's Hospital' is no road"));
-  EXPECT_THAT(said, HasSubstr("traffic lights are not simulated"));
+  EXPECT_THAT(said, HasSubstr("a road network of one road has no junction for a traffic light to "
+                              "control: 'traffic_light' is left out"));
   EXPECT_THAT(said, HasSubstr("typhoon_minibus.chs:52:13: warning: the constraint relates with no "
                               "road user scenfuzz drives"));
   EXPECT_THAT(said, HasSubstr("typhoon_minibus.chs:58:13: warning: the constraint relates with no "
@@ -302,6 +303,40 @@ TEST(ChsTranslation, ATurnIsTheVehiclesFirstPhaseOnAnyMap) {
   EXPECT_THAT(said, ::testing::Not(HasSubstr("needs a junction")));
   EXPECT_THAT(said, HasSubstr("test.chs:15:12: warning: changing lanes, overtaking and turning are "
                               "a vehicle's manoeuvres: boy, a pedestrian, crosses the road"));
+}
+
+// A light on a road network controls the junction nearest its point, else the ego's, and its
+// colour is what the ego's road shows at the start; a named map's lights are its own.
+TEST(ChsTranslation, ATrafficLightIsASignalOnTheJunctionNearestIt) {
+  const std::string crossing =
+      "  road north_road\n    left boundary: (196.5, 0) (196.5, 60)\n"
+      "    center lines: (200, 0) (200, 60)\n    right boundary: (203.5, 0) (203.5, 60)\n";
+  const std::string text = on_east_road(
+      crossing +
+      "Entity\n  DynamicEntity1\n    name: ego\n    speed: 36\n    position: (120, 26.5)\n"
+      "  StaticEntity1\n    name: traffic light\n    overview: the light is red\n"
+      "  StaticEntity2\n    name: signal\n    overview: green\n    position: (300, 30)\n");
+  const ScenarioParse parsed = read(text);
+  ASSERT_TRUE(parsed.ok()) << messages(parsed.diagnostics);
+  const std::vector<JunctionSignal>& signals = parsed.scenario.map.signals;
+  ASSERT_EQ(signals.size(), 2u);
+  EXPECT_EQ(signals[0].name, "traffic light");
+  EXPECT_EQ(signals[0].road, "east_road");
+  EXPECT_EQ(signals[0].colour, "red");
+  EXPECT_DOUBLE_EQ(signals[0].x, 120);
+  EXPECT_DOUBLE_EQ(signals[0].y, 26.5);
+  EXPECT_EQ(text_at(text, signals[0].location).substr(0, 12), "StaticEntity");
+  EXPECT_EQ(signals[1].colour, "green");
+  EXPECT_DOUBLE_EQ(signals[1].x, 300);
+
+  const ScenarioParse named = read(
+      "map: crossroads\nEntity\n  DynamicEntity1\n    name: ego\n    speed: 36\n"
+      "    position: (-80, -1.75)\n  StaticEntity1\n    name: traffic light\n");
+  ASSERT_TRUE(named.ok()) << messages(named.diagnostics);
+  EXPECT_TRUE(named.scenario.map.signals.empty());
+  EXPECT_THAT(messages(named.diagnostics),
+              HasSubstr("the named map 'crossroads' has its own traffic lights: 'traffic light' "
+                        "is left out"));
 }
 
 // east_road's halves are 7 m wide: two lanes of 3.5 m each way.

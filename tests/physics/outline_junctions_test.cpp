@@ -1,7 +1,7 @@
 // Junctions of road outlines (physics/map/outline_map.hpp, rule 9): two roads crossing, a road
 // ending at another's edge, a corner, the lanes cut into pieces with their chains, the turn
-// connectors, the junction's stretch along each road, and the errors for what scenfuzz cannot
-// make a junction of.
+// connectors, the junction's stretch along each road, the errors for what scenfuzz cannot make a
+// junction of, and a junction's traffic lights (rule 10).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -16,6 +16,7 @@
 
 #include "physics/map/outline_map.hpp"
 #include "physics/map/road_map.hpp"
+#include "physics/simulation/traffic_signals.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -59,8 +60,8 @@ std::string outline_error(const std::vector<RoadOutlineGeometry>& roads) {
 }
 
 // East: 200 m of two lanes each way (7 m halves); north: 200 m of one lane each way crossing it
-// at x = 100. Along east the junction reaches north's 3.5 m half and 3 m to turn in, 6.5 m either
-// side; along north, 10 m.
+// at x = 100. Along east the junction reaches north's 3.5 m half and 6 m to turn in, 9.5 m either
+// side; along north, 13 m.
 MapDescription crossroads() {
   return describe_outline_map(
       "blank", {road("east", {0, 0}, {200, 0}, 7), road("north", {100, -100}, {100, 100}, 3.5)});
@@ -73,10 +74,10 @@ TEST(OutlineJunctions, CrossingRoadsAreCutIntoPiecesWithTheJunctionsStretchBetwe
   const LaneDescription& before = lane_of(map, "east_f0_1");
   const LaneDescription& inside = lane_of(map, "east_f0_2");
   const LaneDescription& after = lane_of(map, "east_f0_3");
-  EXPECT_NEAR(before.centre_line.back().x, 93.5, 1e-9);
-  EXPECT_NEAR(inside.centre_line.front().x, 93.5, 1e-9);
-  EXPECT_NEAR(inside.centre_line.back().x, 106.5, 1e-9);
-  EXPECT_NEAR(after.centre_line.front().x, 106.5, 1e-9);
+  EXPECT_NEAR(before.centre_line.back().x, 90.5, 1e-9);
+  EXPECT_NEAR(inside.centre_line.front().x, 90.5, 1e-9);
+  EXPECT_NEAR(inside.centre_line.back().x, 109.5, 1e-9);
+  EXPECT_NEAR(after.centre_line.front().x, 109.5, 1e-9);
   EXPECT_NEAR(after.centre_line.back().x, 200, 1e-9);
   EXPECT_EQ(before.junction, "");
   EXPECT_EQ(inside.junction, "junction_east_north");
@@ -85,7 +86,7 @@ TEST(OutlineJunctions, CrossingRoadsAreCutIntoPiecesWithTheJunctionsStretchBetwe
   // Backward lanes are numbered in their own driving direction: east_b0_1 starts at x = 200.
   EXPECT_NEAR(lane_of(map, "east_b0_1").centre_line.front().x, 200, 1e-9);
   EXPECT_NEAR(lane_of(map, "east_b0_3").centre_line.back().x, 0, 1e-9);
-  EXPECT_NEAR(lane_of(map, "north_f0_1").centre_line.back().y, -10, 1e-9);
+  EXPECT_NEAR(lane_of(map, "north_f0_1").centre_line.back().y, -13, 1e-9);
   // Outside junctions lanes keep their neighbours; inside there are none.
   EXPECT_THAT(before.right_forward_neighbours, ElementsAre("east_f1_1"));
   EXPECT_THAT(before.left_reverse_neighbours, ElementsAre("east_b0_3"));
@@ -108,10 +109,10 @@ TEST(OutlineJunctions, EveryArmTurnsLeftFromBesideTheCentreLineAndRightFromTheKe
   EXPECT_EQ(right.turn, LaneTurn::right);
   EXPECT_EQ(lane_of(map, "east_f0_1_to_north_f0_3").turn, LaneTurn::left);
   // Tangent to both lanes, ends on them.
-  EXPECT_NEAR(right.centre_line.front().x, 93.5, 1e-9);
+  EXPECT_NEAR(right.centre_line.front().x, 90.5, 1e-9);
   EXPECT_NEAR(right.centre_line.front().y, -5.25, 1e-9);
   EXPECT_NEAR(right.centre_line.back().x, 98.25, 1e-9);
-  EXPECT_NEAR(right.centre_line.back().y, -10, 1e-9);
+  EXPECT_NEAR(right.centre_line.back().y, -13, 1e-9);
   const std::vector<MapPoint>& line = right.centre_line;
   const std::size_t n = line.size();
   EXPECT_NEAR(std::atan2(line[1].y - line[0].y, line[1].x - line[0].x), 0, 0.05);
@@ -130,11 +131,11 @@ TEST(OutlineJunctions, AChainFindsThePieceOfAWrittenPlaceAlongTheWholeLane) {
   const std::optional<LaneStation> ahead = map.find_lane_station("east_f0", 150);
   ASSERT_TRUE(ahead);
   EXPECT_EQ(map.lane(ahead->lane).id, "east_f0_3");
-  EXPECT_NEAR(ahead->s, 43.5, 1e-9);
+  EXPECT_NEAR(ahead->s, 40.5, 1e-9);
   const std::optional<LaneStation> inside = map.find_lane_station("east_f0", 100);
   ASSERT_TRUE(inside);
   EXPECT_EQ(map.lane(inside->lane).id, "east_f0_2");
-  EXPECT_NEAR(inside->s, 6.5, 1e-9);
+  EXPECT_NEAR(inside->s, 9.5, 1e-9);
   // Backward: s counts from x = 200.
   const std::optional<LaneStation> back = map.find_lane_station("east_b1", 10);
   ASSERT_TRUE(back);
@@ -155,9 +156,9 @@ TEST(OutlineJunctions, ARoadEndingAtAnothersEdgeMakesAJunctionOfThreeArms) {
   EXPECT_THAT(connectors_of(map, "junction_main_side"),
               UnorderedElementsAre("side_f0_1_to_main_f0_3", "side_f0_1_to_main_b0_3",
                                    "main_f0_1_to_side_b0_1", "main_b0_1_to_side_b0_1"));
-  // The side road's stretch inside the junction is dropped: it ends 6.5 m before the main
-  // road's centre line, which the junction reaches 3.5 + 3 m along it.
-  EXPECT_NEAR(lane_of(map, "side_f0_1").centre_line.back().y, -6.5, 1e-9);
+  // The side road's stretch inside the junction is dropped: it ends 9.5 m before the main
+  // road's centre line, which the junction reaches 3.5 + 6 m along it.
+  EXPECT_NEAR(lane_of(map, "side_f0_1").centre_line.back().y, -9.5, 1e-9);
   EXPECT_THAT(lane_of(map, "side_f0_1").successors,
               UnorderedElementsAre("side_f0_1_to_main_f0_3", "side_f0_1_to_main_b0_3"));
   // A chain's s still counts from the side road's written end for its backward lane.
@@ -165,7 +166,7 @@ TEST(OutlineJunctions, ARoadEndingAtAnothersEdgeMakesAJunctionOfThreeArms) {
   const std::optional<LaneStation> side = built.find_lane_station("side_b0", 13);
   ASSERT_TRUE(side);
   EXPECT_EQ(built.lane(side->lane).id, "side_b0_1");
-  EXPECT_NEAR(side->s, 10, 1e-9);
+  EXPECT_NEAR(side->s, 7, 1e-9);
 }
 
 TEST(OutlineJunctions, RoadsMeetingEndToStartTurnThroughAJunctionBeyondSixtyDegrees) {
@@ -194,6 +195,63 @@ TEST(OutlineJunctions, WhatCannotBeAJunctionIsAnErrorNamingTheRoads) {
       outline_error({road("a", {0, 0}, {200, 0}, 3.5), road("b", {100, -50}, {100, 50}, 3.5),
                      road("c", {110, -50}, {110, 50}, 3.5)}),
       HasSubstr("road 'a': its junctions at (100, 0) and (110, 0) overlap along it"));
+}
+
+// The signal's road (east) shows red at the start of its red phase; north has its red's last
+// 2 s (the all-red gap), then its green; east goes green 2 s after north's yellow ends.
+TEST(OutlineJunctions, ATrafficLightGivesEachRoadALightTakingTurnsFromTheSignalsColour) {
+  const MapDescription description = describe_outline_map(
+      "blank", {road("east", {0, 0}, {200, 0}, 7), road("north", {100, -100}, {100, 100}, 3.5)},
+      {{"light", {90, 5}, "east", SignalColour::red}});
+  ASSERT_EQ(description.traffic_lights.size(), 2u);
+  const TrafficLightDescription& east = description.traffic_lights[0];
+  EXPECT_EQ(east.id, "light_east");
+  EXPECT_EQ(description.traffic_lights[1].id, "light_north");
+  ASSERT_EQ(east.lanes.size(), 4u);
+  EXPECT_EQ(east.lanes[0].lane, "east_f0_1");
+  EXPECT_NEAR(east.lanes[0].s_begin, 90.5, 1e-9);
+  EXPECT_EQ(east.stop_lines.size(), 2u);
+  const RoadMap map = build_road_map(description);
+  TrafficSignals signals(map, {});
+  const auto colours = [&](double t) {
+    const std::vector<SignalColour>& at = signals.colours_at(t);
+    return std::vector<SignalColour>(at.begin(), at.end());
+  };
+  using enum SignalColour;
+  EXPECT_THAT(colours(0), ElementsAre(red, red));
+  EXPECT_THAT(colours(3), ElementsAre(red, green));
+  EXPECT_THAT(colours(28), ElementsAre(red, yellow));
+  EXPECT_THAT(colours(31), ElementsAre(red, red));
+  EXPECT_THAT(colours(33), ElementsAre(green, red));
+  // The east lanes coming in stop at the light; the turns and the lanes leaving do not.
+  const Lane& in = map.lane(*map.find_lane("east_f0_1"));
+  ASSERT_EQ(in.features.size(), 1u);
+  EXPECT_EQ(in.features[0].kind, FeatureKind::traffic_light);
+  EXPECT_THAT(map.lane(*map.find_lane("east_f0_3")).features, IsEmpty());
+}
+
+TEST(OutlineJunctions, ALightNeedsAJunctionOfItsOwn) {
+  const std::vector<RoadOutlineGeometry> straight{road("east", {0, 0}, {200, 0}, 7)};
+  EXPECT_THAT(
+      [&] {
+        try {
+          describe_outline_map("blank", straight, {{"light", {50, 0}, "east", SignalColour::red}});
+        } catch (const MapError& error) {
+          return std::string(error.what());
+        }
+        return std::string("no error");
+      }(),
+      HasSubstr("traffic light 'light': the road network has no junction for it to control"));
+  try {
+    describe_outline_map(
+        "blank", {road("east", {0, 0}, {200, 0}, 7), road("north", {100, -100}, {100, 100}, 3.5)},
+        {{"one", {90, 0}, "east", SignalColour::red},
+         {"two", {0, 0}, "north", SignalColour::green}});
+    ADD_FAILURE() << "two lights on one junction";
+  } catch (const MapError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("traffic lights 'one' and 'two' are both nearest "
+                                        "junction_east_north"));
+  }
 }
 
 }  // namespace
