@@ -33,9 +33,10 @@ struct Evaluation {
   // What the strategies minimise instead, when set (one per objective, negative exactly where
   // the robustness is): a conjunction's guide (oracle/search_guide.hpp).
   std::vector<double> guide;
-  // Per objective, when the run's end decided less than the trace ("time-out": not violated,
+  // Per objective, when the run's ends decided less than the trace ("time-out": not violated,
   // the robustness is what a longer run would give; "stuck": violated, the ego had stopped
-  // making progress; oracle/judge.hpp), else empty. Empty when no objective has one.
+  // making progress; "start-state": not violated, the robustness is the run's with its start
+  // state excused; oracle/judge.hpp), else empty. Empty when no objective has one.
   std::vector<std::string> endings;
   // Set when the point was rejected before any simulation (actors overlapping at t = 0, a
   // position off every lane): such points do not count against the budget.

@@ -208,6 +208,10 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
     if (outputs.time_outs()[k] > 0)
       out << "  " << objectives[k] << ": " << outputs.time_outs()[k]
           << " time-outs (the run ended while the ego still made progress; not findings)\n";
+  for (std::size_t k = 0; k < objectives.size() && k < outputs.start_states().size(); ++k)
+    if (outputs.start_states()[k] > 0)
+      out << "  " << objectives[k] << ": " << outputs.start_states()[k]
+          << " start-state (violated only by the scenario's start state; not findings)\n";
   if (outputs.audited_with_issues() > 0) out << audit_line(outputs, summary) << "\n";
   if (const std::string line = collisions_line(outputs); !line.empty()) out << line << "\n";
   out << outputs.law_coverage_lines();

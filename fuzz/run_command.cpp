@@ -60,7 +60,7 @@ std::string robustness_text(double robustness) {
   return format_number(std::round(robustness * 1e9) / 1e9);
 }
 
-std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict) {
+std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict, double grace) {
   if (!verdict.judged())
     return "spec " + verdict.name + ": not judged: " +
            (verdict.not_judged_at.known() ? place_of(file, verdict.not_judged_at) + ": " : "") +
@@ -69,9 +69,14 @@ std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict)
   if (verdict.ending == VerdictEnding::time_out)
     return "spec " + verdict.name +
            ": time-out: the run ended while the ego still made progress (" + verdict.progress +
-           "); robustness " + robustness_text(verdict.robustness_at_end) + at +
+           "); robustness " + robustness_text(verdict.robustness_as_observed) + at +
            atom_of(file, verdict) + " as it ended, " + robustness_text(verdict.robustness) +
            " had it gone on";
+  if (verdict.ending == VerdictEnding::start)
+    return "spec " + verdict.name + ": start-state: violated" + at + atom_of(file, verdict) +
+           " (robustness " + robustness_text(verdict.robustness_as_observed) +
+           ") by the scenario's start state; holds from " + format_number(grace) +
+           " s on (robustness " + robustness_text(verdict.robustness) + ")";
   std::string text = "spec " + verdict.name + ": robustness " + robustness_text(verdict.robustness);
   if (!verdict.violated()) return text + " (satisfied)";
   text += at + ", violated" + atom_of(file, verdict);
@@ -80,14 +85,16 @@ std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict)
   return text;
 }
 
-// "satisfied", "violated", "time-out": a spec's verdict in words.
+// "satisfied", "violated", "time-out", "start-state": a spec's verdict in words.
 std::string verdict_word(const SpecVerdict& verdict) {
   if (!verdict.judged()) return "not judged";
-  if (verdict.ending == VerdictEnding::time_out) return "time-out";
+  if (verdict.ending == VerdictEnding::time_out || verdict.ending == VerdictEnding::start)
+    return std::string(verdict_ending_name(verdict.ending));
   return verdict.violated() ? "violated" : "satisfied";
 }
 
-nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdict>& verdicts) {
+nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdict>& verdicts,
+                             double grace) {
   nlohmann::json specs = nlohmann::json::array();
   for (const SpecVerdict& verdict : verdicts) {
     nlohmann::json spec = {
@@ -101,11 +108,15 @@ nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdi
       if (verdict.not_judged_at.known())
         spec["not_judged_location"] = place_of(file, verdict.not_judged_at);
     }
-    if (verdict.ending == VerdictEnding::time_out)
-      spec["robustness_at_end"] = robustness_json(verdict.robustness_at_end);
+    if (verdict.ending == VerdictEnding::time_out || verdict.ending == VerdictEnding::start)
+      spec["robustness_as_observed"] = robustness_json(verdict.robustness_as_observed);
+    if (verdict.ending == VerdictEnding::time_out)  // its name before start-state shared it
+      spec["robustness_at_end"] = robustness_json(verdict.robustness_as_observed);
+    if (verdict.ending == VerdictEnding::start) spec["start_grace"] = grace;
     if (verdict.ending != VerdictEnding::decided) {
       spec["ending"] = verdict_ending_name(verdict.ending);
-      spec["progress"] = verdict.progress;
+      if (!verdict.progress.empty() || verdict.ending != VerdictEnding::start)
+        spec["progress"] = verdict.progress;
     }
     specs.push_back(spec);
   }
@@ -360,7 +371,7 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
 
   if (options.json) {
     nlohmann::json summary = summary_json(trace, space, values, responsibilities, written);
-    summary["specs"] = verdicts_json(file, verdicts);
+    summary["specs"] = verdicts_json(file, verdicts, judge.start_grace);
     summary["audit"] = audit_json(audit);
     summary["interaction"] = interaction_json(trace, approaches);
     out << summary.dump(2) << "\n";
@@ -384,7 +395,8 @@ int run_run(const RunCommandOptions& options, std::ostream& out, std::ostream& e
   out << "ego reached its target: " << (trace.end == EndReason::target_reached ? "yes" : "no")
       << "\n";
   if (ego_failure) out << describe_ego_failure(*ego_failure) << "\n";
-  for (const SpecVerdict& verdict : verdicts) out << describe_verdict(file, verdict) << "\n";
+  for (const SpecVerdict& verdict : verdicts)
+    out << describe_verdict(file, verdict, judge.start_grace) << "\n";
   for (const std::string& path : written) out << "wrote " << path << "\n";
   return exit_code;
 }

@@ -111,7 +111,8 @@ bool parse_audit(const std::string& text, std::vector<std::size_t>& counts) {
   return true;
 }
 
-// "reach=time-out;clearance=stuck": the objectives whose verdict the run's end left open.
+// "reach=time-out;clearance=stuck;speed=start-state": the objectives whose verdict the run's ends
+// left open.
 std::string endings_text(const std::vector<std::string>& endings,
                          const std::vector<std::string>& objectives) {
   std::string text;

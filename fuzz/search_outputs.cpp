@@ -122,6 +122,7 @@ SearchOutputs::SearchOutputs(const FuzzCommandOptions& options, const SourceFile
       journal_(evaluator.space(), objectives_, sub_target_names(evaluator)),
       time_outs_(objectives_.size(), 0),
       stuck_(objectives_.size(), 0),
+      start_states_(objectives_.size(), 0),
       design_violations_(objectives_.size(), 0),
       design_first_violation_(objectives_.size()) {
   collisions_.not_counted = scenario.specs.empty() && !options.simulation.all_collisions;
@@ -182,6 +183,7 @@ void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
   for (std::size_t k = 0; k < evaluation.endings.size() && k < objectives_.size(); ++k) {
     if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::time_out)) ++time_outs_[k];
     if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::stuck)) ++stuck_[k];
+    if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::start)) ++start_states_[k];
   }
   record_design(record);
   record_collision(evaluation, record.index);
@@ -453,9 +455,10 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
                                {"evaluations", log.findings().size() + log.duplicates()},
                                {"by_responsibility", by_responsibility}};
   nlohmann::json time_outs = nlohmann::json::object(), stuck = nlohmann::json::object(),
-                 rates = nlohmann::json::object();
+                 start_states = nlohmann::json::object(), rates = nlohmann::json::object();
   for (std::size_t k = 0; k < objectives_.size(); ++k) {
     time_outs[objectives_[k]] = time_outs_[k];
+    start_states[objectives_[k]] = start_states_[k];
     stuck[objectives_[k]] = stuck_[k];
     if (design_points_ > 0)
       rates[objectives_[k]] =
@@ -466,6 +469,7 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
       law_coverage_json(scenario_, evaluator_.law_sub_violations(), law_first_);
   document["time_outs"] = time_outs;
   document["stuck"] = stuck;
+  document["start_state"] = start_states;
   document["first_design"] = {
       {"points", design_points_}, {"over", design_over_ || complete}, {"violation_rate", rates}};
   if (!error.empty()) document["error"] = error;

@@ -81,6 +81,8 @@ class SearchOutputs {
   const std::vector<std::size_t>& audit_totals() const { return audit_totals_; }
   // Per objective: evaluations whose verdict was a time-out (not violations).
   const std::vector<std::size_t>& time_outs() const { return time_outs_; }
+  // Per objective: evaluations whose verdict was start-state (not violations either).
+  const std::vector<std::size_t>& start_states() const { return start_states_; }
   const CollisionCounts& collisions() const { return collisions_; }
   // The behaviour-coverage features of every evaluation so far (replayed ones included), as
   // summary.json's "coverage" reports them.
@@ -133,8 +135,8 @@ class SearchOutputs {
   using Clock = std::chrono::steady_clock;
   Clock::time_point last_summary_ = Clock::now();
   std::size_t findings_in_summary_ = 0;
-  // Per objective: evaluations whose verdict was a time-out, and stuck ones.
-  std::vector<std::size_t> time_outs_, stuck_;
+  // Per objective: evaluations whose verdict was a time-out, stuck ones and start-state ones.
+  std::vector<std::size_t> time_outs_, stuck_, start_states_;
   CollisionCounts collisions_;
   std::set<std::string> coverage_;
   std::map<std::string, std::size_t> law_first_;  // law feature -> first evaluation reaching it

@@ -53,18 +53,28 @@ SpecVerdict no_collision_verdict(const Trace& trace, const RoadMap& map,
   return verdict;
 }
 
-// The robustness of `formula`, or for a conjunction its conjunct guide, from `robustness` of
-// each conjunct.
+// The robustness of `formula`, or for a conjunction its conjunct guide, from the robustness of
+// each conjunct: as observed, or with the samples `excused` excuses (an end horizon set: each
+// conjunct's own).
 double guide_of(const Formula& formula, const SignalSource& source, double robustness,
-                bool continued) {
+                const std::optional<ExcusedSamples>& excused) {
   const std::vector<Formula> conjuncts = top_level_conjuncts(formula);
   if (conjuncts.size() <= 1) return robustness;
   std::vector<double> values;
-  for (const Formula& conjunct : conjuncts)
-    values.push_back(continued
-                         ? robustness_if_continued(conjunct, source, formula_horizon(conjunct))
-                         : robustness_signal(conjunct, source).front());
+  for (const Formula& conjunct : conjuncts) {
+    if (!excused) {
+      values.push_back(robustness_signal(conjunct, source).front());
+      continue;
+    }
+    ExcusedSamples own = *excused;
+    if (own.end_horizon) own.end_horizon = formula_horizon(conjunct);
+    values.push_back(robustness_excusing(conjunct, source, own));
+  }
   return conjunct_guide(values);
+}
+
+bool violates(const SpecVerdict& verdict, double robustness) {
+  return robustness < 0 || (verdict.zero_violates && robustness == 0);
 }
 
 // The ego's progress at the end of the run, computed once and only when a verdict asks.
@@ -93,16 +103,16 @@ void judge_the_end(const Spec& spec, const SignalSource& source, LazyProgress& p
                    SpecVerdict& verdict) {
   const double continued =
       robustness_if_continued(spec.formula, source, formula_horizon(spec.formula));
-  if (continued < 0 || (verdict.zero_violates && continued == 0)) return;
+  if (violates(verdict, continued)) return;
   verdict.progress = progress.get().description;
   if (progress.get().stuck) {
     verdict.ending = VerdictEnding::stuck;
     return;
   }
   verdict.ending = VerdictEnding::time_out;
-  verdict.robustness_at_end = verdict.robustness;
+  verdict.robustness_as_observed = verdict.robustness;
   verdict.robustness = continued;
-  verdict.guide = guide_of(spec.formula, source, continued, true);
+  verdict.guide = guide_of(spec.formula, source, continued, ExcusedSamples{0, 0.0});
 }
 
 std::string atom_text(const SourceFile& file, const SourceLocation& atom) {
@@ -154,14 +164,27 @@ bool reads_actor_distance(const Formula& atom) {
                      [](const SpecTerm& term) { return reads_actor_distance(term); });
 }
 
+// Whether a violation at `time` is one the scenario's start state may have made: within the
+// grace, of a run that went on past it (one that ended within it, e.g. by a collision, has no
+// "from then on" to hold on).
+bool within_grace(double time, const Trace& trace, const JudgeOptions& options) {
+  const double grace = options.start_grace - kWindowTolerance;
+  return time < grace && !trace.time.empty() && trace.time.back() >= grace;
+}
+
 // A violated conjunction's violated conjuncts, the earliest first, and the verdict's atom and
 // time the first's. A conjunct violated only because the run ended (its robustness were the
-// run to go on is not negative) is left out unless the ego was stuck.
+// run to go on is not negative) is left out unless the ego was stuck; one only the scenario's
+// start state violated (judge_the_start's rule, for the conjunct alone, its end continued too
+// when the run was cut short) is left out too, and names the verdict's atom and time only when
+// no conjunct is left: then every violation is the ends' doing.
 void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const Trace& trace,
-                             const SourceFile& file, SpecVerdict& verdict) {
+                             const SourceFile& file, const JudgeOptions& options,
+                             SpecVerdict& verdict) {
   const std::vector<Formula> conjuncts = top_level_conjuncts(spec.formula);
   if (conjuncts.size() <= 1) return;
   const bool cut_short = trace.end == EndReason::duration && verdict.ending != VerdictEnding::stuck;
+  std::vector<ViolatedConjunct> start_states;
   for (const Formula& conjunct : conjuncts) {
     const RobustnessWitness witness = explain_robustness(conjunct, source);
     if (!(witness.robustness < 0)) continue;
@@ -179,18 +202,63 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
       violated.mode_text = mode_text(file, conjunct, *witness.atom, violated.atom_text);
       violated.actor_distance = reads_actor_distance(*witness.atom);
     }
-    verdict.conjuncts.push_back(std::move(violated));
+    const bool start_state =
+        within_grace(violated.time, trace, options) &&
+        !violates(verdict, robustness_excusing(conjunct, source,
+                                               {options.start_grace,
+                                                cut_short ? std::optional(formula_horizon(conjunct))
+                                                          : std::nullopt}));
+    (start_state ? start_states : verdict.conjuncts).push_back(std::move(violated));
   }
-  std::stable_sort(verdict.conjuncts.begin(), verdict.conjuncts.end(),
-                   [](const ViolatedConjunct& a, const ViolatedConjunct& b) {
-                     return a.time != b.time ? a.time < b.time : !a.eventually && b.eventually;
-                   });
-  if (verdict.conjuncts.empty()) return;
-  verdict.time = verdict.conjuncts.front().time;
-  verdict.atom = verdict.conjuncts.front().atom;
-  verdict.atom_text = verdict.conjuncts.front().atom_text;
-  verdict.mode_text = verdict.conjuncts.front().mode_text;
-  verdict.actor_distance = verdict.conjuncts.front().actor_distance;
+  for (std::vector<ViolatedConjunct>* list : {&verdict.conjuncts, &start_states})
+    std::stable_sort(list->begin(), list->end(),
+                     [](const ViolatedConjunct& a, const ViolatedConjunct& b) {
+                       return a.time != b.time ? a.time < b.time : !a.eventually && b.eventually;
+                     });
+  const std::vector<ViolatedConjunct>& named =
+      verdict.conjuncts.empty() ? start_states : verdict.conjuncts;
+  if (named.empty()) return;
+  verdict.time = named.front().time;
+  verdict.atom = named.front().atom;
+  verdict.atom_text = named.front().atom_text;
+  verdict.mode_text = named.front().mode_text;
+  verdict.actor_distance = named.front().actor_distance;
+}
+
+// A violation the scenario's start state made: the trace violates the spec within the grace and
+// not once its first seconds are excused (robustness_if_started_later); start-state, not a
+// violation. Judged after the time-out rule, on what it left violated: when the run ended at its
+// duration the end is continued too, so a run both started and ended out of line is start-state
+// while the ego progressed at its end, stuck (a violation) when it did not.
+void judge_the_start(const Spec& spec, const SignalSource& source, const Trace& trace,
+                     const SourceFile& file, LazyProgress& progress, const JudgeOptions& options,
+                     SpecVerdict& verdict) {
+  // A conjunct the trace violates beyond the start's doing is the driver's (the start-state
+  // conjuncts are not among verdict.conjuncts).
+  if (verdict.ending != VerdictEnding::decided || !verdict.violated() ||
+      !verdict.conjuncts.empty() || !within_grace(verdict.time, trace, options))
+    return;
+  ExcusedSamples excused{options.start_grace, std::nullopt};
+  double robustness = robustness_excusing(spec.formula, source, excused);
+  if (violates(verdict, robustness) && trace.end == EndReason::duration) {
+    excused.end_horizon = formula_horizon(spec.formula);
+    robustness = robustness_excusing(spec.formula, source, excused);
+    if (violates(verdict, robustness)) return;
+    verdict.progress = progress.get().description;
+    if (progress.get().stuck) {
+      // The end's part of it is the ego's: every violated conjunct counts, as for stuck.
+      verdict.ending = VerdictEnding::stuck;
+      verdict.conjuncts.clear();
+      name_violated_conjuncts(spec, source, trace, file, options, verdict);
+      return;
+    }
+  }
+  if (violates(verdict, robustness)) return;
+  verdict.ending = VerdictEnding::start;
+  verdict.robustness_as_observed = verdict.robustness;
+  verdict.robustness = robustness;
+  verdict.guide = guide_of(spec.formula, source, robustness, excused);
+  verdict.conjuncts.clear();  // none is a violation
 }
 
 // One spec's verdict. Throws OracleError when the trace cannot answer it.
@@ -202,7 +270,7 @@ SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace
   verdict.name = spec.name;
   verdict.zero_violates = options.violation_at_zero;
   verdict.robustness = witness.robustness;
-  verdict.guide = guide_of(spec.formula, source, witness.robustness, false);
+  verdict.guide = guide_of(spec.formula, source, witness.robustness, std::nullopt);
   if (verdict.violated() && trace.end == EndReason::duration)
     judge_the_end(spec, source, progress, verdict);
   verdict.time = time_of_sample(trace, witness.sample);
@@ -212,7 +280,8 @@ SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace
     verdict.mode_text = mode_text(file, spec.formula, *witness.atom, verdict.atom_text);
     verdict.actor_distance = reads_actor_distance(*witness.atom);
   }
-  if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, verdict);
+  if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, options, verdict);
+  judge_the_start(spec, source, trace, file, progress, options, verdict);
   return verdict;
 }
 
@@ -223,6 +292,7 @@ std::string_view verdict_ending_name(VerdictEnding ending) {
     case VerdictEnding::decided: return "decided";
     case VerdictEnding::time_out: return "time-out";
     case VerdictEnding::stuck: return "stuck";
+    case VerdictEnding::start: return "start-state";
   }
   return "decided";
 }

@@ -19,7 +19,7 @@ namespace scenfuzz {
 // The name the collision oracle's verdict carries.
 inline constexpr const char* kNoCollisionSpec = "no_collision";
 
-// How the end of the run bears on a verdict (docs/oracle.md, "Time-outs").
+// How the ends of the run bear on a verdict (docs/oracle.md, "Time-outs" and "Start state").
 enum class VerdictEnding {
   decided,  // the trace decides the spec
   // Violated only because the run ended at its duration (robustness_if_continued is not
@@ -27,9 +27,13 @@ enum class VerdictEnding {
   time_out,
   // The same, but the ego had stopped making progress (ego_progress.hpp): a violation.
   stuck,
+  // Violated within JudgeOptions::start_grace of the start and not once those first seconds are
+  // excused (robustness_if_started_later): the scenario's start state broke the spec, not the
+  // driver. Not a violation.
+  start,
 };
 
-// "decided", "time-out", "stuck".
+// "decided", "time-out", "stuck", "start-state".
 std::string_view verdict_ending_name(VerdictEnding ending);
 
 // One violated conjunct of a spec that is a conjunction (`a & b & c` at its top level).
@@ -61,9 +65,10 @@ struct SpecVerdict {
   // (search_guide.hpp); negative exactly when the robustness is.
   double guide = 0;
   VerdictEnding ending = VerdictEnding::decided;
-  // A time-out: `robustness` and `guide` are what the run would give were it to go on as the
-  // spec needs (never negative), this is the robustness of the trace as it ended (negative).
-  double robustness_at_end = 0;
+  // A time-out or start-state: `robustness` and `guide` are what the run gives with its end
+  // continued as the spec needs, or its start excused (never violations); this is the robustness
+  // of the trace as it was observed (a violation).
+  double robustness_as_observed = 0;
   // A time-out or stuck: the ego's progress over the end of the run, in words.
   std::string progress;
   // A violated conjunction: every conjunct the trace violates (not those only the run's end
@@ -92,11 +97,16 @@ struct JudgeOptions {
   // --violation-at-zero: robustness exactly 0 is a violation (LawBreaker: the negated formula's
   // robustness >= 0), not satisfied (RTAMT's convention, the default).
   bool violation_at_zero = false;
+  // Seconds from the start in which a violation may be the scenario's start state's
+  // (VerdictEnding::start): what a driver needs to bring a file's start state into line, a
+  // reaction (RSS's 1 s) plus a comfortable correction (1 s at 2 m/s^2 takes 7 km/h off).
+  double start_grace = 2.0;
 };
 
 // One verdict per spec of `scenario`, in file order, or one from the collision oracle when it has
 // none. A spec violated only because a run that ended at its duration cut an `F` short is a
-// time-out or stuck (VerdictEnding). `file` is the scenario's source, for the atoms' text. A spec
+// time-out or stuck, one violated only by the scenario's start state is start-state
+// (VerdictEnding). `file` is the scenario's source, for the atoms' text. A spec
 // the trace cannot answer (e.g. a law signal the oracle does not compute) is not judged
 // (SpecVerdict::not_judged) and does not keep the others from being judged.
 std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,

@@ -242,9 +242,14 @@ class Evaluator {
   Evaluator(const Evaluator&) = delete;
   Evaluator& operator=(const Evaluator&) = delete;
 
-  // Samples from `observed` on are not the trace's but what might come after it: every atom
-  // there is as favourable to the whole formula as it can be (robustness_if_continued).
-  void continue_from(std::size_t observed) { observed_ = observed; }
+  // Samples before `first` are the start state the trace was given (robustness_if_started_later):
+  // every atom there that only universal operators read is as favourable to the whole formula as
+  // it can be. Samples from `end` on are not the trace's but what might come after it
+  // (robustness_if_continued): every atom there is.
+  void excuse(std::size_t first, std::size_t end) {
+    first_observed_ = first;
+    observed_end_ = end;
+  }
 
   Signal formula(const Formula& f) {
     Signal result = compute(f);
@@ -463,11 +468,15 @@ class Evaluator {
       release(std::move(*buffer));
   }
 
-  // An atom's robustness past the observed samples: +inf where it is counted as it stands, -inf
-  // under an odd number of negations (there -inf is what serves the whole formula best).
-  Signal beyond_observed(Signal r) const {
+  // An atom's robustness at the excused samples: +inf where it is counted as it stands, -inf
+  // under an odd number of negations (there -inf is what serves the whole formula best). At the
+  // start only where no existential operator reads it: there the samples were observed, and what
+  // they did for an F is real, but an excused sample must not satisfy it.
+  Signal excused(Signal r) const {
     const double best = negated_ ? -kInfinity : kInfinity;
-    for (std::size_t i = observed_; i < r.size(); ++i) r[i] = best;
+    if (!existential_)
+      for (std::size_t i = 0; i < std::min(first_observed_, r.size()); ++i) r[i] = best;
+    for (std::size_t i = observed_end_; i < r.size(); ++i) r[i] = best;
     return r;
   }
 
@@ -478,10 +487,20 @@ class Evaluator {
     return x;
   }
 
+  // `f` as an operand of a temporal operator; `existential` when the operator asks for some
+  // sample rather than every one (F, G under an odd number of negations, U).
+  Signal read_by(const Formula& f, bool existential) {
+    const bool outer = existential_;
+    existential_ = outer || existential;
+    Signal x = formula(f);
+    existential_ = outer;
+    return x;
+  }
+
   Signal compute(const Formula& f) {
     switch (f.kind) {
-      case FormulaKind::comparison: return beyond_observed(comparison(f));
-      case FormulaKind::predicate: return beyond_observed(predicate(f));
+      case FormulaKind::comparison: return excused(comparison(f));
+      case FormulaKind::predicate: return excused(predicate(f));
       case FormulaKind::negation: {
         Signal x = negated(f.operands[0]);
         for (double& v : x) v = -v;
@@ -504,8 +523,8 @@ class Evaluator {
       }
       case FormulaKind::always:
       case FormulaKind::eventually: {
-        Signal x = formula(f.operands[0]);
         const bool always = f.kind == FormulaKind::always;
+        Signal x = read_by(f.operands[0], always == negated_);
         if (!f.interval) return always ? suffix_min(std::move(x)) : suffix_max(std::move(x));
         Signal out = acquire();
         if (const std::optional<Offsets> offsets =
@@ -537,8 +556,9 @@ class Evaluator {
         return x;
       }
       case FormulaKind::until: {
-        Signal p = formula(f.operands[0]);
-        Signal q = formula(f.operands[1]);
+        // Either polarity asks for some sample (U, or release under a negation).
+        Signal p = read_by(f.operands[0], true);
+        Signal q = read_by(f.operands[1], true);
         Signal r = acquire();
         if (!f.interval)
           unbounded_until(p, q, r);
@@ -557,8 +577,10 @@ class Evaluator {
 
   const SignalSource& source_;
   bool keep_;
-  std::size_t observed_ = std::numeric_limits<std::size_t>::max();
+  std::size_t first_observed_ = 0;
+  std::size_t observed_end_ = std::numeric_limits<std::size_t>::max();
   bool negated_ = false;
+  bool existential_ = false;
   std::unordered_map<const Formula*, Signal> kept_;
   SpareSignals spare_;  // buffers free for the next node
 };
@@ -650,13 +672,23 @@ std::vector<double> robustness_signal(const Formula& formula, const SignalSource
   return Evaluator(source, false).formula(formula);
 }
 
-double robustness_if_continued(const Formula& formula, const SignalSource& source, double horizon) {
+double robustness_excusing(const Formula& formula, const SignalSource& source,
+                           const ExcusedSamples& excused) {
   const std::size_t n = source.time.size();
   if (n == 0) return kInfinity;  // nothing observed violates anything
+  std::size_t first_observed = 0;
+  while (first_observed < n &&
+         source.time[first_observed] - source.time[0] < excused.start - kWindowTolerance)
+    ++first_observed;
+  if (!excused.end_horizon) {
+    Evaluator evaluator(source, false);
+    evaluator.excuse(first_observed, n);
+    return evaluator.formula(formula).front();
+  }
   // The trace's own step carries on past its end, as far as the formula reads, at most as long
   // again as the trace (and at least one sample, for operators over the rest of the trace).
   const double step = n > 1 ? source.time[n - 1] - source.time[n - 2] : 1.0;
-  const auto wanted = static_cast<std::size_t>(std::ceil(horizon / step)) + 1;
+  const auto wanted = static_cast<std::size_t>(std::ceil(*excused.end_horizon / step)) + 1;
   const std::size_t extra = std::clamp<std::size_t>(wanted, 1, std::max<std::size_t>(n, 1));
   std::vector<double> time(source.time.begin(), source.time.end());
   for (std::size_t k = 1; k <= extra; ++k)
@@ -672,8 +704,17 @@ double robustness_if_continued(const Formula& formula, const SignalSource& sourc
     return values;
   };
   Evaluator evaluator(continued, false);
-  evaluator.continue_from(n);
+  evaluator.excuse(first_observed, n);
   return evaluator.formula(formula).front();
+}
+
+double robustness_if_continued(const Formula& formula, const SignalSource& source, double horizon) {
+  return robustness_excusing(formula, source, {0, horizon});
+}
+
+double robustness_if_started_later(const Formula& formula, const SignalSource& source,
+                                   double grace) {
+  return robustness_excusing(formula, source, {grace, std::nullopt});
 }
 
 RobustnessWitness explain_robustness(const Formula& formula, const SignalSource& source,

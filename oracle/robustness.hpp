@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -70,6 +71,25 @@ std::vector<double> robustness_signal(const Formula& formula, const SignalSource
 // whatever came next; the robustness below zero and this not means the trace ended too early to
 // tell (an F whose window the end cut off). Throws OracleError.
 double robustness_if_continued(const Formula& formula, const SignalSource& source, double horizon);
+
+// The robustness at the first sample with every sample within `grace` seconds of the first
+// excused: the start state the scenario gave the trace, not what the trace did with it. Mirrors
+// robustness_if_continued at the other end: every atom there +inf (-inf under an odd number of
+// negations), but only where no existential operator reads it (F, G under an odd number of
+// negations, U): a G no longer counts those samples against the formula, while an F still counts
+// what they did for it and is never satisfied by them (the start cannot fulfil an F: `F[0, 1]`
+// wholly within the grace is judged on the samples as they are). Throws OracleError.
+double robustness_if_started_later(const Formula& formula, const SignalSource& source,
+                                   double grace);
+
+// Both at once: the first `start` seconds excused as robustness_if_started_later does them, and,
+// when `end_horizon` is set, the trace continued past its end as robustness_if_continued does.
+struct ExcusedSamples {
+  double start = 0;                   // seconds from the first sample
+  std::optional<double> end_horizon;  // seconds past the last (spec_horizon.hpp)
+};
+double robustness_excusing(const Formula& formula, const SignalSource& source,
+                           const ExcusedSamples& excused);
 
 // Why a formula has the robustness it has at a sample: following min and max down the formula,
 // the atom (comparison or predicate) and the sample whose value it is.

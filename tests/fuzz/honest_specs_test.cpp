@@ -1,7 +1,8 @@
 // Honest specs, end to end: a run cut short while the ego progresses is a time-out (its own
 // verdict in `run`, no finding in a search); an ego that stopped making progress is a finding
 // marked stuck; a --duration shorter than a spec reads is warned of; a spec violated at most
-// points of the search's first design is warned of, and its rate is in summary.json.
+// points of the search's first design is warned of, and its rate is in summary.json; a spec only
+// the scenario's start state violates is start-state (its own verdict in `run`, no finding).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -59,6 +60,62 @@ TEST_F(HonestSpecsTest, RunReportsATimeOutAsItsOwnVerdict) {
   EXPECT_EQ(spec["violated"], false);
   EXPECT_EQ(spec["ending"], "time-out");
   EXPECT_LT(spec["robustness_at_end"].get<double>(), 0.0);
+}
+
+// An ego starting at `speed` m/s on a road whose limit is 80 km/h (22.2 m/s): the reference
+// driver slows from 26 m/s to 23.0 within 2 s, to 22.2 after. `limit` is the spec's (m/s).
+std::string fast_start(const std::string& speed, const std::string& limit) {
+  return R"(
+ego_target = "east_0"->300;
+ego = AV((("east_0"->20), , )" +
+         speed + R"(), (ego_target, , ));
+scenario = CreateScenario{load("straight"); ego; {}; {}; {};};
+Trace trace = EXE(scenario);
+ego_state = trace[ego];
+limit = G (ego_state.speed <= )" +
+         limit + R"();
+trace |= limit;
+)";
+}
+
+TEST_F(HonestSpecsTest, RunReportsAStartStateAsItsOwnVerdict) {
+  const std::string file = write("fast.avu", fast_start("26", "23.5"));
+  const Outcome text = scenfuzz({"run", file, "--out", ""});
+  EXPECT_EQ(text.exit_code, 0) << text.err << text.out;
+  EXPECT_NE(
+      text.out.find("spec limit: start-state: violated at 0 s by 'ego_state.speed <= 23.5' ("),
+      std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("(robustness -2.5) by the scenario's start state; holds from 2 s on"),
+            std::string::npos)
+      << text.out;
+  const Outcome json = scenfuzz({"run", file, "--json", "--out", ""});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json spec = nlohmann::json::parse(json.out)["specs"][0];
+  EXPECT_EQ(spec["verdict"], "start-state");
+  EXPECT_EQ(spec["violated"], false);
+  EXPECT_EQ(spec["ending"], "start-state");
+  EXPECT_GT(spec["robustness"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(spec["robustness_as_observed"].get<double>(), -2.5);
+  EXPECT_DOUBLE_EQ(spec["start_grace"].get<double>(), 2.0);
+  EXPECT_EQ(spec["time"], 0.0);
+  // Still above 22.5 m/s at 2 s: the driver's violation, decided.
+  const Outcome slower =
+      scenfuzz({"run", write("slower.avu", fast_start("26", "22.5")), "--json", "--out", ""});
+  EXPECT_EQ(slower.exit_code, 1) << slower.err;
+  const nlohmann::json decided = nlohmann::json::parse(slower.out)["specs"][0];
+  EXPECT_EQ(decided["verdict"], "violated");
+  EXPECT_FALSE(decided.contains("ending"));
+}
+
+TEST_F(HonestSpecsTest, ASearchWhoseRunsAllStartTooFastHasNoFinding) {
+  const Outcome run = search(fast_start("range(25, 26)", "23.5"), {"--budget", "16"});
+  EXPECT_EQ(run.exit_code, 0) << run.err << run.out;
+  const nlohmann::json summary = this->summary();
+  EXPECT_TRUE(summary["findings"].empty()) << summary.dump(2);
+  EXPECT_EQ(summary["start_state"]["limit"], 16);
+  EXPECT_EQ(summary["time_outs"]["limit"], 0);
+  EXPECT_NE(run.out.find("limit: 16 start-state"), std::string::npos) << run.out;
 }
 
 TEST_F(HonestSpecsTest, ADurationShorterThanASpecReadsIsWarnedNamingTheSpec) {

@@ -96,15 +96,16 @@ TEST_F(NotJudgedSpecsTest, TheSearchTargetsTheJudgeableSpecsAndNamesTheOthers) {
       << search.out;
 }
 
-// The ego starts standing, so `G (speed >= 0)` has robustness exactly 0: satisfied in RTAMT's
-// convention (the default), violated in LawBreaker's (--violation-at-zero).
+// No fog, so `G (fog >= 0)` has robustness exactly 0 at every sample: satisfied in RTAMT's
+// convention (the default), violated in LawBreaker's (--violation-at-zero). (`G (speed >= 0)` of
+// an ego starting from standing is 0 only at t = 0: the start state's, not a violation.)
 TEST_F(NotJudgedSpecsTest, ViolationAtZeroFlipsARobustnessZeroVerdict) {
   const std::string path =
       write("standing.avu",
             "ego = AV((\"east_0\"->50, , 0), (\"east_0\"->200));\n"
             "scenario = CreateScenario{load(\"straight\"); ego; {}; {}; {};};\n"
             "Trace trace = EXE(scenario);\n"
-            "moving = G (speed >= 0);\n"
+            "moving = G (fog >= 0);\n"
             "trace |= moving;\n");
   const Outcome rtamt = scenfuzz({"run", "--json", "--duration", "2", path});
   EXPECT_EQ(rtamt.exit_code, 0) << rtamt.err;

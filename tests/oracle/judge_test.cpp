@@ -203,7 +203,7 @@ TEST(JudgeTest, ARunCutShortWhileTheEgoProgressesIsATimeOutNotAViolation) {
   const SpecVerdict& reach = run.verdicts[0];
   EXPECT_EQ(reach.ending, VerdictEnding::time_out);
   EXPECT_FALSE(reach.violated());
-  EXPECT_LT(reach.robustness_at_end, -100);  // hundreds of metres short
+  EXPECT_LT(reach.robustness_as_observed, -100);  // hundreds of metres short
   EXPECT_GE(reach.guide, 0.0);
   EXPECT_NE(reach.progress.find("drove"), std::string::npos) << reach.progress;
   EXPECT_EQ(reach.atom_text, "dis(ego_state, ego_target) <= 2.0");
