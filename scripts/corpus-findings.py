@@ -7,9 +7,10 @@ For every seed in corpora/ (not corpora/benchmarks/) this runs the search a user
 
 and prints per seed the findings written (one per failure mode), the violating evaluations they
 stand for, the findings by the responsibility of their collision (ego, shared, other, none: no
-collision), the time-outs, and the simulations whose first ego collision was not the ego's
-fault; then the totals and the share of findings the ego is responsible for (ego or shared, and
-findings without a collision, which violate a spec of the ego's own driving). Each finding's
+collision), the time-outs, the simulations whose first ego collision was not the ego's fault,
+and the start-states (evaluations of a spec only the scenario's start state violated); then the
+totals and the share of findings the ego is responsible for (ego or shared, and findings without
+a collision, which violate a spec of the ego's own driving). Each finding's
 file is listed with --list, to read by hand.
 
 Usage: scripts/corpus-findings.py [--scenfuzz BIN] [--out DIR] [--map-path DIR] [--budget N]
@@ -57,9 +58,9 @@ def main() -> int:
     seeds = args.seeds or corpus_seeds(REPO / "corpora")
 
     totals = dict.fromkeys(KINDS, 0)
-    total_findings = total_evaluations = total_time_outs = total_not_egos = 0
+    total_findings = total_evaluations = total_time_outs = total_not_egos = total_starts = 0
     print(f"{'seed':42} {'findings':>8} {'evals':>6} " +
-          " ".join(f"{k:>6}" for k in KINDS) + f" {'t-outs':>6} {'coll.other':>10}")
+          " ".join(f"{k:>6}" for k in KINDS) + f" {'t-outs':>6} {'coll.other':>10} {'starts':>6}")
     for seed in seeds:
         summary = search(args, seed, Path(args.out) / seed.stem)
         findings = summary["findings"]
@@ -69,9 +70,12 @@ def main() -> int:
         evaluations = summary["failure_modes"]["evaluations"]
         time_outs = sum(summary.get("time_outs", {}).values()) \
             if isinstance(summary.get("time_outs"), dict) else 0
+        starts = sum(summary.get("start_state", {}).values()) \
+            if isinstance(summary.get("start_state"), dict) else 0
         not_egos = summary["ego_collisions"]["other"]
         print(f"{seed.stem:42} {len(findings):8} {evaluations:6} " +
-              " ".join(f"{kinds[k]:6}" for k in KINDS) + f" {time_outs:6} {not_egos:10}")
+              " ".join(f"{kinds[k]:6}" for k in KINDS) + f" {time_outs:6} {not_egos:10}"
+              f" {starts:6}")
         if args.list:
             for finding in findings:
                 print(f"    {finding.get('file', '-')}: {finding['mode']}")
@@ -81,8 +85,10 @@ def main() -> int:
         total_evaluations += evaluations
         total_time_outs += time_outs
         total_not_egos += not_egos
+        total_starts += starts
     print(f"{'total':42} {total_findings:8} {total_evaluations:6} " +
-          " ".join(f"{totals[k]:6}" for k in KINDS) + f" {total_time_outs:6} {total_not_egos:10}")
+          " ".join(f"{totals[k]:6}" for k in KINDS) + f" {total_time_outs:6} {total_not_egos:10}"
+          f" {total_starts:6}")
     if total_findings:
         egos = totals["ego"] + totals["shared"] + totals["none"]
         collisions = totals["ego"] + totals["shared"] + totals["other"]

@@ -10,7 +10,8 @@ every seed in corpora/ (not corpora/benchmarks/) this runs
 
 and prints, per seed and spec, the violated count over the judged points, the rate, the
 time-outs (a run ended by its duration while the ego still progressed: not a violation), the
-stuck runs (violations where the ego had stopped making progress), the evaluations with an ego
+stuck runs (violations where the ego had stopped making progress), the start-states (only the
+scenario's start state violated the spec: not a violation), the evaluations with an ego
 collision, and, from summary.json, how many of the written findings' collisions the
 responsibility oracle puts on the ego (ego or shared) or on the other.
 Rates above the limit (default 20 %) are marked with '!'.
@@ -64,9 +65,11 @@ def parse_endings(text: str) -> dict[str, str]:
 
 
 def count_evaluations(evaluations_csv: Path, specs: list[str]) -> tuple[int, dict, int]:
-    """Judged points, per spec {violated, time_outs, stuck}, and evaluations with a collision."""
+    """Judged points, per spec {violated, time_outs, stuck, start_states}, and evaluations with a
+    collision."""
     judged = 0
-    per_spec = {spec: {"violated": 0, "time_outs": 0, "stuck": 0} for spec in specs}
+    per_spec = {spec: {"violated": 0, "time_outs": 0, "stuck": 0, "start_states": 0}
+                for spec in specs}
     collisions = 0
     with evaluations_csv.open(newline="") as handle:
         for row in csv.DictReader(handle):
@@ -83,6 +86,9 @@ def count_evaluations(evaluations_csv: Path, specs: list[str]) -> tuple[int, dic
                 if ending == "time-out":
                     # A time-out is its own verdict, never a violation (docs/search.md).
                     per_spec[spec]["time_outs"] += 1
+                elif ending == "start-state":
+                    # Only the scenario's start state violated it: not a violation either.
+                    per_spec[spec]["start_states"] += 1
                 elif value != "" and float(value) < 0:
                     per_spec[spec]["violated"] += 1
                     if ending == "stuck":
@@ -114,7 +120,8 @@ def measure(args, seed: Path) -> dict:
 
 
 def print_table(results: list[dict], limit: float, markdown: bool) -> None:
-    header = ["seed", "spec", "violated", "rate", "time-outs", "stuck", "collisions",
+    header = ["seed", "spec", "violated", "rate", "time-outs", "stuck", "start-states",
+              "collisions",
               "findings' collisions ego/shared/other"]
     rows = []
     for result in results:
@@ -124,7 +131,8 @@ def print_table(results: list[dict], limit: float, markdown: bool) -> None:
             mark = " !" if rate > limit else ""
             rows.append([result["seed"], spec, f"{counts['violated']}/{result['judged']}",
                          f"{100 * rate:.1f} %{mark}", str(counts["time_outs"]),
-                         str(counts["stuck"]), str(result["collisions"]),
+                         str(counts["stuck"]), str(counts["start_states"]),
+                         str(result["collisions"]),
                          f"{r['ego']}/{r['shared']}/{r['other']}"])
     if markdown:
         print("| " + " | ".join(header) + " |")
