@@ -207,7 +207,7 @@ double red_light_limit(const WorldSnapshot& world, std::uint32_t self, LanePosit
     const double ratio = wanted / std::max(gap, 0.1);
     limit = std::min(limit, -a * ratio * ratio);
   });
-  return limit;
+  return std::isfinite(limit) ? std::max(limit, -body.max_deceleration) : kInfinity;
 }
 
 namespace {

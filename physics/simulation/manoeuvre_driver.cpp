@@ -98,12 +98,12 @@ void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, doubl
   double acceleration = running_ ? longitudinal_acceleration(dt) : between_phases(world, self, dt);
   held_back_ = false;
   if (running_ && on_lane_ && !state_.reversing && !script_->heedless) {
-    // A phase drives as scripted, but not into the traffic ahead (the ego aside) nor through a
-    // red light, unless its script drives without looking.
+    // A phase drives as scripted, but not into the traffic ahead (the ego aside), nor through a
+    // red light when its script heeds lights, unless its script drives without looking.
     NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
-    const double limit =
-        std::min(phase_leader_limit(world, self, *on_lane_, next, body_, leader_scope()),
-                 red_light_limit(world, self, *on_lane_, next, body_));
+    double limit = phase_leader_limit(world, self, *on_lane_, next, body_, leader_scope());
+    if (script_->heeds_lights)
+      limit = std::min(limit, red_light_limit(world, self, *on_lane_, next, body_));
     if (limit < acceleration) {
       acceleration = limit;
       held_back_ = true;

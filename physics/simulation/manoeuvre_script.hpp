@@ -74,6 +74,9 @@ struct ManoeuvreScript {
   // back for the traffic ahead in a phase, and between and after phases the speed is kept
   // instead of following the traffic and the lights; only bends and dead ends still slow it.
   bool heedless = false;
+  // Its phases stop at red lights too: a CH-Scenario vehicle's manoeuvres are what it does in
+  // traffic, where a WMG SDL phase is a script against the ego that may run a red on purpose.
+  bool heeds_lights = false;
 };
 
 }  // namespace scenfuzz

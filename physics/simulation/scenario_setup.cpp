@@ -499,12 +499,16 @@ bool ego_replays_script(const ScenarioTemplate& scenario) {
          scenario.language == SourceLanguage::accident;
 }
 
-// Scripted NPC behaviour: every script, the ego's included, runs without looking.
-void set_heedless(SimulationSetup& setup) {
+// Scripted NPC behaviour: every script, the ego's included, runs without looking. Otherwise a
+// CH-Scenario vehicle's phases stop at red lights (ManoeuvreScript::heeds_lights).
+void set_heedless(SimulationSetup& setup, SourceLanguage language) {
   const bool heedless = setup.npc_behaviour == NpcBehaviour::scripted;
   if (setup.ego_script) setup.ego_script->heedless = heedless;
   for (ScriptedActor& actor : setup.actors)
-    if (actor.manoeuvres) actor.manoeuvres->heedless = heedless;
+    if (actor.manoeuvres) {
+      actor.manoeuvres->heedless = heedless;
+      actor.manoeuvres->heeds_lights = !heedless && language == SourceLanguage::ch_scenario;
+    }
 }
 
 // A vehicle that turns at no phase takes the lanes ahead through a junction: straight on, which
@@ -855,7 +859,7 @@ std::optional<SimulationSetup> prepare_simulation(const ScenarioTemplate& scenar
   prepare_lights(context, setup);
   setup.conditions = conditions_of(context);
   setup.npc_behaviour = scenario.npc_behaviour.value_or(NpcBehaviour::reactive);
-  set_heedless(setup);
+  set_heedless(setup, scenario.language);
   if (diagnostics.error_count() > errors_before) return std::nullopt;
   return setup;
 }

@@ -547,7 +547,7 @@ namespace {
 using namespace test;
 
 // On `crossroads` the ego comes from the east and waits at its red light; the turner comes from
-// the west, its light set green (a phase stops at a red light).
+// the west.
 ScenarioTemplate crossroads_turn(const std::string& lane, const std::string& manoeuvre) {
   ScenarioTemplate scenario;
   scenario.language = SourceLanguage::wmg_sdl;
@@ -557,10 +557,6 @@ ScenarioTemplate crossroads_turn(const std::string& lane, const std::string& man
   scenario.ego.name = "Ego";
   scenario.ego.initial = lane_state("east_in_0", 0, 10);
   scenario.duration = constant_value(20);
-  TrafficLightSetting west;
-  west.id = "light_west";
-  west.color = "green";
-  scenario.traffic.lights.push_back(west);
   scenario.vehicles.push_back(manoeuvring(ActorKind::vehicle, "Turner", lane_state(lane, 100, 8),
                                           {phase(manoeuvre, 8, {})}));
   return scenario;

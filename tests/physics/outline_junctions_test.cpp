@@ -14,12 +14,16 @@
 #include <string_view>
 #include <vector>
 
+#include "outline_fixtures.hpp"
 #include "physics/map/outline_map.hpp"
 #include "physics/map/road_map.hpp"
 #include "physics/simulation/traffic_signals.hpp"
 
 namespace scenfuzz {
 namespace {
+
+using test::lane_of;
+using test::outline_error;
 
 using ::testing::Contains;
 using ::testing::ElementsAre;
@@ -37,26 +41,11 @@ RoadOutlineGeometry road(std::string name, MapPoint from, MapPoint to, double ha
           {{from.x - left.x, from.y - left.y}, {to.x - left.x, to.y - left.y}}};
 }
 
-const LaneDescription& lane_of(const MapDescription& map, std::string_view id) {
-  for (const LaneDescription& lane : map.lanes)
-    if (lane.id == id) return lane;
-  throw std::runtime_error("the map has no lane '" + std::string(id) + "'");
-}
-
 std::set<std::string> connectors_of(const MapDescription& map, const std::string& junction) {
   std::set<std::string> ids;
   for (const LaneDescription& lane : map.lanes)
     if (lane.junction == junction && lane.turn != LaneTurn::none) ids.insert(lane.id);
   return ids;
-}
-
-std::string outline_error(const std::vector<RoadOutlineGeometry>& roads) {
-  try {
-    describe_outline_map("blank", roads);
-  } catch (const MapError& error) {
-    return error.what();
-  }
-  return "no error";
 }
 
 // East: 200 m of two lanes each way (7 m halves); north: 200 m of one lane each way crossing it
@@ -231,27 +220,15 @@ TEST(OutlineJunctions, ATrafficLightGivesEachRoadALightTakingTurnsFromTheSignals
 }
 
 TEST(OutlineJunctions, ALightNeedsAJunctionOfItsOwn) {
-  const std::vector<RoadOutlineGeometry> straight{road("east", {0, 0}, {200, 0}, 7)};
   EXPECT_THAT(
-      [&] {
-        try {
-          describe_outline_map("blank", straight, {{"light", {50, 0}, "east", SignalColour::red}});
-        } catch (const MapError& error) {
-          return std::string(error.what());
-        }
-        return std::string("no error");
-      }(),
+      outline_error({road("east", {0, 0}, {200, 0}, 7)},
+                    {{"light", {50, 0}, "east", SignalColour::red}}),
       HasSubstr("traffic light 'light': the road network has no junction for it to control"));
-  try {
-    describe_outline_map(
-        "blank", {road("east", {0, 0}, {200, 0}, 7), road("north", {100, -100}, {100, 100}, 3.5)},
-        {{"one", {90, 0}, "east", SignalColour::red},
-         {"two", {0, 0}, "north", SignalColour::green}});
-    ADD_FAILURE() << "two lights on one junction";
-  } catch (const MapError& error) {
-    EXPECT_THAT(error.what(), HasSubstr("traffic lights 'one' and 'two' are both nearest "
-                                        "junction_east_north"));
-  }
+  EXPECT_THAT(outline_error(
+                  {road("east", {0, 0}, {200, 0}, 7), road("north", {100, -100}, {100, 100}, 3.5)},
+                  {{"one", {90, 0}, "east", SignalColour::red},
+                   {"two", {0, 0}, "north", SignalColour::green}}),
+              HasSubstr("traffic lights 'one' and 'two' are both nearest junction_east_north"));
 }
 
 }  // namespace

@@ -19,11 +19,15 @@
 
 #include "lang/scenario.hpp"
 #include "lang/value.hpp"
+#include "outline_fixtures.hpp"
 #include "physics/map/map_source.hpp"
 #include "physics/map/road_map.hpp"
 
 namespace scenfuzz {
 namespace {
+
+using test::lane_of;
+using test::outline_error;
 
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
@@ -46,27 +50,10 @@ RoadOutlineGeometry worked_example_road() {
   return {"narrow_road", {{0, 50}, {400, 50}}, {{0, 25}, {400, 25}}, {{0, 0}, {400, 0}}};
 }
 
-// Fails the test (through the exception GoogleTest reports) when the lane is missing.
-const LaneDescription& lane_of(const MapDescription& map, std::string_view id) {
-  for (const LaneDescription& lane : map.lanes)
-    if (lane.id == id) return lane;
-  throw std::runtime_error("the map has no lane '" + std::string(id) + "'");
-}
-
 std::set<std::string> lane_ids(const MapDescription& map) {
   std::set<std::string> ids;
   for (const LaneDescription& lane : map.lanes) ids.insert(lane.id);
   return ids;
-}
-
-// The message describe_outline_map throws for these roads, or "no error".
-std::string outline_error(const std::vector<RoadOutlineGeometry>& roads) {
-  try {
-    describe_outline_map("blank", roads);
-  } catch (const MapError& error) {
-    return error.what();
-  }
-  return "no error";
 }
 
 // Every width sample on both sides of the lane is `half_width`, within `tolerance`.
