@@ -2,8 +2,9 @@
 // that a pedestrian standing still seems to drift a few centimetres a second in any direction.
 // The reference driver tells standing from walking pedestrians by the smoothed speed, and whether
 // a vehicle beside its path is moving into it by the smoothed velocity: a heading error of a few
-// degrees on a fast oncoming car is a lateral speed enough to seem to swerve. Obstacles are not
-// tracked (they stand).
+// degrees on a fast oncoming car is a lateral speed enough to seem to swerve. A vehicle's heading
+// is smoothed too (averaged as a unit vector, so across +-pi), for where a slow or oncoming
+// vehicle's body lies. Obstacles are not tracked (they stand).
 #pragma once
 
 #include <optional>
