@@ -14,6 +14,7 @@
 
 #include "physics/map/builtin_maps.hpp"
 #include "physics/map/map_description.hpp"
+#include "physics/map/plane_vectors.hpp"
 
 namespace scenfuzz::builtin {
 
@@ -41,18 +42,10 @@ MapDescription generate_crossroads(const MapParameters& parameters);
 MapDescription generate_roundabout(const MapParameters& parameters);
 MapDescription generate_merge(const MapParameters& parameters);
 
-// Plane vectors reuse MapPoint. The operators live in this namespace only, so they cannot clash
-// with anyone else's.
-inline MapPoint operator+(MapPoint a, MapPoint b) { return {a.x + b.x, a.y + b.y}; }
-inline MapPoint operator-(MapPoint a, MapPoint b) { return {a.x - b.x, a.y - b.y}; }
-inline MapPoint operator*(double factor, MapPoint a) { return {factor * a.x, factor * a.y}; }
-inline double dot(MapPoint a, MapPoint b) { return a.x * b.x + a.y * b.y; }
-inline double cross(MapPoint a, MapPoint b) { return a.x * b.y - a.y * b.x; }
+// Plane vectors reuse MapPoint (plane_vectors.hpp).
+using namespace plane;
 
 inline double radians(double degrees) { return degrees * std::numbers::pi / 180; }
-inline MapPoint unit_vector(double heading) { return {std::cos(heading), std::sin(heading)}; }
-inline MapPoint left_normal(MapPoint direction) { return {-direction.y, direction.x}; }
-inline MapPoint right_normal(MapPoint direction) { return {direction.y, -direction.x}; }
 
 // Arcs are sampled finely enough that a centre line's polyline length is within a millimetre or
 // so of the true arc length (the contract gives lengths and s values to the centimetre): segments

@@ -74,12 +74,6 @@ MapPoint out_lane_point(const JunctionLayout& layout, const Arm& arm, int k, dou
   return distance * arm.outward + layout.lane_offset(k) * outbound_right(arm);
 }
 
-LaneDescription& lane_named(MapDescription& map, const std::string& id) {
-  for (LaneDescription& lane : map.lanes)
-    if (lane.id == id) return lane;
-  throw std::logic_error("built-in junction map: no lane '" + id + "'");
-}
-
 void add_arm_lanes(MapDescription& map, const JunctionLayout& layout, const Arm& arm) {
   const int n = layout.lanes;
   const double near = arm.start;

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <numbers>
 
-#include "lang/demand.hpp"
+#include "physics/map/plane_vectors.hpp"
 
 namespace scenfuzz::outline {
 
@@ -16,30 +16,17 @@ namespace {
 constexpr double kStraightOn = 30 * std::numbers::pi / 180;
 constexpr double kConnectorSpacing = 0.5;  // metres between a connector's points, at most
 
-MapPoint plus(MapPoint a, MapPoint b) { return {a.x + b.x, a.y + b.y}; }
-MapPoint minus(MapPoint a, MapPoint b) { return {a.x - b.x, a.y - b.y}; }
-MapPoint scaled(double factor, MapPoint a) { return {factor * a.x, factor * a.y}; }
-double cross(MapPoint a, MapPoint b) { return a.x * b.y - a.y * b.x; }
-MapPoint unit(double heading) { return {std::cos(heading), std::sin(heading)}; }
-double heading_of(MapPoint direction) { return std::atan2(direction.y, direction.x); }
-
-const LaneDescription& lane_named(const MapDescription& map, const std::string& id) {
-  for (const LaneDescription& lane : map.lanes)
-    if (lane.id == id) return lane;
-  demand_failed("an arm's lane is in the map", __FILE__, __LINE__);
-}
+using namespace plane;
 
 double end_heading(const std::vector<MapPoint>& line, bool at_start) {
   const std::size_t n = line.size();
-  return at_start ? heading_of(minus(line[1], line[0]))
-                  : heading_of(minus(line[n - 1], line[n - 2]));
+  return at_start ? heading_of(line[1] - line[0]) : heading_of(line[n - 1] - line[n - 2]);
 }
 
 // The turn from `from` into `to`, seen driving in on `from`: left, right or none (straight on, or
 // back the way it came).
 LaneTurn turn_between(const JunctionArm& from, const JunctionArm& to) {
-  const double turn =
-      angle_difference(heading_of(to.outward), heading_of(scaled(-1, from.outward)));
+  const double turn = angle_difference(heading_of(to.outward), heading_of(-1 * from.outward));
   if (std::abs(turn) < kStraightOn || std::abs(turn) > std::numbers::pi - kStraightOn)
     return LaneTurn::none;
   return turn > 0 ? LaneTurn::left : LaneTurn::right;
@@ -53,14 +40,13 @@ std::vector<MapPoint> bezier(MapPoint p0, double h0, MapPoint p1, double h1) {
   const double delta = std::abs(angle_difference(h1, h0));
   const double radius = chord / (2 * std::max(std::sin(delta / 2), 1e-6));
   const double arm = std::min(4.0 / 3 * std::tan(delta / 4) * radius, chord);
-  const MapPoint c0 = plus(p0, scaled(arm, unit(h0))), c1 = minus(p1, scaled(arm, unit(h1)));
+  const MapPoint c0 = p0 + arm * unit_vector(h0), c1 = p1 - arm * unit_vector(h1);
   const auto steps =
       static_cast<std::size_t>(std::max(8.0, std::ceil(1.5 * chord / kConnectorSpacing)));
   std::vector<MapPoint> points;
   for (std::size_t i = 0; i <= steps; ++i) {
     const double t = static_cast<double>(i) / static_cast<double>(steps), u = 1 - t;
-    points.push_back(plus(plus(scaled(u * u * u, p0), scaled(3 * u * u * t, c0)),
-                          plus(scaled(3 * u * t * t, c1), scaled(t * t * t, p1))));
+    points.push_back((u * u * u * p0 + 3 * u * u * t * c0) + (3 * u * t * t * c1 + t * t * t * p1));
   }
   return points;
 }
@@ -68,18 +54,16 @@ std::vector<MapPoint> bezier(MapPoint p0, double h0, MapPoint p1, double h1) {
 // Width samples growing linearly from `start` to `end` along `line`, and the boundaries they draw.
 void set_widths(LaneDescription& lane, double start, double end) {
   const std::vector<MapPoint>& line = lane.centre_line;
-  double length = 0;
-  for (std::size_t i = 1; i < line.size(); ++i) length += distance(line[i - 1], line[i]);
+  const double length = length_of(line);
   double s = 0;
   for (std::size_t i = 0; i < line.size(); ++i) {
     if (i > 0) s += distance(line[i - 1], line[i]);
     const double width = start + (end - start) * s / length;
     lane.left_width.push_back({s, width});
     const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
-    const MapPoint direction = unit(heading_of(minus(line[b], line[a])));
-    const MapPoint left{-direction.y, direction.x};
-    lane.left_boundary.push_back(plus(line[i], scaled(width, left)));
-    lane.right_boundary.push_back(minus(line[i], scaled(width, left)));
+    const MapPoint left = left_normal(unit_vector(heading_of(line[b] - line[a])));
+    lane.left_boundary.push_back(line[i] + width * left);
+    lane.right_boundary.push_back(line[i] - width * left);
   }
   lane.right_width = lane.left_width;
 }
@@ -110,7 +94,7 @@ std::vector<MapPoint> convex_hull(std::vector<MapPoint> points) {
   std::vector<MapPoint> hull(2 * points.size());
   std::size_t k = 0;
   const auto turns_left = [&](std::size_t size, MapPoint p) {
-    return cross(minus(hull[size - 1], hull[size - 2]), minus(p, hull[size - 2])) > 1e-9;
+    return cross(hull[size - 1] - hull[size - 2], p - hull[size - 2]) > 1e-9;
   };
   for (MapPoint p : points) {
     while (k >= 2 && !turns_left(k, p)) --k;

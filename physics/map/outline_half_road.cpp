@@ -10,44 +10,40 @@
 
 #include "lang/demand.hpp"
 #include "lang/number_format.hpp"
+#include "physics/map/plane_vectors.hpp"
 
 namespace scenfuzz::outline {
 
 namespace {
 
-MapPoint plus(MapPoint a, MapPoint b) { return {a.x + b.x, a.y + b.y}; }
-MapPoint minus(MapPoint a, MapPoint b) { return {a.x - b.x, a.y - b.y}; }
-MapPoint scaled(double factor, MapPoint a) { return {factor * a.x, factor * a.y}; }
-double dot(MapPoint a, MapPoint b) { return a.x * b.x + a.y * b.y; }
-double norm(MapPoint a) { return std::sqrt(dot(a, a)); }
-MapPoint left_normal_of(MapPoint direction) { return {-direction.y, direction.x}; }
+using namespace plane;
 
 // Stations closer than this are one (a millimetre: map coordinates are given to the centimetre).
 constexpr double kSameStation = 1e-3;
 
 // The unit direction of segment i (Polyline drops repeated points, so it has a length).
 MapPoint segment_direction(const std::vector<MapPoint>& points, std::size_t i) {
-  MapPoint step = minus(points[i + 1], points[i]);
-  return scaled(1 / norm(step), step);
+  MapPoint step = points[i + 1] - points[i];
+  return (1 / norm(step)) * step;
 }
 
 // The average of the adjacent segments' unit left normals, made unit again. Where the line turns
 // back on itself the average vanishes; the outgoing segment's normal stands in.
 MapPoint vertex_normal(const std::vector<MapPoint>& points, std::size_t i) {
   const std::size_t last = points.size() - 1;
-  if (i == 0) return left_normal_of(segment_direction(points, 0));
-  if (i == last) return left_normal_of(segment_direction(points, last - 1));
-  MapPoint sum = plus(segment_direction(points, i - 1), segment_direction(points, i));
-  if (norm(sum) < 1e-9) return left_normal_of(segment_direction(points, i));
-  return left_normal_of(scaled(1 / norm(sum), sum));
+  if (i == 0) return left_normal(segment_direction(points, 0));
+  if (i == last) return left_normal(segment_direction(points, last - 1));
+  MapPoint sum = segment_direction(points, i - 1) + segment_direction(points, i);
+  if (norm(sum) < 1e-9) return left_normal(segment_direction(points, i));
+  return left_normal((1 / norm(sum)) * sum);
 }
 
 double distance_to_segment(MapPoint point, MapPoint a, MapPoint b) {
-  MapPoint along = minus(b, a);
+  MapPoint along = b - a;
   double length_squared = dot(along, along);
   double t =
-      length_squared > 0 ? std::clamp(dot(minus(point, a), along) / length_squared, 0.0, 1.0) : 0.0;
-  return distance(point, plus(a, scaled(t, along)));
+      length_squared > 0 ? std::clamp(dot(point - a, along) / length_squared, 0.0, 1.0) : 0.0;
+  return distance(point, a + t * along);
 }
 
 double distance_to_polyline(MapPoint point, std::span<const MapPoint> line) {
@@ -60,7 +56,7 @@ double distance_to_polyline(MapPoint point, std::span<const MapPoint> line) {
 
 // Sample i moved `offset` metres along its normal (negative: to the right).
 MapPoint offset_point(const CentreSample& sample, double offset) {
-  return plus(sample.point, scaled(offset, sample.left_normal));
+  return sample.point + offset * sample.left_normal;
 }
 
 // Width samples at the lane's own arc lengths, from its centre-line points.
@@ -87,11 +83,10 @@ std::vector<CentreSample> sample_centre_line(const Polyline& centre_line) {
     samples.push_back({points[i], vertex_normal(points, i), arc[i]});
     const double length = arc[i + 1] - arc[i];
     const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(length / kSampleSpacing)));
-    const MapPoint normal = left_normal_of(segment_direction(points, i));
+    const MapPoint normal = left_normal(segment_direction(points, i));
     for (std::size_t j = 1; j < pieces; ++j) {
       double t = static_cast<double>(j) / static_cast<double>(pieces);
-      samples.push_back({plus(points[i], scaled(t, minus(points[i + 1], points[i]))), normal,
-                         arc[i] + t * length});
+      samples.push_back({points[i] + t * (points[i + 1] - points[i]), normal, arc[i] + t * length});
     }
   }
   samples.push_back({points.back(), vertex_normal(points, points.size() - 1), arc.back()});
@@ -108,7 +103,7 @@ std::vector<CentreSample> with_stations(std::vector<CentreSample> samples,
     if (after != samples.end() && after->s - s < kSameStation) continue;
     if (after != samples.begin() && s - std::prev(after)->s < kSameStation) continue;
     const std::size_t segment = centre_line.segment_at(s);
-    const MapPoint normal = left_normal_of(segment_direction(centre_line.points(), segment));
+    const MapPoint normal = left_normal(segment_direction(centre_line.points(), segment));
     samples.insert(after, {centre_line.point_at(s), normal, s});
   }
   return samples;
@@ -125,12 +120,12 @@ double side_of_centre_line(const Polyline& centre_line, MapPoint point) {
   const std::vector<MapPoint>& points = centre_line.points();
   const std::vector<double>& arc = centre_line.arc_lengths();
   const std::size_t segment = projection.segment;
-  MapPoint normal = left_normal_of(segment_direction(points, segment));
+  MapPoint normal = left_normal(segment_direction(points, segment));
   // Nearest at a vertex: judge by the vertex normal, not by one of the segments meeting there.
   constexpr double kAtVertex = 1e-9;
   if (projection.s <= arc[segment] + kAtVertex) normal = vertex_normal(points, segment);
   if (projection.s >= arc[segment + 1] - kAtVertex) normal = vertex_normal(points, segment + 1);
-  return dot(minus(point, centre_line.point_at(projection.s)), normal);
+  return dot(point - centre_line.point_at(projection.s), normal);
 }
 
 std::vector<double> half_widths(std::span<const CentreSample> samples,

@@ -4,24 +4,14 @@
 
 #include <cstddef>
 
-#include "lang/demand.hpp"
+#include "physics/map/plane_vectors.hpp"
 #include "physics/map/signal_plans.hpp"
 
 namespace scenfuzz::outline {
 
 namespace {
 
-const LaneDescription& lane_named(const MapDescription& map, const std::string& id) {
-  for (const LaneDescription& lane : map.lanes)
-    if (lane.id == id) return lane;
-  demand_failed("a junction arm's lane is in the map", __FILE__, __LINE__);
-}
-
-double length_of(const std::vector<MapPoint>& line) {
-  double length = 0;
-  for (std::size_t i = 1; i < line.size(); ++i) length += distance(line[i - 1], line[i]);
-  return length;
-}
+using namespace plane;
 
 // Where in its cycle a plan starts showing `colour`.
 double phase_start(const SignalPlan& plan, SignalColour colour) {
