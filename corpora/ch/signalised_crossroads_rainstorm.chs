@@ -1,6 +1,6 @@
 # A rainstorm at a signalised crossroads at dusk: the light is red for the car as it comes up, a
-# truck ahead turns right, an oncoming taxi crosses the junction on the same green, and a cyclist
-# rides north on the crossing street.
+# truck ahead turns right, an oncoming taxi turns left across the car's path once the light
+# changes (giving way to the car first), and a cyclist rides north on the crossing street.
 import from MAP
   length: 400
   width: 400
@@ -42,7 +42,7 @@ Entity
     timestamp: 2023-07-14 19:20:00
     speed: 35.0
     acceleration: 0.0
-    track: oncoming
+    track: oncoming, turn left
     position: (300.0, 201.7)
   DynamicEntity4
     name: cyclist

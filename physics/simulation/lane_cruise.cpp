@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "physics/map/lane_route.hpp"
+#include "physics/simulation/lanes_ahead.hpp"
 
 namespace scenfuzz {
 namespace {
@@ -18,39 +19,12 @@ constexpr double kTimeGap = 1.5;              // s, IDM's T (as the lane followe
 constexpr double kStandstillGap = 2.0;        // m, IDM's s0
 constexpr double kStopLineGap = 1.0;          // m before a stop line
 constexpr double kComfortAcceleration = 1.5;  // m/s^2, IDM's a (at most the class's)
-constexpr double kMinimumLookahead = 40;      // m
-constexpr double kLookaheadTime = 6;          // s of travel
-constexpr std::size_t kMaximumLanes = 64;     // lanes walked ahead, for rings of tiny lanes
 constexpr double kStandingCruise = 0.5;       // m/s: cruising slower than this is standing
 constexpr double kDeadEndMargin = 0.5;        // m short of a dead end where an actor aims to stop
 constexpr double kPhaseSideMargin = 0.3;      // m beside a body leaving a lane that must stay clear
 constexpr double kPhaseTimeGap = 0.5;         // s behind its leader a scripted phase keeps at least
 // The share of its full braking from which a scripted phase brakes for what is ahead.
 constexpr double kPhaseBrakingShare = 0.6;
-
-struct LaneAhead {
-  LaneIndex lane = 0;
-  double offset = 0;  // route distance from the actor to the lane's s = 0 (negative for its own)
-};
-
-std::vector<LaneAhead> lanes_ahead(const RoadMap& map, LanePosition at, const NextLane& next_lane,
-                                   double reach, bool& dead_end) {
-  std::vector<LaneAhead> lanes{{at.lane, -at.s}};
-  dead_end = false;
-  while (lanes.size() < kMaximumLanes) {
-    const LaneAhead& last = lanes.back();
-    double end = last.offset + map.lane(last.lane).length();
-    if (end > reach) break;
-    LaneIndex next = next_lane(last.lane);
-    if (next == last.lane) {
-      dead_end = true;
-      break;
-    }
-    LinkPoints link = link_points(map, last.lane, next);
-    lanes.push_back({next, last.offset + link.exit_s - link.entry_s});
-  }
-  return lanes;
-}
 
 double fourth_power(double x) {
   double squared = x * x;
@@ -127,8 +101,6 @@ Leader nearest_in_corridor(const WorldSnapshot& world, std::uint32_t self,
   return leader;
 }
 
-double lookahead(double speed) { return std::max(kMinimumLookahead, speed * kLookaheadTime); }
-
 // The nearest actor ahead that `scope` names, for which `counts` holds.
 template <typename Counts>
 Leader scoped_leader(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
@@ -170,7 +142,7 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
   const double a = std::min(kComfortAcceleration, body.max_acceleration);
   const double b = body.comfortable_deceleration;
   bool dead_end = false;
-  std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, lookahead(v), dead_end);
+  std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, lane_lookahead(v), dead_end);
   // A phase that ended at a standstill (or nearly: a stop reaches 0 within a step) leaves it
   // standing.
   if (cruise_speed < kStandingCruise) return v > 0 ? -body.comfortable_deceleration : 0;
@@ -194,20 +166,24 @@ double cruise_acceleration(const WorldSnapshot& world, std::uint32_t self, LaneP
 double red_light_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
                        const NextLane& next_lane, const ActorClass& body) {
   const double v = world.states[self].speed;
-  const double a = std::min(kComfortAcceleration, body.max_acceleration);
-  const double b = body.comfortable_deceleration;
   bool dead_end = false;
   const std::vector<LaneAhead> lanes =
-      lanes_ahead(*world.map, at, next_lane, lookahead(v), dead_end);
+      lanes_ahead(*world.map, at, next_lane, lane_lookahead(v), dead_end);
   double limit = kInfinity;
-  // IDM's interaction term alone, as cruise_acceleration's for a stop line: the phase keeps its
-  // own speed until the light needs braking.
   for_each_light_to_stop_at(world, lanes, v, body, [&](double gap) {
-    const double wanted = kStopLineGap + v * kTimeGap + v * v / (2 * std::sqrt(a * b));
-    const double ratio = wanted / std::max(gap, 0.1);
-    limit = std::min(limit, -a * ratio * ratio);
+    limit = std::min(limit, stop_line_limit(v, gap, body));
   });
-  return std::isfinite(limit) ? std::max(limit, -body.max_deceleration) : kInfinity;
+  return limit;
+}
+
+double stop_line_limit(double speed, double gap, const ActorClass& body) {
+  const double a = std::min(kComfortAcceleration, body.max_acceleration);
+  const double b = body.comfortable_deceleration;
+  // IDM's interaction term alone, as cruise_acceleration's for a stop line: a phase keeps its own
+  // speed until the stop needs braking.
+  const double wanted = kStopLineGap + speed * kTimeGap + speed * speed / (2 * std::sqrt(a * b));
+  const double ratio = wanted / std::max(gap, 0.1);
+  return std::max(-a * ratio * ratio, -body.max_deceleration);
 }
 
 namespace {
@@ -220,7 +196,7 @@ Leader phase_leader(const WorldSnapshot& world, std::uint32_t self, LanePosition
   const double v = me.speed;
   const double half = body.length / 2;
   bool dead_end = false;
-  const std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, lookahead(v), dead_end);
+  const std::vector<LaneAhead> lanes = lanes_ahead(map, at, next_lane, lane_lookahead(v), dead_end);
   auto not_ego = [](std::uint32_t k) { return k != kEgo; };
   Leader leader = scoped_leader(world, self, at, lanes, body, scope, not_ego);
   // Its band of road already covers every lane its body is in.
@@ -231,7 +207,7 @@ Leader phase_leader(const WorldSnapshot& world, std::uint32_t self, LanePosition
   if (own.lane >= 0 && static_cast<LaneIndex>(own.lane) != at.lane) {
     const std::vector<LaneAhead> leaving =
         lanes_ahead(map, LanePosition{static_cast<LaneIndex>(own.lane), own.s, 0}, next_lane,
-                    lookahead(v), dead_end);
+                    lane_lookahead(v), dead_end);
     auto beside = [&](std::uint32_t k) {
       const double dx = world.states[k].x - me.x, dy = world.states[k].y - me.y;
       const double lateral = -std::sin(me.heading) * dx + std::cos(me.heading) * dy;

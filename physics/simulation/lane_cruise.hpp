@@ -6,16 +6,13 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 
 #include "physics/actors/actor_class.hpp"
 #include "physics/map/lane_queries.hpp"
+#include "physics/simulation/lanes_ahead.hpp"
 #include "physics/simulation/world_snapshot.hpp"
 
 namespace scenfuzz {
-
-// The lane an actor takes after `lane` (itself at a dead end).
-using NextLane = std::function<LaneIndex(LaneIndex)>;
 
 // Whom an actor on a lane follows. Out on the oncoming lane after pulling out to overtake (one
 // lane each way), it keeps its own lane's frame, for its direction and route; what is in that
@@ -49,6 +46,10 @@ double phase_leader_limit(const WorldSnapshot& world, std::uint32_t self, LanePo
 // light needs braking); +infinity when no light stops it.
 double red_light_limit(const WorldSnapshot& world, std::uint32_t self, LanePosition at,
                        const NextLane& next_lane, const ActorClass& body);
+
+// IDM's braking (m/s^2, at least minus the class's full braking) for an actor at `speed` to stop
+// 1 m short of a stop line `gap` m ahead of its front bumper, without IDM's free-road term.
+double stop_line_limit(double speed, double gap, const ActorClass& body);
 
 // The deceleration (negative, m/s^2) that stops an actor at `at` moving at `speed` before the
 // end of the lanes ahead, or +infinity when there is room for comfortable braking later.

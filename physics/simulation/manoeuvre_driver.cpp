@@ -109,6 +109,15 @@ void ManoeuvreDriver::step(const WorldSnapshot& world, std::uint32_t self, doubl
       held_back_ = true;
     }
   }
+  if (on_lane_ && !state_.reversing && script_->heeds_lights) {
+    // A CH vehicle gives way in junctions, in its phases and between them.
+    NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
+    const double limit = junction_entry_limit(world, self, *on_lane_, next, body_, junction_wait_);
+    if (limit < acceleration) {
+      acceleration = limit;
+      held_back_ = running_;
+    }
+  }
   if (on_lane_ && !state_.reversing && state_.speed > 0) {
     NextLane next = [this](LaneIndex lane) { return next_lane(lane); };
     // In a phase the script may corner up to most of the grip; cruising, as a calm driver.

@@ -19,6 +19,7 @@
 #include "physics/map/lane_queries.hpp"
 #include "physics/simulation/lane_cruise.hpp"
 #include "physics/simulation/manoeuvre_script.hpp"
+#include "physics/simulation/phase_junction.hpp"
 #include "physics/simulation/world_snapshot.hpp"
 
 namespace scenfuzz {
@@ -112,8 +113,10 @@ class ManoeuvreDriver {
   double lateral_speed_ = 1;    // m/s the curve is planned for: slower, it progresses less
   double lateral_slope_ = 0;    // the curve's sideways metres per metre along the lane
 
-  // At the last step the traffic ahead held the phase's acceleration back (phase_leader_limit).
+  // At the last step the traffic ahead held the phase's acceleration back (phase_leader_limit,
+  // a red light, the junction rule).
   bool held_back_ = false;
+  JunctionWait junction_wait_;  // CH vehicles' junction rule (phase_junction.hpp)
 
   // A cut-in's accelerations over the first and second half of its duration.
   std::array<double, 2> cut_in_acceleration_{};

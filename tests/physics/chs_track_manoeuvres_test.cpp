@@ -130,5 +130,35 @@ TEST(ChsTrackManoeuvres, ATurningTaxiTakesTheJunctionsRightTurnOnANamedMap) {
   EXPECT_TRUE(trace.collisions.empty());
 }
 
+// The built-in crossroads, two lanes each way, north and south green from the start: a taxi
+// coming north turns left while a truck comes south straight on, both reaching the junction
+// about 7 s in. The left turn gives way to the oncoming truck (physics/simulation/
+// phase_junction.hpp): it waits at the entry until the truck is through, then turns.
+TEST(ChsTrackManoeuvres, ALeftTurnGivesWayToOncomingTrafficInTheJunction) {
+  const std::string text =
+      "map: crossroads\n"
+      "Entity\n"
+      "  DynamicEntity1\n    name: ego\n    speed: 30\n    position: (-120, -1.75)\n"
+      "  DynamicEntity2\n    name: taxi\n    speed: 36\n    position: (1.75, -80)\n"
+      "    track: turn left\n"
+      "  DynamicEntity3\n    name: truck\n    speed: 36\n    position: (-1.75, 82)\n";
+  const ChsRun chs = run_chs(text, 25);
+  ASSERT_TRUE(chs.run.trace) << chs.said << chs.run.messages;
+  const Trace& trace = *chs.run.trace;
+  const TraceActor& taxi = trace.actors[*trace.find_actor("taxi")];
+  const TraceActor& truck = trace.actors[*trace.find_actor("truck")];
+  EXPECT_TRUE(trace.collisions.empty());
+  // The taxi crosses the truck's lane (x = -1.75) only once the truck is out of the junction.
+  for (std::size_t i = 0; i < trace.sample_count(); ++i) {
+    if (taxi.x[i] < -0.5 && taxi.y[i] > -10) {
+      ASSERT_LT(truck.y[i], -10) << "the taxi crossed in front of the truck at t = "
+                                 << trace.time[i];
+    }
+  }
+  EXPECT_LT(truck.y.back(), -40) << "the truck went on south";
+  EXPECT_LT(taxi.x.back(), -30) << "the taxi turned left, west";
+  EXPECT_NEAR(std::abs(taxi.heading.back()), std::numbers::pi, 0.1) << "heading west";
+}
+
 }  // namespace
 }  // namespace scenfuzz
