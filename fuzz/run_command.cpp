@@ -60,12 +60,17 @@ std::string robustness_text(double robustness) {
   return format_number(std::round(robustness * 1e9) / 1e9);
 }
 
+// " at 2 s": a verdict's time to the millisecond.
+std::string at_time(double time) {
+  return " at " + format_number(std::round(time * 1000) / 1000) + " s";
+}
+
 std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict, double grace) {
   if (!verdict.judged())
     return "spec " + verdict.name + ": not judged: " +
            (verdict.not_judged_at.known() ? place_of(file, verdict.not_judged_at) + ": " : "") +
            verdict.not_judged;
-  const std::string at = " at " + format_number(std::round(verdict.time * 1000) / 1000) + " s";
+  const std::string at = at_time(verdict.time);
   if (verdict.ending == VerdictEnding::time_out)
     return "spec " + verdict.name +
            ": time-out: the run ended while the ego still made progress (" + verdict.progress +
@@ -80,6 +85,10 @@ std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict,
   std::string text = "spec " + verdict.name + ": robustness " + robustness_text(verdict.robustness);
   if (!verdict.violated()) return text + " (satisfied)";
   text += at + ", violated" + atom_of(file, verdict);
+  // The driver's share is what the line leads with; the start state's worse value follows.
+  if (verdict.start_excused)
+    text += " (from the start state " + robustness_text(verdict.robustness_as_observed) +
+            at_time(verdict.time_as_observed) + ")";
   if (verdict.ending == VerdictEnding::stuck)
     text += "; stuck: the run ended before it could hold, and the ego " + verdict.progress;
   return text;
@@ -108,11 +117,14 @@ nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdi
       if (verdict.not_judged_at.known())
         spec["not_judged_location"] = place_of(file, verdict.not_judged_at);
     }
-    if (verdict.ending == VerdictEnding::time_out || verdict.ending == VerdictEnding::start)
+    if (verdict.ending == VerdictEnding::time_out || verdict.ending == VerdictEnding::start ||
+        verdict.start_excused)
       spec["robustness_as_observed"] = robustness_json(verdict.robustness_as_observed);
     if (verdict.ending == VerdictEnding::time_out)  // its name before start-state shared it
       spec["robustness_at_end"] = robustness_json(verdict.robustness_as_observed);
-    if (verdict.ending == VerdictEnding::start) spec["start_grace"] = grace;
+    if (verdict.start_excused) spec["time_as_observed"] = verdict.time_as_observed;
+    if (verdict.ending == VerdictEnding::start || verdict.start_excused)
+      spec["start_grace"] = grace;
     if (verdict.ending != VerdictEnding::decided) {
       spec["ending"] = verdict_ending_name(verdict.ending);
       if (!verdict.progress.empty() || verdict.ending != VerdictEnding::start)

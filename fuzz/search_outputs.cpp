@@ -73,6 +73,14 @@ std::string seconds_text(double seconds) {
   return format_number(std::round(seconds * 1000) / 1000) + " s";
 }
 
+// " (from the start state -6 at 0 s)" when a verdict's robustness and time are the driver's share
+// of a violation the start state made worse (SpecVerdict::start_excused), else nothing.
+std::string start_state_note(const SpecVerdict& verdict) {
+  if (!verdict.start_excused) return "";
+  return " (from the start state " + format_number(verdict.robustness_as_observed) + " at " +
+         seconds_text(verdict.time_as_observed) + ")";
+}
+
 }  // namespace
 
 nlohmann::json finding_json(const Finding& finding) {
@@ -275,6 +283,7 @@ std::string SearchOutputs::finding_header(const Finding& finding, const Scenario
     header += "spec " + finding.objective_name + " violated, robustness " +
               format_number(verdict.robustness) + " at " + seconds_text(verdict.time);
     if (!verdict.atom_text.empty()) header += " (" + verdict.atom_text + ")";
+    header += start_state_note(verdict);
     if (verdict.ending == VerdictEnding::stuck)
       header += "; stuck: the run ended before it could hold, and the ego " + verdict.progress;
     header += "\n" + comment + origin + "\n";
@@ -311,7 +320,8 @@ std::string SearchOutputs::also_violated_lines(const Finding& finding, const Sce
     const SpecVerdict& verdict = run.verdicts[k];
     lines += comment + "also violated: spec " + verdict.name + ", robustness " +
              format_number(verdict.robustness) + " at " + seconds_text(verdict.time) +
-             (verdict.atom_text.empty() ? "" : " (" + verdict.atom_text + ")") + "\n";
+             (verdict.atom_text.empty() ? "" : " (" + verdict.atom_text + ")") +
+             start_state_note(verdict) + "\n";
   }
   return lines;
 }

@@ -172,12 +172,44 @@ bool within_grace(double time, const Trace& trace, const JudgeOptions& options) 
   return time < grace && !trace.time.empty() && trace.time.back() >= grace;
 }
 
+// The atom that gives `witness` its value, as `named`'s atom, its text, failure mode and whether
+// it reads a distance between road users (the fields SpecVerdict and ViolatedConjunct share);
+// none when an infinity no atom gives is the value. `root` is the formula the witness is of.
+template <class Named>
+void name_atom(const SourceFile& file, const Formula& root, const RobustnessWitness& witness,
+               Named& named) {
+  named.atom = {};
+  named.atom_text.clear();
+  named.mode_text.clear();
+  named.actor_distance = false;
+  if (!witness.atom) return;
+  named.atom = witness.atom->location;
+  named.atom_text = atom_text(file, named.atom);
+  named.mode_text = mode_text(file, root, *witness.atom, named.atom_text);
+  named.actor_distance = reads_actor_distance(*witness.atom);
+}
+
+// A violated conjunct as `witness` explains it. An F is violated when its window closes, not
+// where it came nearest to holding.
+ViolatedConjunct violated_conjunct(const Formula& conjunct, const RobustnessWitness& witness,
+                                   const Trace& trace, const SourceFile& file) {
+  ViolatedConjunct violated;
+  violated.eventually = conjunct.kind == FormulaKind::eventually;
+  violated.robustness = witness.robustness;
+  violated.time =
+      violated.eventually ? window_end(conjunct, trace) : time_of_sample(trace, witness.sample);
+  name_atom(file, conjunct, witness, violated);
+  return violated;
+}
+
 // A violated conjunction's violated conjuncts, the earliest first, and the verdict's atom and
 // time the first's. A conjunct violated only because the run ended (its robustness were the
 // run to go on is not negative) is left out unless the ego was stuck; one only the scenario's
 // start state violated (judge_the_start's rule, for the conjunct alone, its end continued too
 // when the run was cut short) is left out too, and names the verdict's atom and time only when
-// no conjunct is left: then every violation is the ends' doing.
+// no conjunct is left: then every violation is the ends' doing. One violated within the grace
+// that the start state only made worse is named by the driver's share (take_the_drivers_share,
+// for the conjunct alone): its robustness, time and atom once the grace is excused.
 void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const Trace& trace,
                              const SourceFile& file, const JudgeOptions& options,
                              SpecVerdict& verdict) {
@@ -190,25 +222,20 @@ void name_violated_conjuncts(const Spec& spec, const SignalSource& source, const
     if (!(witness.robustness < 0)) continue;
     if (cut_short && robustness_if_continued(conjunct, source, formula_horizon(conjunct)) >= 0)
       continue;
-    ViolatedConjunct violated;
-    violated.eventually = conjunct.kind == FormulaKind::eventually;
-    violated.robustness = witness.robustness;
-    violated.time = time_of_sample(trace, witness.sample);
-    // An F is violated when its window closes, not where it came nearest to holding.
-    if (violated.eventually) violated.time = window_end(conjunct, trace);
-    if (witness.atom) {
-      violated.atom = witness.atom->location;
-      violated.atom_text = atom_text(file, violated.atom);
-      violated.mode_text = mode_text(file, conjunct, *witness.atom, violated.atom_text);
-      violated.actor_distance = reads_actor_distance(*witness.atom);
+    ViolatedConjunct violated = violated_conjunct(conjunct, witness, trace, file);
+    if (within_grace(violated.time, trace, options)) {
+      const ExcusedSamples excused{
+          options.start_grace, cut_short ? std::optional(formula_horizon(conjunct)) : std::nullopt};
+      if (!violates(verdict, robustness_excusing(conjunct, source, excused))) {
+        start_states.push_back(std::move(violated));
+        continue;
+      }
+      const RobustnessWitness share =
+          explain_robustness_if_started_later(conjunct, source, options.start_grace);
+      if (share.robustness > witness.robustness)
+        violated = violated_conjunct(conjunct, share, trace, file);
     }
-    const bool start_state =
-        within_grace(violated.time, trace, options) &&
-        !violates(verdict, robustness_excusing(conjunct, source,
-                                               {options.start_grace,
-                                                cut_short ? std::optional(formula_horizon(conjunct))
-                                                          : std::nullopt}));
-    (start_state ? start_states : verdict.conjuncts).push_back(std::move(violated));
+    verdict.conjuncts.push_back(std::move(violated));
   }
   for (std::vector<ViolatedConjunct>* list : {&verdict.conjuncts, &start_states})
     std::stable_sort(list->begin(), list->end(),
@@ -261,6 +288,34 @@ void judge_the_start(const Spec& spec, const SignalSource& source, const Trace& 
   verdict.conjuncts.clear();  // none is a violation
 }
 
+// A decided violation the start state made worse: its worst (`observed`) lies within the grace,
+// the trace violates the spec with the grace excused too (else judge_the_start made it
+// start-state), but less. A finding must not blame the driver for the file's start, so the
+// verdict reports the driver's share, what the trace did from the grace on
+// (SpecVerdict::start_excused): its robustness and, unless conjuncts name them (each its own
+// share), its time and atom. A worst the excused trace equals (a violation as bad from the start
+// to the end, an F's value, which excusing leaves as it was) stands as observed: the start made
+// it no worse. Only the start is excused: a decided violation is not the end's doing. The guide
+// stays: negative as the robustness is, and the search's landscape is not reshaped by a report.
+void take_the_drivers_share(const Spec& spec, const SignalSource& source, const Trace& trace,
+                            const SourceFile& file, const JudgeOptions& options,
+                            const RobustnessWitness& observed, SpecVerdict& verdict) {
+  const double observed_time = time_of_sample(trace, observed.sample);
+  if (verdict.ending != VerdictEnding::decided || !verdict.violated() ||
+      !within_grace(observed_time, trace, options))
+    return;
+  const RobustnessWitness share =
+      explain_robustness_if_started_later(spec.formula, source, options.start_grace);
+  if (!(share.robustness > observed.robustness) || !violates(verdict, share.robustness)) return;
+  verdict.start_excused = true;
+  verdict.robustness_as_observed = verdict.robustness;
+  verdict.time_as_observed = observed_time;
+  verdict.robustness = share.robustness;
+  if (!verdict.conjuncts.empty()) return;
+  verdict.time = time_of_sample(trace, share.sample);
+  name_atom(file, spec.formula, share, verdict);
+}
+
 // One spec's verdict. Throws OracleError when the trace cannot answer it.
 SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace& trace,
                        const SourceFile& file, LazyProgress& progress,
@@ -274,14 +329,10 @@ SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace
   if (verdict.violated() && trace.end == EndReason::duration)
     judge_the_end(spec, source, progress, verdict);
   verdict.time = time_of_sample(trace, witness.sample);
-  if (witness.atom) {
-    verdict.atom = witness.atom->location;
-    verdict.atom_text = atom_text(file, verdict.atom);
-    verdict.mode_text = mode_text(file, spec.formula, *witness.atom, verdict.atom_text);
-    verdict.actor_distance = reads_actor_distance(*witness.atom);
-  }
+  name_atom(file, spec.formula, witness, verdict);
   if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, options, verdict);
   judge_the_start(spec, source, trace, file, progress, options, verdict);
+  take_the_drivers_share(spec, source, trace, file, options, witness, verdict);
   return verdict;
 }
 

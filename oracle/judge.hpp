@@ -67,8 +67,17 @@ struct SpecVerdict {
   VerdictEnding ending = VerdictEnding::decided;
   // A time-out or start-state: `robustness` and `guide` are what the run gives with its end
   // continued as the spec needs, or its start excused (never violations); this is the robustness
-  // of the trace as it was observed (a violation).
+  // of the trace as it was observed (a violation). With start_excused: the observed robustness,
+  // which the start state made worse than the driver's share.
   double robustness_as_observed = 0;
+  // A decided violation whose worst lies within JudgeOptions::start_grace and that the trace
+  // still violates once those seconds are excused, but less: the start state made it worse, the
+  // driver did the rest. `robustness`, `time` and the atom are the driver's share (the start
+  // excused, still a violation), so that a finding does not blame the driver for the file's
+  // start; robustness_as_observed and time_as_observed are the worst as observed. `guide` stays
+  // the observed one's (negative all the same).
+  bool start_excused = false;
+  double time_as_observed = 0;  // with start_excused: when the observed worst was
   // A time-out or stuck: the ego's progress over the end of the run, in words.
   std::string progress;
   // A violated conjunction: every conjunct the trace violates (not those only the run's end

@@ -662,6 +662,14 @@ class Explainer {
   std::span<const double> time_;
 };
 
+// The first sample not within `start` seconds of the first: the first the trace is judged on
+// once its start is excused.
+std::size_t first_observed_sample(std::span<const double> time, double start) {
+  std::size_t first = 0;
+  while (first < time.size() && time[first] - time[0] < start - kWindowTolerance) ++first;
+  return first;
+}
+
 }  // namespace
 
 SignalValues term_signal(const SpecTerm& term, const SignalSource& source) {
@@ -676,10 +684,7 @@ double robustness_excusing(const Formula& formula, const SignalSource& source,
                            const ExcusedSamples& excused) {
   const std::size_t n = source.time.size();
   if (n == 0) return kInfinity;  // nothing observed violates anything
-  std::size_t first_observed = 0;
-  while (first_observed < n &&
-         source.time[first_observed] - source.time[0] < excused.start - kWindowTolerance)
-    ++first_observed;
+  const std::size_t first_observed = first_observed_sample(source.time, excused.start);
   if (!excused.end_horizon) {
     Evaluator evaluator(source, false);
     evaluator.excuse(first_observed, n);
@@ -723,6 +728,16 @@ RobustnessWitness explain_robustness(const Formula& formula, const SignalSource&
   evaluator.formula(formula);
   if (sample >= source.time.size()) return {kInfinity, nullptr, sample};
   return Explainer(evaluator, source.time).explain(formula, sample);
+}
+
+RobustnessWitness explain_robustness_if_started_later(const Formula& formula,
+                                                      const SignalSource& source, double grace) {
+  const std::size_t n = source.time.size();
+  if (n == 0) return {kInfinity, nullptr, 0};  // as robustness_excusing: nothing observed
+  Evaluator evaluator(source, true);
+  evaluator.excuse(first_observed_sample(source.time, grace), n);
+  evaluator.formula(formula);
+  return Explainer(evaluator, source.time).explain(formula, 0);
 }
 
 }  // namespace scenfuzz

@@ -104,4 +104,11 @@ struct RobustnessWitness {
 RobustnessWitness explain_robustness(const Formula& formula, const SignalSource& source,
                                      std::size_t sample = 0);
 
+// robustness_if_started_later's value and its witness: what the trace did once the first
+// `grace` seconds are excused, the driver's share of a violation the start state also had a
+// hand in (docs/oracle.md, "Start state"). The start alone: a decided violation is not the end's
+// doing, so its end is taken as observed. Throws OracleError.
+RobustnessWitness explain_robustness_if_started_later(const Formula& formula,
+                                                      const SignalSource& source, double grace);
+
 }  // namespace scenfuzz

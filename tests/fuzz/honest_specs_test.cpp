@@ -108,6 +108,43 @@ TEST_F(HonestSpecsTest, RunReportsAStartStateAsItsOwnVerdict) {
   EXPECT_FALSE(decided.contains("ending"));
 }
 
+TEST_F(HonestSpecsTest, RunReportsTheDriversShareOfAViolationTheStartStateMadeWorse) {
+  // Still above 22.5 m/s at 2 s: the driver's violation, reported by what the driver did from
+  // 2 s on, not by the 26 m/s the file started it at.
+  const std::string file = write("slower.avu", fast_start("26", "22.5"));
+  const Outcome json = scenfuzz({"run", file, "--json", "--out", ""});
+  ASSERT_EQ(json.exit_code, 1) << json.err;
+  const nlohmann::json spec = nlohmann::json::parse(json.out)["specs"][0];
+  EXPECT_EQ(spec["verdict"], "violated");
+  EXPECT_FALSE(spec.contains("ending"));
+  const double share = spec["robustness"].get<double>();
+  EXPECT_LT(share, 0.0);
+  EXPECT_GT(share, -1.0);  // the reference driver is at 23.0 m/s at 2 s
+  EXPECT_NEAR(spec["time"].get<double>(), 2.0, 1e-9);
+  ASSERT_TRUE(spec.contains("robustness_as_observed")) << spec.dump(2);
+  EXPECT_DOUBLE_EQ(spec["robustness_as_observed"].get<double>(), -3.5);
+  EXPECT_EQ(spec["time_as_observed"], 0.0);
+  EXPECT_DOUBLE_EQ(spec["start_grace"].get<double>(), 2.0);
+  const Outcome text = scenfuzz({"run", file, "--out", ""});
+  EXPECT_NE(text.out.find(" at 2 s, violated by 'ego_state.speed <= 22.5' ("), std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find(") (from the start state -3.5 at 0 s)"), std::string::npos) << text.out;
+}
+
+TEST_F(HonestSpecsTest, AFindingTheStartStateMadeWorseIsHeadedByTheDriversShare) {
+  const Outcome run = search(fast_start("range(25.5, 26)", "22.5"), {"--budget", "4"});
+  ASSERT_EQ(run.exit_code, 1) << run.err << run.out;
+  const nlohmann::json summary = this->summary();
+  ASSERT_EQ(summary["findings"].size(), 1u) << summary.dump(2);
+  const nlohmann::json& finding = summary["findings"][0];
+  EXPECT_GT(finding["robustness"].get<double>(), -1.0);  // the share, not the start's -3 or so
+  const std::string header = slurp(finding["file"].get<std::string>());
+  EXPECT_NE(header.find("spec limit violated, robustness -0."), std::string::npos) << header;
+  EXPECT_NE(header.find(" at 2 s (ego_state.speed <= 22.5) (from the start state -3."),
+            std::string::npos)
+      << header;
+}
+
 TEST_F(HonestSpecsTest, ASearchWhoseRunsAllStartTooFastHasNoFinding) {
   const Outcome run = search(fast_start("range(25, 26)", "23.5"), {"--budget", "16"});
   EXPECT_EQ(run.exit_code, 0) << run.err << run.out;

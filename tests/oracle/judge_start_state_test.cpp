@@ -1,9 +1,11 @@
 // The start-state rule of judge_trace (docs/oracle.md, "Start state"): a spec violated within the
 // grace and not once those first seconds are excused is the scenario's start state's doing, not
-// a violation; one the trace still violates afterwards is decided. Traces built by hand: the ego
-// alone on `straight`, at 10 m/s for its first seconds and 7.5 m/s after.
+// a violation; one the trace still violates afterwards is decided, and reported by the driver's
+// share when the start state made it worse. Traces built by hand: the ego alone on `straight`,
+// at 10 m/s for its first seconds and slower after.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -25,19 +27,43 @@ ego_state = trace[ego];
 slow = G (ego_state.speed <= 8.0);
 slow_then_stopped = G (ego_state.speed <= 8.0) & F (ego_state.speed < 1.0);
 slow_and_there = G (ego_state.speed <= 8.0) & F (dis(ego_state, ego_target) <= 2.0);
+slow_and_near = G (ego_state.speed <= 8.0) & G (dis(ego_state, ego_target) <= 370.0);
 trace |= slow;
 trace |= slow_then_stopped;
 trace |= slow_and_there;
+trace |= slow_and_near;
 )";
 
-// 10 m/s until `until` seconds, then `after` m/s.
+// Piecewise constant speeds: 10 m/s from the start, each step's speed from its time on.
 struct Profile {
-  double until = 0;
-  double after = 0;
-  double at(double t) const { return t < until - 1e-9 ? 10 : after; }
-  double distance(double t) const { return t < until ? 10 * t : 10 * until + after * (t - until); }
+  struct Step {
+    double from = 0;
+    double speed = 0;
+  };
+  std::vector<Step> steps{{0, 10}};
+
+  Profile then(double from, double speed) const {
+    Profile next = *this;
+    next.steps.push_back({from, speed});
+    return next;
+  }
+  double at(double t) const {
+    double speed = steps.front().speed;
+    for (const Step& step : steps)
+      if (t >= step.from - 1e-9) speed = step.speed;
+    return speed;
+  }
+  double distance(double t) const {
+    double distance = 0;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const double end = std::min(t, k + 1 < steps.size() ? steps[k + 1].from : t);
+      distance += steps[k].speed * std::max(0.0, end - steps[k].from);
+    }
+    return distance;
+  }
 };
-Profile fast_until(double until, double after) { return {until, after}; }
+// 10 m/s until `until` seconds, then `after` m/s.
+Profile fast_until(double until, double after) { return Profile{}.then(until, after); }
 
 struct Judged {
   Trace trace;
@@ -67,7 +93,7 @@ Judged judge(const Profile& profile, EndReason end, const JudgeOptions& options 
 
 TEST(JudgeStartStateTest, AViolationOnlyTheStartStateMadeIsStartStateNotAViolation) {
   const Judged run = judge(fast_until(1, 7.5), EndReason::target_reached);
-  ASSERT_EQ(run.verdicts.size(), 3u);
+  ASSERT_EQ(run.verdicts.size(), 4u);
   const SpecVerdict& slow = run.verdicts[0];
   EXPECT_EQ(slow.ending, VerdictEnding::start);
   EXPECT_EQ(verdict_ending_name(slow.ending), "start-state");
@@ -90,6 +116,76 @@ TEST(JudgeStartStateTest, AViolationThatPersistsIsDecided) {
   const Judged late = judge(fast_until(2.05, 7.5), EndReason::target_reached);
   EXPECT_EQ(late.verdicts[0].ending, VerdictEnding::decided);
   EXPECT_TRUE(late.verdicts[0].violated());
+}
+
+TEST(JudgeStartStateTest, AViolationTheStartStateMadeWorseReportsTheDriversShare) {
+  // Slowed from 10 m/s to 8.2 m/s, not to the limit of 8: -2 at 0 s as observed, all of it the
+  // start state's but the 0.2 m/s the driver kept from 2 s on.
+  const Judged run = judge(fast_until(1, 8.2), EndReason::target_reached);
+  const SpecVerdict& slow = run.verdicts[0];
+  EXPECT_EQ(slow.ending, VerdictEnding::decided);
+  EXPECT_TRUE(slow.violated());
+  EXPECT_TRUE(slow.start_excused);
+  EXPECT_NEAR(slow.robustness, -0.2, 1e-6);
+  EXPECT_NEAR(slow.time, 2.0, 1e-9);  // the first sample the grace does not excuse
+  EXPECT_EQ(slow.atom_text, "ego_state.speed <= 8.0");
+  EXPECT_NEAR(slow.robustness_as_observed, -2, 1e-6);
+  EXPECT_EQ(slow.time_as_observed, 0.0);
+  // The search still follows the trace as observed: negative as the robustness is.
+  EXPECT_NEAR(slow.guide, -2, 1e-6);
+}
+
+TEST(JudgeStartStateTest, AConjunctionReportsItsSharesConjunctByConjunct) {
+  const Judged run = judge(fast_until(1, 8.2), EndReason::target_reached);
+  // Too far from the target only at the start (within 370 m of it from about 1 s on): a
+  // start-state conjunct, whose -8 or so as observed was once reported with the speed's atom.
+  const SpecVerdict& near = run.verdicts[3];
+  EXPECT_EQ(near.ending, VerdictEnding::decided);
+  EXPECT_TRUE(near.start_excused);
+  EXPECT_NEAR(near.robustness, -0.2, 1e-6);
+  EXPECT_LT(near.robustness_as_observed, -5);
+  EXPECT_EQ(near.time_as_observed, 0.0);
+  EXPECT_NEAR(near.time, 2.0, 1e-9);
+  EXPECT_EQ(near.atom_text, "ego_state.speed <= 8.0");
+  ASSERT_EQ(near.conjuncts.size(), 1u);
+  EXPECT_NEAR(near.conjuncts[0].robustness, -0.2, 1e-6);
+  EXPECT_NEAR(near.conjuncts[0].time, 2.0, 1e-9);
+  // The G named by its share, at 2 s, before the F that closes at the end; the spec's worst is
+  // the F's, which the start did not make worse: its robustness stands as observed.
+  const SpecVerdict& stopped = run.verdicts[1];
+  EXPECT_EQ(stopped.ending, VerdictEnding::decided);
+  EXPECT_FALSE(stopped.start_excused);
+  EXPECT_NEAR(stopped.robustness, -7.2, 1e-6);  // never below 8.2 m/s
+  ASSERT_EQ(stopped.conjuncts.size(), 2u);
+  EXPECT_EQ(stopped.conjuncts[0].atom_text, "ego_state.speed <= 8.0");
+  EXPECT_NEAR(stopped.conjuncts[0].robustness, -0.2, 1e-6);
+  EXPECT_NEAR(stopped.conjuncts[0].time, 2.0, 1e-9);
+  EXPECT_EQ(stopped.conjuncts[1].atom_text, "ego_state.speed < 1.0");
+  EXPECT_NEAR(stopped.time, 2.0, 1e-9);
+  EXPECT_EQ(stopped.atom_text, "ego_state.speed <= 8.0");
+}
+
+TEST(JudgeStartStateTest, AWorstAfterTheGraceIsReportedAsObserved) {
+  // Back to 11 m/s at 5 s: the driver's worst, after the grace; the start's 10 m/s plays no part.
+  const Judged run = judge(fast_until(1, 8.2).then(5, 11), EndReason::target_reached);
+  const SpecVerdict& slow = run.verdicts[0];
+  EXPECT_EQ(slow.ending, VerdictEnding::decided);
+  EXPECT_FALSE(slow.start_excused);
+  EXPECT_NEAR(slow.robustness, -3, 1e-6);
+  EXPECT_NEAR(slow.time, 5.0, 1e-9);
+  EXPECT_NEAR(slow.guide, -3, 1e-6);
+  EXPECT_EQ(slow.atom_text, "ego_state.speed <= 8.0");
+}
+
+TEST(JudgeStartStateTest, AViolationAsBadThroughoutStandsAsObserved) {
+  // 10 m/s from the first sample to the last: the start state made it no worse than the driver
+  // kept it, so it is reported where it first was, as before the driver's share was told apart.
+  const Judged run = judge(fast_until(20, 10), EndReason::target_reached);
+  const SpecVerdict& slow = run.verdicts[0];
+  EXPECT_EQ(slow.ending, VerdictEnding::decided);
+  EXPECT_FALSE(slow.start_excused);
+  EXPECT_NEAR(slow.robustness, -2, 1e-6);
+  EXPECT_EQ(slow.time, 0.0);
 }
 
 TEST(JudgeStartStateTest, ARunThatEndedWithinTheGraceIsDecided) {
@@ -125,7 +221,11 @@ TEST(JudgeStartStateTest, ViolationAtZeroCountsAnExcusedZeroAsViolated) {
   const Judged zero = judge(fast_until(1, 8.0), EndReason::target_reached, lawbreaker);
   EXPECT_EQ(zero.verdicts[0].ending, VerdictEnding::decided);
   EXPECT_TRUE(zero.verdicts[0].violated());
-  EXPECT_EQ(zero.verdicts[0].robustness, -2);
+  // The driver's share is the 0 at the limit (a violation here), the start state's the -2.
+  EXPECT_TRUE(zero.verdicts[0].start_excused);
+  EXPECT_EQ(zero.verdicts[0].robustness, 0);
+  EXPECT_EQ(zero.verdicts[0].robustness_as_observed, -2);
+  EXPECT_LT(zero.verdicts[0].guide, 0);
   // A wider grace reaches the persisting violation's end: start-state again.
   JudgeOptions five_seconds;
   five_seconds.start_grace = 5.5;
