@@ -174,6 +174,13 @@ std::string collisions_line(const SearchOutputs& outputs) {
 // --tmin's outcome per finding number.
 using Minimised = std::map<std::size_t, TminJobResult>;
 
+// "  SPEC: N WHAT" for each objective with evaluations of an ending that is no finding.
+void count_lines(std::ostream& out, const std::vector<std::string>& objectives,
+                 const std::vector<std::size_t>& counts, const char* what) {
+  for (std::size_t k = 0; k < objectives.size() && k < counts.size(); ++k)
+    if (counts[k] > 0) out << "  " << objectives[k] << ": " << counts[k] << what << "\n";
+}
+
 void print_report(const FuzzCommandOptions& options, const SearchSummary& summary,
                   const SearchOutputs& outputs, const FindingLog& log,
                   const std::vector<std::string>& objectives, const Minimised& minimised,
@@ -204,14 +211,13 @@ void print_report(const FuzzCommandOptions& options, const SearchSummary& summar
         tmin != minimised.end() && !tmin->second.minimised_file.empty())
       out << "      minimised: " << tmin->second.minimised_file << "\n";
   }
-  for (std::size_t k = 0; k < objectives.size() && k < outputs.time_outs().size(); ++k)
-    if (outputs.time_outs()[k] > 0)
-      out << "  " << objectives[k] << ": " << outputs.time_outs()[k]
-          << " time-outs (the run ended while the ego still made progress; not findings)\n";
-  for (std::size_t k = 0; k < objectives.size() && k < outputs.start_states().size(); ++k)
-    if (outputs.start_states()[k] > 0)
-      out << "  " << objectives[k] << ": " << outputs.start_states()[k]
-          << " start-state (violated only by the scenario's start state; not findings)\n";
+  count_lines(out, objectives, outputs.time_outs(),
+              " time-outs (the run ended while the ego still made progress; not findings)");
+  count_lines(out, objectives, outputs.start_states(),
+              " start-state (violated only by the scenario's start state; not findings)");
+  count_lines(out, objectives, outputs.other_faults(),
+              " other-fault (violated only once another road user brought a collision that was"
+              " not the ego's fault; not findings)");
   if (outputs.audited_with_issues() > 0) out << audit_line(outputs, summary) << "\n";
   if (const std::string line = collisions_line(outputs); !line.empty()) out << line << "\n";
   out << outputs.law_coverage_lines();

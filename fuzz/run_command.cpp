@@ -82,6 +82,12 @@ std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict,
            " (robustness " + robustness_text(verdict.robustness_as_observed) +
            ") by the scenario's start state; holds from " + format_number(grace) +
            " s on (robustness " + robustness_text(verdict.robustness) + ")";
+  if (verdict.ending == VerdictEnding::other_fault)
+    return "spec " + verdict.name + ": other-fault: violated" + at + atom_of(file, verdict) +
+           " (robustness " + robustness_text(verdict.robustness_as_observed) + ") only once " +
+           verdict.other + ", whose collision with the ego was not the ego's fault, brought the " +
+           "danger at " + format_number(std::round(verdict.danger_from * 1000) / 1000) +
+           " s; holds before (robustness " + robustness_text(verdict.robustness) + ")";
   std::string text = "spec " + verdict.name + ": robustness " + robustness_text(verdict.robustness);
   if (!verdict.violated()) return text + " (satisfied)";
   text += at + ", violated" + atom_of(file, verdict);
@@ -94,10 +100,11 @@ std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict,
   return text;
 }
 
-// "satisfied", "violated", "time-out", "start-state": a spec's verdict in words.
+// "satisfied", "violated", "time-out", "start-state", "other-fault": a spec's verdict in words.
 std::string verdict_word(const SpecVerdict& verdict) {
   if (!verdict.judged()) return "not judged";
-  if (verdict.ending == VerdictEnding::time_out || verdict.ending == VerdictEnding::start)
+  if (verdict.ending == VerdictEnding::time_out || verdict.ending == VerdictEnding::start ||
+      verdict.ending == VerdictEnding::other_fault)
     return std::string(verdict_ending_name(verdict.ending));
   return verdict.violated() ? "violated" : "satisfied";
 }
@@ -117,9 +124,12 @@ nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdi
       if (verdict.not_judged_at.known())
         spec["not_judged_location"] = place_of(file, verdict.not_judged_at);
     }
-    if (verdict.ending == VerdictEnding::time_out || verdict.ending == VerdictEnding::start ||
-        verdict.start_excused)
+    if (verdict.ending != VerdictEnding::decided || verdict.start_excused)
       spec["robustness_as_observed"] = robustness_json(verdict.robustness_as_observed);
+    if (verdict.ending == VerdictEnding::other_fault) {
+      spec["other"] = verdict.other;
+      spec["danger_from"] = verdict.danger_from;
+    }
     if (verdict.ending == VerdictEnding::time_out)  // its name before start-state shared it
       spec["robustness_at_end"] = robustness_json(verdict.robustness_as_observed);
     if (verdict.start_excused) spec["time_as_observed"] = verdict.time_as_observed;
@@ -127,7 +137,8 @@ nlohmann::json verdicts_json(const SourceFile& file, const std::vector<SpecVerdi
       spec["start_grace"] = grace;
     if (verdict.ending != VerdictEnding::decided) {
       spec["ending"] = verdict_ending_name(verdict.ending);
-      if (!verdict.progress.empty() || verdict.ending != VerdictEnding::start)
+      if (!verdict.progress.empty() || verdict.ending == VerdictEnding::time_out ||
+          verdict.ending == VerdictEnding::stuck)
         spec["progress"] = verdict.progress;
     }
     specs.push_back(spec);

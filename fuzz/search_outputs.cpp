@@ -131,6 +131,7 @@ SearchOutputs::SearchOutputs(const FuzzCommandOptions& options, const SourceFile
       time_outs_(objectives_.size(), 0),
       stuck_(objectives_.size(), 0),
       start_states_(objectives_.size(), 0),
+      other_faults_(objectives_.size(), 0),
       design_violations_(objectives_.size(), 0),
       design_first_violation_(objectives_.size()) {
   collisions_.not_counted = scenario.specs.empty() && !options.simulation.all_collisions;
@@ -192,6 +193,8 @@ void SearchOutputs::record(const EvaluationRecord& record, bool replayed) {
     if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::time_out)) ++time_outs_[k];
     if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::stuck)) ++stuck_[k];
     if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::start)) ++start_states_[k];
+    if (evaluation.endings[k] == verdict_ending_name(VerdictEnding::other_fault))
+      ++other_faults_[k];
   }
   record_design(record);
   record_collision(evaluation, record.index);
@@ -465,10 +468,12 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
                                {"evaluations", log.findings().size() + log.duplicates()},
                                {"by_responsibility", by_responsibility}};
   nlohmann::json time_outs = nlohmann::json::object(), stuck = nlohmann::json::object(),
-                 start_states = nlohmann::json::object(), rates = nlohmann::json::object();
+                 start_states = nlohmann::json::object(), other_faults = nlohmann::json::object(),
+                 rates = nlohmann::json::object();
   for (std::size_t k = 0; k < objectives_.size(); ++k) {
     time_outs[objectives_[k]] = time_outs_[k];
     start_states[objectives_[k]] = start_states_[k];
+    other_faults[objectives_[k]] = other_faults_[k];
     stuck[objectives_[k]] = stuck_[k];
     if (design_points_ > 0)
       rates[objectives_[k]] =
@@ -480,6 +485,7 @@ nlohmann::json SearchOutputs::summary(const SearchSummary& search, const Finding
   document["time_outs"] = time_outs;
   document["stuck"] = stuck;
   document["start_state"] = start_states;
+  document["other_fault"] = other_faults;
   document["first_design"] = {
       {"points", design_points_}, {"over", design_over_ || complete}, {"violation_rate", rates}};
   if (!error.empty()) document["error"] = error;

@@ -83,6 +83,8 @@ class SearchOutputs {
   const std::vector<std::size_t>& time_outs() const { return time_outs_; }
   // Per objective: evaluations whose verdict was start-state (not violations either).
   const std::vector<std::size_t>& start_states() const { return start_states_; }
+  // Per objective: evaluations whose verdict was other-fault (not violations either).
+  const std::vector<std::size_t>& other_faults() const { return other_faults_; }
   const CollisionCounts& collisions() const { return collisions_; }
   // The behaviour-coverage features of every evaluation so far (replayed ones included), as
   // summary.json's "coverage" reports them.
@@ -136,7 +138,7 @@ class SearchOutputs {
   Clock::time_point last_summary_ = Clock::now();
   std::size_t findings_in_summary_ = 0;
   // Per objective: evaluations whose verdict was a time-out, stuck ones and start-state ones.
-  std::vector<std::size_t> time_outs_, stuck_, start_states_;
+  std::vector<std::size_t> time_outs_, stuck_, start_states_, other_faults_;
   CollisionCounts collisions_;
   std::set<std::string> coverage_;
   std::map<std::string, std::size_t> law_first_;  // law feature -> first evaluation reaching it

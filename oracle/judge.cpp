@@ -9,6 +9,7 @@
 #include "oracle/collision_oracle.hpp"
 #include "oracle/ego_progress.hpp"
 #include "oracle/robustness.hpp"
+#include "oracle/rss_response.hpp"
 #include "oracle/search_guide.hpp"
 #include "oracle/trace_signals.hpp"
 
@@ -316,10 +317,61 @@ void take_the_drivers_share(const Spec& spec, const SignalSource& source, const 
   name_atom(file, spec.formula, share, verdict);
 }
 
+// How long before an impact the ego's first collision, when not the ego's fault, excuses what the
+// trace did at most: a conflict is critical within 3 s of impact (the time-to-collision threshold
+// of the traffic-conflict literature), what the ego did before is its own driving.
+constexpr double kDangerWindow = 3.0;  // s
+
+// The ego's first collision when it was not the ego's fault: who, and the sample from which the
+// danger it brought is excused: the earlier of when that road user came into the ego's path and
+// RSS's blame time (when the situation last became dangerous), but no earlier than kDangerWindow
+// before the impact. None with --all-collisions.
+struct OthersFault {
+  ActorId other = kEgo;
+  std::size_t from = 0;
+};
+
+std::optional<OthersFault> others_fault(const Trace& trace, const RoadMap& map,
+                                        const JudgeOptions& options) {
+  if (options.all_collisions || trace.sample_count() == 0) return std::nullopt;
+  const auto first = std::find_if(trace.collisions.begin(), trace.collisions.end(),
+                                  [](const Collision& c) { return c.first == kEgo; });
+  if (first == trace.collisions.end()) return std::nullopt;
+  const auto index = static_cast<std::size_t>(first - trace.collisions.begin());
+  const CollisionResponsibility r = collision_responsibility(trace, map, index, options.rss);
+  if (ego_responsible(r.responsibility)) return std::nullopt;
+  const std::size_t contact = std::min(
+      trace.sample_count() - 1, static_cast<std::size_t>(std::llround(first->time / trace.dt)));
+  std::size_t from = rss_blame_time(trace, map, r.other, contact, options.rss).sample;
+  if (r.triage.entry) from = std::min(from, r.triage.entry->sample);
+  const auto window = static_cast<std::size_t>(std::llround(kDangerWindow / trace.dt));
+  from = std::max(from, contact > window ? contact - window : 0);
+  return OthersFault{r.other, std::min(from, contact)};
+}
+
+// A decided violation the trace had not decided before another road user brought the danger of
+// a collision that was not the ego's fault: that road user's doing, as the collision oracle
+// leaves such a collision out (docs/oracle.md, "Not the ego's fault"). What the ego did before
+// still counts: a spec it broke earlier stays violated.
+void judge_the_collision(const Spec& spec, const SignalSource& source, const Trace& trace,
+                         const std::optional<OthersFault>& fault, SpecVerdict& verdict) {
+  if (!fault || verdict.ending != VerdictEnding::decided || !verdict.violated()) return;
+  const double before =
+      robustness_before(spec.formula, source, fault->from, formula_horizon(spec.formula));
+  if (violates(verdict, before)) return;
+  verdict.ending = VerdictEnding::other_fault;
+  verdict.robustness_as_observed = verdict.robustness;
+  verdict.robustness = before;
+  verdict.guide = before;
+  verdict.other = trace.actors[fault->other].name;
+  verdict.danger_from = time_of_sample(trace, fault->from);
+  verdict.conjuncts.clear();  // none is a violation
+}
+
 // One spec's verdict. Throws OracleError when the trace cannot answer it.
 SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace& trace,
                        const SourceFile& file, LazyProgress& progress,
-                       const JudgeOptions& options) {
+                       const std::optional<OthersFault>& fault, const JudgeOptions& options) {
   const RobustnessWitness witness = explain_robustness(spec.formula, source);
   SpecVerdict verdict;
   verdict.name = spec.name;
@@ -332,6 +384,7 @@ SpecVerdict judge_spec(const Spec& spec, const SignalSource& source, const Trace
   name_atom(file, spec.formula, witness, verdict);
   if (verdict.violated()) name_violated_conjuncts(spec, source, trace, file, options, verdict);
   judge_the_start(spec, source, trace, file, progress, options, verdict);
+  judge_the_collision(spec, source, trace, fault, verdict);
   take_the_drivers_share(spec, source, trace, file, options, witness, verdict);
   return verdict;
 }
@@ -344,6 +397,7 @@ std::string_view verdict_ending_name(VerdictEnding ending) {
     case VerdictEnding::time_out: return "time-out";
     case VerdictEnding::stuck: return "stuck";
     case VerdictEnding::start: return "start-state";
+    case VerdictEnding::other_fault: return "other-fault";
   }
   return "decided";
 }
@@ -360,10 +414,11 @@ std::vector<SpecVerdict> judge_trace(const ScenarioTemplate& scenario,
   const TraceSignals signals(trace, scenario, parameters, map);
   const SignalSource source = signals.source();
   LazyProgress progress(trace, scenario, parameters, map);
+  const std::optional<OthersFault> fault = others_fault(trace, map, options);
   std::vector<SpecVerdict> verdicts;
   for (const Spec& spec : scenario.specs) {
     try {
-      verdicts.push_back(judge_spec(spec, source, trace, file, progress, options));
+      verdicts.push_back(judge_spec(spec, source, trace, file, progress, fault, options));
     } catch (const OracleError& error) {
       SpecVerdict verdict;
       verdict.name = spec.name;

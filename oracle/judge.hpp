@@ -31,9 +31,13 @@ enum class VerdictEnding {
   // excused (robustness_if_started_later): the scenario's start state broke the spec, not the
   // driver. Not a violation.
   start,
+  // Violated only from when the road user in the ego's first collision, not the ego's fault
+  // (oracle/responsibility), brought the danger (robustness_before that time is not a
+  // violation): that road user's doing. Not a violation; never with --all-collisions.
+  other_fault,
 };
 
-// "decided", "time-out", "stuck", "start-state".
+// "decided", "time-out", "stuck", "start-state", "other-fault".
 std::string_view verdict_ending_name(VerdictEnding ending);
 
 // One violated conjunct of a spec that is a conjunction (`a & b & c` at its top level).
@@ -78,6 +82,10 @@ struct SpecVerdict {
   // the observed one's (negative all the same).
   bool start_excused = false;
   double time_as_observed = 0;  // with start_excused: when the observed worst was
+  // other_fault: who collided with the ego and when the danger it brought began; `robustness`
+  // and `guide` are the trace's up to then (robustness_before), robustness_as_observed as above.
+  std::string other;
+  double danger_from = 0;
   // A time-out or stuck: the ego's progress over the end of the run, in words.
   std::string progress;
   // A violated conjunction: every conjunct the trace violates (not those only the run's end
@@ -102,7 +110,8 @@ struct SpecVerdict {
 // and which robustness is a violation.
 struct JudgeOptions {
   RssParameters rss;
-  bool all_collisions = false;  // --all-collisions: count them too
+  bool all_collisions = false;  // --all-collisions: count them too, and judge specs on them
+                                // (no VerdictEnding::other_fault)
   // --violation-at-zero: robustness exactly 0 is a violation (LawBreaker: the negated formula's
   // robustness >= 0), not satisfied (RTAMT's convention, the default).
   bool violation_at_zero = false;

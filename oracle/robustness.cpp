@@ -717,6 +717,20 @@ double robustness_if_continued(const Formula& formula, const SignalSource& sourc
   return robustness_excusing(formula, source, {0, horizon});
 }
 
+double robustness_before(const Formula& formula, const SignalSource& source, std::size_t samples,
+                         double horizon) {
+  samples = std::min(samples, source.time.size());
+  SignalSource before;
+  before.time = source.time.first(samples);
+  before.parameters = source.parameters;
+  before.leaf = [&source, samples](const SpecTerm& term) {
+    SignalValues values = source.leaf(term);
+    if (values.values.size() > samples) values.values.resize(samples);
+    return values;
+  };
+  return robustness_if_continued(formula, before, horizon);
+}
+
 double robustness_if_started_later(const Formula& formula, const SignalSource& source,
                                    double grace) {
   return robustness_excusing(formula, source, {grace, std::nullopt});

@@ -72,6 +72,13 @@ std::vector<double> robustness_signal(const Formula& formula, const SignalSource
 // tell (an F whose window the end cut off). Throws OracleError.
 double robustness_if_continued(const Formula& formula, const SignalSource& source, double horizon);
 
+// The robustness at the first sample had the trace ended after its first `samples` samples,
+// continued from there as robustness_if_continued does: what the trace had decided before
+// something that came after it (another road user's fault, docs/oracle.md "Not the ego's
+// fault"). +inf when `samples` is 0: nothing observed violates anything. Throws OracleError.
+double robustness_before(const Formula& formula, const SignalSource& source, std::size_t samples,
+                         double horizon);
+
 // The robustness at the first sample with every sample within `grace` seconds of the first
 // excused: the start state the scenario gave the trace, not what the trace did with it. Mirrors
 // robustness_if_continued at the other end: every atom there +inf (-inf under an odd number of

@@ -241,7 +241,9 @@ TEST_F(CampaignRunTest, ASeedWithNothingToMutateIsLeftOutWithAWarning) {
       "c",
       campaign_toml({concrete, (fs::path(SCENFUZZ_TEST_DATA_DIR) / "cut_in_close.avu").string()},
                     "simulations = 64", mutate));
-  EXPECT_EQ(run(folder), kExitViolated) << err_.str();
+  // The cut-in's collisions are mostly the cutter's fault (other-fault): findings or none.
+  const int status = run(folder);
+  EXPECT_TRUE(status == kExitSuccess || status == kExitViolated) << err_.str();
   EXPECT_NE(err_.str().find("warning: seed '" + concrete +
                             "' has neither parameter ranges nor values to mutate"),
             std::string::npos)

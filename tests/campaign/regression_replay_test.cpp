@@ -32,15 +32,23 @@ struct SearchFinding {
   std::uint64_t seed = 0;
 };
 
+// The replay's settings as the search's --all-collisions: the cutter's collisions count.
+ReplaySettings counting_all() {
+  ReplaySettings settings;
+  settings.simulation.all_collisions = true;
+  return settings;
+}
+
 class RegressionReplayTest : public CommandTest {
  protected:
   // The findings of a real search of a close cut-in (two modes with this budget and seed: the
-  // cutter's collision and a near miss).
+  // cutter's collision and a near miss). With --all-collisions, which the findings' replay lines
+  // carry: the cutter's collisions are not the ego's fault, other-fault otherwise.
   std::vector<SearchFinding> search(int seed = 0) {
     const fs::path out = dir_ / ("search-" + std::to_string(seed));
     const Outcome run = scenfuzz({"--budget", "64", "--seed", std::to_string(seed),
                                   (fs::path(SCENFUZZ_TEST_DATA_DIR) / "cut_in_close.avu").string(),
-                                  "--out", out.string()});
+                                  "--out", out.string(), "--all-collisions"});
     EXPECT_EQ(run.exit_code, 1) << run.err;  // findings
     const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
     std::vector<SearchFinding> findings;
@@ -58,8 +66,12 @@ class RegressionReplayTest : public CommandTest {
     std::ofstream(campaign_ / name, std::ios::binary) << text;
     CampaignFailureMode mode;
     mode.id = 1;
-    mode.record = {1,    finding.mode,          finding.spec, finding.responsibility,
-                   name, "scenfuzz run " + name};
+    mode.record = {1,
+                   finding.mode,
+                   finding.spec,
+                   finding.responsibility,
+                   name,
+                   "scenfuzz run " + name + " --all-collisions"};
     mode.first_seen_run = mode.last_seen_run = 1;
     return mode;
   }
@@ -92,7 +104,7 @@ TEST_F(RegressionReplayTest, AFindingReplaysToItsOwnKeyWithItsOwnSeed) {
   for (const SearchFinding& finding : findings) {
     const std::string text = slurp(finding.file);
     EXPECT_EQ(finding_seed(text), finding.seed) << finding.file;
-    ReplaySettings settings;
+    ReplaySettings settings = counting_all();
     settings.seeds = 1;  // the finding's own seed only
     const ReplayOutcome outcome =
         replay_scenario({finding.file, finding.spec, finding.mode}, settings);
@@ -106,7 +118,7 @@ TEST_F(RegressionReplayTest, AnotherKeyOrSpecIsNotTheSameFailure) {
   const std::vector<SearchFinding> findings = search();
   ASSERT_FALSE(findings.empty());
   const SearchFinding& finding = findings.front();
-  ReplaySettings settings;
+  ReplaySettings settings = counting_all();
   settings.seeds = 1;
   const ReplayOutcome other_key =
       replay_scenario({finding.file, finding.spec, finding.mode + " | else"}, settings);
@@ -133,7 +145,7 @@ TEST_F(RegressionReplayTest, AKnownModeStillFailsWithEveryPerceptionSeed) {
   const SearchFinding* finding = with_responsibility(findings, "other");
   ASSERT_TRUE(finding);
   const CampaignFailureMode mode = known_mode(*finding, slurp(finding->file));
-  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, ReplaySettings{});
+  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, counting_all());
   EXPECT_EQ(outcome.error, "");
   EXPECT_EQ(outcome.tried, kReplaySeeds);
   EXPECT_EQ(outcome.failing, kReplaySeeds) << finding->mode;
@@ -152,7 +164,7 @@ TEST_F(RegressionReplayTest, AModeThatDependsOnThePerceptionSeedIsFlaky) {
   for (int seed = 0; seed < 6 && !flaky_found; ++seed) {
     for (const SearchFinding& finding : search(seed)) {
       const CampaignFailureMode mode = known_mode(finding, slurp(finding.file));
-      const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, ReplaySettings{});
+      const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, counting_all());
       ++replayed;
       EXPECT_EQ(outcome.error, "");
       EXPECT_EQ(outcome.tried, kReplaySeeds);
@@ -174,7 +186,7 @@ TEST_F(RegressionReplayTest, TheScenarioWithoutTheCutInIsFixed) {
   ASSERT_NE(edited, original);
   ASSERT_EQ(edited.find("cut_merge = (\"east_0\""), std::string::npos) << edited;
   const CampaignFailureMode mode = known_mode(finding, edited);
-  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, ReplaySettings{});
+  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, counting_all());
   EXPECT_EQ(outcome.error, "");
   EXPECT_EQ(outcome.tried, kReplaySeeds);
   EXPECT_EQ(outcome.failing, 0);
@@ -190,7 +202,7 @@ TEST_F(RegressionReplayTest, AMissingScenarioIsAnErrorAndTheStatusStays) {
                  "ego",
                  "modes/0123456789abcdef.avu",
                  "scenfuzz run x"};
-  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, ReplaySettings{});
+  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, counting_all());
   EXPECT_NE(outcome.error.find((campaign_ / "modes/0123456789abcdef.avu").string()),
             std::string::npos)
       << outcome.error;
@@ -207,7 +219,7 @@ TEST_F(RegressionReplayTest, AScenarioThatNoLongerReadsIsAnErrorNamingItsLine) {
   ASSERT_NE(at, std::string::npos);
   text.insert(at + 8, "(");  // cut_s = (90.7...; : an unclosed parenthesis
   const CampaignFailureMode mode = known_mode(findings.front(), text);
-  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, ReplaySettings{});
+  const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, counting_all());
   EXPECT_EQ(outcome.tried, 0);
   const std::regex place(R"(modes/[0-9a-f]{16}\.avu:\d+:\d+: error)");
   EXPECT_TRUE(std::regex_search(outcome.error, place)) << outcome.error;
@@ -218,7 +230,7 @@ TEST_F(RegressionReplayTest, AnEgoPluginThatCrashesIsAnErrorNotACrash) {
   const std::vector<SearchFinding> findings = search();
   ASSERT_FALSE(findings.empty());
   const CampaignFailureMode mode = known_mode(findings.front(), slurp(findings.front().file));
-  ReplaySettings settings;
+  ReplaySettings settings = counting_all();
   settings.simulation.ego_plugin = std::string(SCENFUZZ_TEST_PLUGIN_DIR) + "/libcrashing.so";
   const ReplayOutcome outcome = replay_failure_mode(campaign_, mode, settings);
   EXPECT_EQ(outcome.tried, 0);
@@ -240,14 +252,14 @@ TEST_F(RegressionReplayTest, AnEgoCrashStillFailsWithThePluginAndIsFixedWithoutI
   const SearchFinding finding{findings[0].at("file").get<std::string>(), "ego_crash",
                               "ego_crash SIGSEGV", "", findings[0].at("seed")};
   const CampaignFailureMode mode = known_mode(finding, slurp(finding.file));
-  ReplaySettings crashing;
+  ReplaySettings crashing = counting_all();
   crashing.simulation.ego_plugin = plugin;
   const ReplayOutcome still = replay_failure_mode(campaign_, mode, crashing);
   EXPECT_EQ(still.error, "");
   EXPECT_EQ(still.tried, kReplaySeeds);
   EXPECT_EQ(still.failing, kReplaySeeds);
   // The reference driver, as a campaign whose new ego no longer crashes.
-  const ReplayOutcome fixed = replay_failure_mode(campaign_, mode, ReplaySettings{});
+  const ReplayOutcome fixed = replay_failure_mode(campaign_, mode, counting_all());
   EXPECT_EQ(fixed.error, "");
   EXPECT_EQ(fixed.tried, kReplaySeeds);
   EXPECT_EQ(fixed.failing, 0);

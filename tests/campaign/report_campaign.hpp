@@ -104,9 +104,11 @@ class ReportCampaignTest : public CommandTest {
     const std::string folder_name =
         "searches/run-" + std::to_string(run_id) + "/round-1/" + std::to_string(seed_id) + "-0";
     const std::filesystem::path folder = campaign / folder_name;
-    const Outcome run = scenfuzz({"--budget", std::to_string(budget), "--seed",
-                                  std::to_string(search_seed), "--spec", spec, "-j", "1", "--quiet",
-                                  "--out", folder.string(), (campaign / seed).string()});
+    // --all-collisions: the pedestrian running into the ego's side counts, a mode more to report.
+    const Outcome run =
+        scenfuzz({"--budget", std::to_string(budget), "--seed", std::to_string(search_seed),
+                  "--spec", spec, "-j", "1", "--quiet", "--all-collisions", "--out",
+                  folder.string(), (campaign / seed).string()});
     EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 1) << run.err;
     CampaignSearchResult result;
     result.evaluations = read_evaluations(folder, spec);

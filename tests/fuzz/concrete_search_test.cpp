@@ -41,7 +41,8 @@ std::string line_starting(const std::string& text, const std::string& prefix) {
 TEST_F(ConcreteSearchTest, AConcreteFileIsSearchedByMutationAndItsFindingsReplay) {
   const std::string path = write("cut_in.avu", kConcreteCutIn);
   const std::string out = (dir_ / "out").string();
-  const Outcome search = scenfuzz({"--budget", "40", "--seed", "2", "-j", "2", "--out", out, path});
+  const Outcome search = scenfuzz(
+      {"--budget", "40", "--seed", "2", "-j", "2", "--out", out, path, "--all-collisions"});
   ASSERT_EQ(search.exit_code, 1) << search.out << search.err;
   EXPECT_NE(search.err.find("has no parameter ranges: searching 8 of its values"),
             std::string::npos)
@@ -73,9 +74,9 @@ TEST_F(ConcreteSearchTest, AConcreteFileIsSearchedByMutationAndItsFindingsReplay
   const std::string replay = line_starting(finding, "// replay: scenfuzz run ");
   ASSERT_NE(replay, "") << finding;
   const std::string seed = replay.substr(replay.find("--seed ") + 7);
-  const Outcome run = scenfuzz({"run", "--seed", seed.substr(0, seed.find(' ')), "--out",
-                                (dir_ / "replay").string(),
-                                (dir_ / "out" / "findings" / "001-no_collision.avu").string()});
+  const Outcome run = scenfuzz(
+      {"run", "--seed", seed.substr(0, seed.find(' ')), "--out", (dir_ / "replay").string(),
+       (dir_ / "out" / "findings" / "001-no_collision.avu").string(), "--all-collisions"});
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   EXPECT_NE(run.out.find("collision at "), std::string::npos) << run.out;
 }

@@ -2,7 +2,8 @@
 // verdict in `run`, no finding in a search); an ego that stopped making progress is a finding
 // marked stuck; a --duration shorter than a spec reads is warned of; a spec violated at most
 // points of the search's first design is warned of, and its rate is in summary.json; a spec only
-// the scenario's start state violates is start-state (its own verdict in `run`, no finding).
+// the scenario's start state violates is start-state (its own verdict in `run`, no finding); one
+// violated only once a car ran into the ego, not the ego's fault, is other-fault (the same).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -30,6 +31,22 @@ reach = )" +
          reach +
          R"( (dis(ego_state, ego_target) <= 2.0);
 trace |= reach;
+)";
+}
+
+// A standing ego rammed from behind by a scripted car at `speed` (a number or a range): its
+// clearance spec is broken by the car alone; its speed spec holds throughout.
+std::string rammed(const std::string& speed) {
+  return R"(
+ego = AV(("east_0"->60, , 0), ("east_0"->480));
+rammer = Vehicle(("east_0"->10, , )" +
+         speed + R"(), Waypoint(("east_0"->200, , 12)), ("east_0"->400));
+scenario = CreateScenario{load("straight"); ego; {rammer}; {}; {}; {}; {NPCBehaviour(scripted)};};
+Trace trace = EXE(scenario);
+clear = G (dis(trace[ego], trace[truth][rammer]) > 0.5);
+calm = G (trace[ego].speed <= 30);
+trace |= clear;
+trace |= calm;
 )";
 }
 
@@ -223,6 +240,39 @@ trace |= fine;
   EXPECT_DOUBLE_EQ(summary["first_design"]["violation_rate"]["too_fast"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(summary["first_design"]["violation_rate"]["fine"].get<double>(), 0.0);
   EXPECT_EQ(summary["first_design"]["points"], 16);
+}
+
+TEST_F(HonestSpecsTest, RunReportsAViolationOnlyAnotherRoadUserBroughtAsOtherFault) {
+  const std::string file = write("rammed.avu", rammed("15"));
+  const Outcome json = scenfuzz({"run", file, "--json", "--out", ""});
+  ASSERT_EQ(json.exit_code, 0) << json.err << json.out;
+  const nlohmann::json clear = nlohmann::json::parse(json.out)["specs"][0];
+  EXPECT_EQ(clear["verdict"], "other-fault");
+  EXPECT_EQ(clear["ending"], "other-fault");
+  EXPECT_EQ(clear["violated"], false);
+  EXPECT_EQ(clear["other"], "rammer");
+  EXPECT_LT(clear["robustness_as_observed"].get<double>(), 0);
+  EXPECT_GE(clear["robustness"].get<double>(), 0);
+  const Outcome text = scenfuzz({"run", file, "--out", ""});
+  EXPECT_NE(text.out.find("spec clear: other-fault: violated at "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("only once rammer, whose collision with the ego was not the ego's fault"),
+            std::string::npos)
+      << text.out;
+  // Counted as observed, it is a violation.
+  const Outcome all = scenfuzz({"run", file, "--json", "--all-collisions", "--out", ""});
+  EXPECT_EQ(all.exit_code, 1) << all.err;
+  EXPECT_EQ(nlohmann::json::parse(all.out)["specs"][0]["verdict"], "violated");
+}
+
+TEST_F(HonestSpecsTest, ASearchWhoseViolationsOthersBroughtHasNoFinding) {
+  const Outcome run = search(rammed("range(14, 16)"), {"--budget", "8"});
+  EXPECT_EQ(run.exit_code, 0) << run.err << run.out;
+  const nlohmann::json summary = this->summary();
+  EXPECT_TRUE(summary["findings"].empty()) << summary.dump(2);
+  EXPECT_GT(summary["other_fault"]["clear"].get<int>(), 0) << summary.dump(2);
+  EXPECT_NE(run.out.find("clear: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(" other-fault (violated only once another road user"), std::string::npos)
+      << run.out;
 }
 
 }  // namespace

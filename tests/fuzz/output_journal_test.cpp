@@ -152,8 +152,8 @@ TEST_F(OutputJournalTest, AnEarlierSearchIsRefusedResumedOrReplaced) {
   const fs::path out = dir_ / "out";
   auto args = [&](std::vector<std::string> extra, const std::string& seed = "2",
                   const std::string& budget = "40") {
-    std::vector<std::string> all = {"--budget", budget,  "--seed",    seed,
-                                    "--quiet",  "--out", out.string()};
+    std::vector<std::string> all = {"--budget", budget,  "--seed",     seed,
+                                    "--quiet",  "--out", out.string(), "--all-collisions"};
     all.insert(all.end(), extra.begin(), extra.end());
     all.push_back(kCutIn);
     return all;

@@ -619,8 +619,11 @@ TEST(SearchDeterminismTest, AReferenceSearchMatchesItsPinnedHash) {
   const std::optional<CorpusScenario> input =
       load_corpus_scenario("corpora/avunit/cut_in_straight.avu");
   ASSERT_TRUE(input);
-  const ScenarioEvaluator evaluator(input->file, input->scenario, map_search_path({}),
-                                    SimulationOptions{});
+  ScenarioEvaluator evaluator(input->file, input->scenario, map_search_path({}),
+                              SimulationOptions{});
+  JudgeOptions all_collisions;  // the cutter's collisions too, other-fault otherwise
+  all_collisions.all_collisions = true;
+  evaluator.set_judge_options(all_collisions);
   SearchOptions options;
   options.algorithm = "ga";
   options.budget = 64;

@@ -62,8 +62,8 @@ std::string replay_seed(const std::string& text) {
 class SearchTminTest : public test::CommandTest {
  protected:
   Outcome search(const std::string& out, std::vector<std::string> extra) {
-    std::vector<std::string> args = {"--budget", "4", "--seed", "3",
-                                     "--out",    out, input_,   "--quiet"};
+    std::vector<std::string> args = {"--budget", "4",       "--seed",          "3", "--out", out,
+                                     input_,     "--quiet", "--all-collisions"};
     args.insert(args.end(), extra.begin(), extra.end());
     return scenfuzz(args);
   }
@@ -115,7 +115,7 @@ TEST_F(SearchTminTest, EachFindingIsMinimisedBesideItAndReplaysToItsMode) {
     // Replayed with its seed it violates the finding's spec; and tmin, which replays it and
     // refuses a file that no longer fails as its header's mode says, finds nothing to remove.
     const Outcome replay = scenfuzz({"run", minimised.string(), "--seed", replay_seed(text),
-                                     "--out", (dir_ / "replay").string()});
+                                     "--out", (dir_ / "replay").string(), "--all-collisions"});
     EXPECT_EQ(replay.exit_code, 1) << replay.out << replay.err;
     EXPECT_NE(replay.out.find("spec " + entry.at("spec").get<std::string>() + ": robustness -"),
               std::string::npos)

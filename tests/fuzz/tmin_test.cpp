@@ -198,7 +198,9 @@ TEST(TminReduce, NeutralWeatherNoonAndAShorterRun) {
 
 // The ego waits in east_0 and a scripted car (rammer) drives into it from behind; three cars far
 // ahead in east_1 and a box by the road have nothing to do with the collision.
-constexpr const char* kPlanted = R"(
+// The rammer runs into the ego from behind: not the ego's fault, so it is judged as a finding
+// made with --all-collisions is, through its replay line (tmin reads the options there).
+constexpr const char* kPlanted = R"(// replay: scenfuzz run planted.avu --all-collisions
 ego = AV(("east_0"->60.123456, , 0), ("east_0"->480));
 rammer = Vehicle(("east_0"->10.987654, , RAMMER_SPEED),
                  Waypoint(("east_0"->200.4321, , 12.345678), ("east_0"->300.5, , 11.75)),
@@ -242,13 +244,15 @@ class TminCommandTest : public test::CommandTest {
     const std::string seed = tmin.out.substr(
         at + replay_mark.size(),
         tmin.out.find_first_of(" \n", at + replay_mark.size()) - at - replay_mark.size());
-    replay = scenfuzz({"run", out_path, "--seed", seed, "--out", (dir_ / "replay").string()});
+    replay = scenfuzz(
+        {"run", out_path, "--seed", seed, "--out", (dir_ / "replay").string(), "--all-collisions"});
   }
 };
 
 TEST_F(TminCommandTest, RemovesThePlantedActorsAndKeepsTheFailure) {
   const std::string input = write("planted.avu", planted("12.345678"));
-  const Outcome before = scenfuzz({"run", input, "--out", (dir_ / "before").string()});
+  const Outcome before =
+      scenfuzz({"run", input, "--out", (dir_ / "before").string(), "--all-collisions"});
   ASSERT_EQ(before.exit_code, 1) << before.out << before.err;
   const std::string out_path = (dir_ / "planted.min.avu").string();
   Outcome tmin, replay;
@@ -276,7 +280,8 @@ TEST_F(TminCommandTest, RemovesThePlantedActorsAndKeepsTheFailure) {
   EXPECT_NE(replay.out.find("spec no_rammer_collision: robustness -"), std::string::npos);
   // Minimising the output again changes nothing: it is minimal already, and tmin reads its own
   // header back (the mode and the replay command).
-  const Outcome again = scenfuzz({"tmin", out_path, "-o", (dir_ / "again.avu").string()});
+  const Outcome again =
+      scenfuzz({"tmin", out_path, "-o", (dir_ / "again.avu").string()});
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_NE(again.out.find("nothing could be removed or changed"), std::string::npos) << again.out;
 }
@@ -333,8 +338,8 @@ TEST(TminSpecs, AtomsThatReadARemovedActorGoAndWhatCannotStandWithoutThem) {
 TEST_F(TminCommandTest, MinimisesAFindingOfTheSearchWithItsSeed) {
   const std::string input = write("logical.avu", planted("range(11, 14)"));
   const std::string search_dir = (dir_ / "search").string();
-  const Outcome search =
-      scenfuzz({"--budget", "4", "--seed", "3", "--out", search_dir, input, "--quiet"});
+  const Outcome search = scenfuzz(
+      {"--budget", "4", "--seed", "3", "--out", search_dir, input, "--quiet", "--all-collisions"});
   ASSERT_EQ(search.exit_code, 1) << search.out << search.err;
   std::string finding;
   for (const auto& entry : std::filesystem::directory_iterator(dir_ / "search" / "findings"))

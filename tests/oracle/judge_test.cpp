@@ -32,7 +32,8 @@ struct JudgedRun {
 // Parses, simulates at `unit_point` (the middle when empty) and judges.
 JudgedRun judge_file(const SourceFile& file, std::vector<double> unit_point = {},
                      const MapSearchPath& search_path = map_search_path({}),
-                     const SimulationOptions& options = {}) {
+                     const SimulationOptions& options = {},
+                     const JudgeOptions& judge_options = {}) {
   JudgedRun run;
   const avunit::ParseResult parsed = avunit::parse(file);
   run.errors = format_diagnostics(file, parsed.diagnostics);
@@ -47,7 +48,7 @@ JudgedRun judge_file(const SourceFile& file, std::vector<double> unit_point = {}
   if (!setup) return run;
   run.trace = simulate(map, *setup, options);
   try {
-    run.verdicts = judge_trace(parsed.scenario, values, *run.trace, map, file);
+    run.verdicts = judge_trace(parsed.scenario, values, *run.trace, map, file, judge_options);
   } catch (const OracleError& error) {
     Diagnostics oracle;
     oracle.error(error.location(), error.what());
@@ -243,7 +244,10 @@ trace |= reach;
 TEST(JudgeTest, AConjunctionNamesEveryViolatedConjunctTheEarliestFirst) {
   // A scripted car runs into the back of the ego, which is left short of its target: the
   // collision is named first, then the target the run never reached, whatever the file's order.
-  const JudgedRun run = judge_text(R"(
+  // (Counted with --all-collisions: the collision is not the ego's fault, other-fault otherwise.)
+  JudgeOptions all_collisions;
+  all_collisions.all_collisions = true;
+  const std::string text = R"(
 ego_target = "east_0"->400;
 ego = AV((("east_0"->60), , 2), (ego_target, , ));
 npc = Vehicle(("east_0"->20, , 20.0), uniform(("east_0"->20, , 20.0)), ("east_0"->450));
@@ -254,9 +258,12 @@ npc_truth = trace[truth][npc];
 reach = F (dis(ego_state, ego_target) <= 2.0);
 clear = G (dis(ego_state, npc_truth) > 0.5);
 trace |= reach & clear;
-)");
+)";
+  const JudgedRun run =
+      judge_file(SourceFile("inline.avu", text), {}, map_search_path({}), {}, all_collisions);
   ASSERT_TRUE(run.trace) << run.errors;
   ASSERT_EQ(run.trace->end, EndReason::collision);
+  EXPECT_EQ(judge_text(text).verdicts.at(0).ending, VerdictEnding::other_fault);
   ASSERT_EQ(run.verdicts.size(), 1u);
   const SpecVerdict& verdict = run.verdicts[0];
   ASSERT_TRUE(verdict.violated());
