@@ -85,9 +85,10 @@ std::string describe_verdict(const SourceFile& file, const SpecVerdict& verdict,
   if (verdict.ending == VerdictEnding::other_fault)
     return "spec " + verdict.name + ": other-fault: violated" + at + atom_of(file, verdict) +
            " (robustness " + robustness_text(verdict.robustness_as_observed) + ") only once " +
-           verdict.other + ", whose collision with the ego was not the ego's fault, brought the " +
-           "danger at " + format_number(std::round(verdict.danger_from * 1000) / 1000) +
-           " s; holds before (robustness " + robustness_text(verdict.robustness) + ")";
+           verdict.other +
+           ", whose collision with the ego was not the ego's fault, brought the danger" +
+           at_time(verdict.danger_from) + "; holds before (robustness " +
+           robustness_text(verdict.robustness) + ")";
   std::string text = "spec " + verdict.name + ": robustness " + robustness_text(verdict.robustness);
   if (!verdict.violated()) return text + " (satisfied)";
   text += at + ", violated" + atom_of(file, verdict);

@@ -21,6 +21,12 @@ double time_of_sample(const Trace& trace, std::size_t sample) {
   return sample < trace.time.size() ? trace.time[sample] : 0.0;
 }
 
+// The sample of an event at `time` (a collision's), within the trace.
+std::size_t sample_of_time(const Trace& trace, double time) {
+  return std::min(trace.sample_count() - 1,
+                  static_cast<std::size_t>(std::llround(time / trace.dt)));
+}
+
 // Per actor, the sample from which the collision oracle leaves it out: its first collision with
 // the ego that was not the ego's fault (RSS, oracle/responsibility); never with --all-collisions.
 std::vector<std::size_t> excused_from(const Trace& trace, const RoadMap& map,
@@ -29,9 +35,7 @@ std::vector<std::size_t> excused_from(const Trace& trace, const RoadMap& map,
   if (options.all_collisions || trace.sample_count() == 0) return from;
   for (const CollisionResponsibility& r : ego_collision_responsibilities(trace, map, options.rss)) {
     if (ego_responsible(r.responsibility) || from[r.other] < trace.sample_count()) continue;
-    from[r.other] = std::min(
-        trace.sample_count() - 1,
-        static_cast<std::size_t>(std::llround(trace.collisions[r.collision].time / trace.dt)));
+    from[r.other] = sample_of_time(trace, trace.collisions[r.collision].time);
     excused += (excused.empty() ? "" : ", ") + trace.actors[r.other].name;
   }
   return from;
@@ -340,8 +344,7 @@ std::optional<OthersFault> others_fault(const Trace& trace, const RoadMap& map,
   const auto index = static_cast<std::size_t>(first - trace.collisions.begin());
   const CollisionResponsibility r = collision_responsibility(trace, map, index, options.rss);
   if (ego_responsible(r.responsibility)) return std::nullopt;
-  const std::size_t contact = std::min(
-      trace.sample_count() - 1, static_cast<std::size_t>(std::llround(first->time / trace.dt)));
+  const std::size_t contact = sample_of_time(trace, first->time);
   std::size_t from = rss_blame_time(trace, map, r.other, contact, options.rss).sample;
   if (r.triage.entry) from = std::min(from, r.triage.entry->sample);
   const auto window = static_cast<std::size_t>(std::llround(kDangerWindow / trace.dt));
